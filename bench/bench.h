@@ -1,0 +1,27 @@
+#pragma once
+/// \file
+/// Benchmarks behind `prt bench WHAT`. Each prints `key=value` lines to stdout and ends every
+/// comparison with `ratio_<what>=<x>`. Times are medians of several runs; comparisons are
+/// measured side by side in the same run, because the machine is shared and noisy.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "app/args.h"
+
+namespace prt::bench {
+
+/// Median wall-clock seconds of `runs` calls of `fn` (after one warm-up call).
+double MedianSeconds(int runs, const std::function<void()>& fn);
+
+/// Prints `key=value` with enough digits for a spreadsheet.
+void Print(const std::string& key, double value);
+void Print(const std::string& key, const std::string& value);
+
+int BenchLight(Args& args);
+int BenchBvh(Args& args);
+int BenchRaster(Args& args);
+int BenchTransport(Args& args);
+
+}  // namespace prt::bench

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs the Debian packages prt needs to build and test, and nothing that is already there.
+# Idempotent: a machine that has everything runs no apt command at all.
+set -euo pipefail
+
+packages=(g++ cmake make pkg-config
+          libglm-dev libstb-dev libtinyobjloader-dev libnanoflann-dev doctest-dev libopenexr-dev)
+[ -n "${PRT_EXTRA_PACKAGES:-}" ] && read -r -a extra <<<"$PRT_EXTRA_PACKAGES" && packages+=("${extra[@]}")
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "prt: missing packages: ${missing[*]}" >&2
+  echo "prt: run: sudo apt-get update && sudo apt-get install -y ${missing[*]}" >&2
+  exit 1
+fi
+echo "prt: installing ${missing[*]}" >&2
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# The README's two commands:
+#   bash scripts/quickstart.sh demo   installs what is missing, builds, runs `prt demo`
+#   bash scripts/quickstart.sh test   installs what is missing, builds, runs every test
+set -euo pipefail
+cd "$(dirname "$0")/.."
+what=${1:-demo}
+build=${PRT_BUILD_DIR:-build}
+
+bash scripts/install-deps.sh
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build "$build" --parallel "$(nproc)"
+
+case "$what" in
+  demo) "$build/prt" demo ;;
+  test) ctest --test-dir "$build" --output-on-failure ;;
+  *) echo "usage: bash scripts/quickstart.sh demo|test" >&2; exit 2 ;;
+esac

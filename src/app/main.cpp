@@ -1,0 +1,48 @@
+/// \file
+/// Entry point: finds the command, runs it, and turns every error into one line on stderr and
+/// an exit code (0 success, 1 failure, 2 usage). Nothing below app/ prints usage or exits.
+
+#include <cstdio>
+#include <exception>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "app/commands.h"
+#include "core/error.h"
+
+int main(int argc, char** argv) {
+  using namespace prt;
+  const std::vector<std::string> all(argv + 1, argv + argc);
+  if (all.empty()) {
+    std::fprintf(stderr, "prt: error: no command given (see prt help)\n");
+    return 2;
+  }
+  if (all[0] == "--version" || all[0] == "version") {
+    std::printf("prt %s\n", PRT_VERSION);
+    return 0;
+  }
+  const std::string name = (all[0] == "--help" || all[0] == "-h") ? "help" : all[0];
+  const Command* command = FindCommand(name);
+  if (!command) {
+    std::fprintf(stderr, "prt: error: '%s': unknown command (see prt help)\n", name.c_str());
+    return 2;
+  }
+  const std::vector<std::string> tokens(all.begin() + 1, all.end());
+  try {
+    return command->run(tokens);
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "prt: error: %s (see prt help %s)\n", e.what(),
+                 e.command().empty() ? name.c_str() : e.command().c_str());
+    return 2;
+  } catch (const Error& e) {
+    std::fprintf(stderr, "prt: error: %s\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "prt: error: out of memory\n");
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "prt: error: internal error: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,1 @@
+// Shared scene options (being written in issue 2).

@@ -1,0 +1,36 @@
+#pragma once
+/// \file
+/// Outputs are never half-written: a file is written under a temporary name in the same folder
+/// and renamed over the destination only once complete (rename is atomic on POSIX file systems).
+/// A failed or interrupted run leaves the previous file, if any, untouched.
+
+#include <string>
+
+namespace prt {
+
+/// A temporary file beside `path`, renamed to `path` by Commit() and removed if never committed.
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::string path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  /// Where to write the content before Commit().
+  const std::string& temp_path() const { return temp_; }
+  /// Renames the temporary file over the destination. Throws Error on failure.
+  void Commit();
+
+ private:
+  std::string path_;
+  std::string temp_;
+  bool committed_ = false;
+};
+
+/// Writes `bytes` to `path` through an AtomicFile. Throws Error naming `path` on failure.
+void WriteFileAtomic(const std::string& path, const std::string& bytes);
+
+/// Reads a whole file. Throws Error naming `path` if it is missing, a directory or unreadable.
+std::string ReadFile(const std::string& path);
+
+}  // namespace prt

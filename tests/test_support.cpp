@@ -1,0 +1,56 @@
+#include "tests/test_support.h"
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace prt::test {
+namespace fs = std::filesystem;
+
+std::string SourceDir() { return PRT_SOURCE_DIR; }
+
+std::string Fixture(const std::string& relative) { return SourceDir() + "/tests/data/" + relative; }
+
+std::optional<std::string> SharedData() {
+  std::error_code ec;
+  const fs::path p = fs::weakly_canonical(PRT_SHARED_DATA_DIR, ec);
+  if (ec || !fs::is_directory(p / "games202")) return std::nullopt;
+  return p.string();
+}
+
+std::string ScratchDir(const std::string& name) {
+  const fs::path p = fs::current_path() / "test-tmp" / (name + "_" + std::to_string(::getpid()));
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p.string();
+}
+
+static std::string Slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::optional<RunResult> RunPrt(const std::string& arguments) {
+  const char* binary = std::getenv("PRT_BINARY");
+  if (!binary || !*binary) return std::nullopt;
+  const std::string dir = ScratchDir("run");
+  const std::string cmd = std::string("'") + binary + "' " + arguments + " >'" + dir +
+                          "/out' 2>'" + dir + "/err' </dev/null";
+  const int status = std::system(cmd.c_str());
+  RunResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.out = Slurp(dir + "/out");
+  r.err = Slurp(dir + "/err");
+  fs::remove_all(dir);
+  return r;
+}
+
+}  // namespace prt::test
