@@ -1,0 +1,35 @@
+#pragma once
+/// \file
+/// The triangle mesh every stage works on: welded vertices with one normal and one albedo each.
+///
+/// Vertex order and triangle order are those of the source (OBJ face order for loaded files), so
+/// the course's transport format (three rows per triangle, in face order) can be written back.
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace prt {
+
+struct Mesh {
+  std::vector<glm::vec3> positions;  ///< world units, Y up
+  std::vector<glm::vec3> normals;    ///< unit length, one per vertex
+  std::vector<glm::vec3> albedo;     ///< linear RGB in [0,1], one per vertex
+  std::vector<std::array<std::uint32_t, 3>> triangles;  ///< counter-clockwise seen from outside
+
+  std::size_t vertex_count() const { return positions.size(); }
+  std::size_t triangle_count() const { return triangles.size(); }
+};
+
+/// What loading or building a mesh had to repair, for the run summary.
+struct MeshReport {
+  std::size_t dropped_degenerate = 0;   ///< zero-area triangles removed
+  std::size_t recomputed_normals = 0;   ///< vertices whose normal was missing or zero-length
+  std::size_t welded_away = 0;          ///< corners merged into an existing vertex
+  std::vector<std::string> warnings;    ///< e.g. a missing .mtl
+};
+
+}  // namespace prt
