@@ -1,0 +1,52 @@
+#pragma once
+/// \file
+/// Real spherical harmonics Y_lm on the unit sphere: orthonormal, Condon–Shortley phase included,
+/// polar axis +Z (the convention of Sloan's `SHEval` and google/spherical-harmonics):
+///
+///   Y_l0        = K_l0 P_l^0(z)
+///   Y_lm (m>0)  = sqrt(2) K_lm P_l^m(z) cos(m phi)
+///   Y_l-m (m>0) = sqrt(2) K_lm P_l^m(z) sin(m phi)        K_lm = sqrt((2l+1)/(4 pi) (l-m)!/(l+m)!)
+///
+/// Evaluation uses no trigonometry and no factorials. With s = sin(theta),
+/// P_l^m(z) = s^m Pbar_l^m(z) where Pbar is a polynomial in z, and s^m cos(m phi), s^m sin(m phi)
+/// are the real and imaginary parts of (x + i y)^m. The normalised Pbar obey [1, 2]
+///
+///   Q_0 = 1/sqrt(4 pi),  Q_m = -sqrt((2m+1)/(2m)) Q_{m-1}            (l = m)
+///   Pbar_{m+1,m} = sqrt(2m+3) z Q_m                                   (l = m+1)
+///   Pbar_{l,m}   = a_lm (z Pbar_{l-1,m} - b_lm Pbar_{l-2,m})          (l >= m+2)
+///   a_lm = sqrt((4l^2-1)/(l^2-m^2)),  b_lm = sqrt(((l-1)^2-m^2)/(4(l-1)^2-1))
+///
+/// which stay finite for every l <= 200 at every direction, poles included (the factorial form
+/// underflows to 0 at l = m = 86 in double). Accurate to 1e-12 of a long-double reference up to
+/// lmax 64 (tests/sh/test_basis.cpp).
+///
+/// References
+/// [1] Holmes, Featherstone, "A unified approach to the Clenshaw summation and the recursive
+///     computation of very high degree and order normalised associated Legendre functions",
+///     J. Geodesy 76, 2002.
+/// [2] Sloan, "Efficient Spherical Harmonic Evaluation", JCGT 2(2), 2013.
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "sh/coeffs.h"
+
+namespace prt {
+
+/// Writes Y_k(dir) for k < CoeffCount(lmax) to out. dir must be unit length; 0 <= lmax <= 200.
+/// Uses the closed forms below for lmax <= 2 and the recurrence above otherwise.
+void EvalBasis(int lmax, const glm::dvec3& dir, double* out);
+std::vector<double> EvalBasis(int lmax, const glm::dvec3& dir);
+
+/// The recurrence for any lmax (what EvalBasis uses above band 2).
+void EvalBasisRecurrence(int lmax, const glm::dvec3& dir, double* out);
+
+/// Closed forms of bands 0..2 (9 values), as listed in CONVENTIONS.md.
+void EvalBasisBand2(const glm::dvec3& dir, double* out);
+
+/// Slow reference for tests: long-double unnormalised Legendre recurrence, factorial
+/// normalisation and cos/sin(m phi) from atan2. Independent of the fast path by construction.
+long double EvalBasisReference(int l, int m, const glm::dvec3& dir);
+
+}  // namespace prt
