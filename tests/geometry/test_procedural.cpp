@@ -1,0 +1,92 @@
+// Procedural meshes: sizes, orientation (outward normals, counter-clockwise triangles) and the
+// closed-form volume of the sphere and box.
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "geometry/mesh_ops.h"
+#include "geometry/procedural.h"
+
+namespace prt {
+namespace {
+
+// Signed volume by the divergence theorem: sum over triangles of a . (b x c) / 6.
+double SignedVolume(const Mesh& m) {
+  double v = 0.0;
+  for (const auto& t : m.triangles) {
+    const glm::dvec3 a(m.positions[t[0]]), b(m.positions[t[1]]), c(m.positions[t[2]]);
+    v += glm::dot(a, glm::cross(b, c)) / 6.0;
+  }
+  return v;
+}
+
+// Fraction of triangles whose winding normal agrees with the mean of their vertex normals.
+double AgreeingFraction(const Mesh& m) {
+  std::size_t agree = 0;
+  for (const auto& t : m.triangles) {
+    const glm::vec3 a = m.positions[t[0]];
+    const glm::vec3 face = glm::cross(m.positions[t[1]] - a, m.positions[t[2]] - a);
+    const glm::vec3 vn = m.normals[t[0]] + m.normals[t[1]] + m.normals[t[2]];
+    agree += glm::dot(face, vn) > 0.0f ? 1 : 0;
+  }
+  return static_cast<double>(agree) / static_cast<double>(m.triangle_count());
+}
+
+void CheckComplete(const Mesh& m) {
+  REQUIRE(m.normals.size() == m.positions.size());
+  REQUIRE(m.albedo.size() == m.positions.size());
+  for (const auto& t : m.triangles)
+    for (auto i : t) REQUIRE(i < m.positions.size());
+  for (const auto& n : m.normals) REQUIRE(std::abs(glm::length(n) - 1.0f) < 1e-5f);
+}
+
+// A polyhedron inscribed in the sphere: its volume is below 4/3 pi r^3 by O(1/segments^2).
+constexpr double kSphereVolumeTolerance = 2e-3;  // relative, for 128 segments
+
+}  // namespace
+
+TEST_SUITE("geometry") {
+  TEST_CASE("procedural sphere: size, outward winding and volume") {
+    const Mesh s = MakeSphere(128, 2.0f);
+    CheckComplete(s);
+    CHECK(s.triangle_count() == 2u * 128u * 63u);
+    CHECK(AgreeingFraction(s) == 1.0);
+    const double exact = 4.0 / 3.0 * 3.14159265358979 * 8.0;
+    CHECK(std::abs(SignedVolume(s) - exact) / exact < kSphereVolumeTolerance);
+    CHECK(MakeSphere(320).triangle_count() >= 100000u);
+  }
+
+  TEST_CASE("procedural box: closed, outward and inward") {
+    const Mesh out = MakeBox(glm::vec3(-1, -2, -3), glm::vec3(1, 2, 3), BoxFacing::kOutward, 3);
+    CheckComplete(out);
+    CHECK(out.triangle_count() == 6u * 9u * 2u);
+    CHECK(AgreeingFraction(out) == 1.0);
+    CHECK(SignedVolume(out) == doctest::Approx(2.0 * 4.0 * 6.0));
+    const Mesh in = MakeBox(glm::vec3(-1, -2, -3), glm::vec3(1, 2, 3), BoxFacing::kInward);
+    CHECK(AgreeingFraction(in) == 1.0);
+    CHECK(SignedVolume(in) == doctest::Approx(-48.0));
+  }
+
+  TEST_CASE("procedural plane and torus knot are oriented") {
+    const Mesh p = MakePlane(4.0f, 5, 1.0f);
+    CheckComplete(p);
+    CHECK(p.triangle_count() == 50u);
+    CHECK(AgreeingFraction(p) == 1.0);
+    const Mesh k = MakeTorusKnot(2, 3, 0.16f, 256, 24);
+    CheckComplete(k);
+    CHECK(AgreeingFraction(k) == 1.0);
+    CHECK(SignedVolume(k) > 0.0);
+  }
+
+  TEST_CASE("demo scene stands on the ground plane") {
+    const Mesh d = MakeDemoScene();
+    CheckComplete(d);
+    const Bounds3 b = MeshBounds(d);
+    CHECK(b.lo.y == doctest::Approx(0.0).epsilon(1e-6));
+    CHECK(b.hi.y == doctest::Approx(3.4).epsilon(1e-3));
+  }
+}
+
+}  // namespace prt
