@@ -25,7 +25,7 @@ std::optional<std::string> SharedData() {
 }
 
 std::string ScratchDir(const std::string& name) {
-  const fs::path p = fs::current_path() / "test-tmp" / (name + "_" + std::to_string(::getpid()));
+  const fs::path p = fs::path(PRT_TEST_TMP_DIR) / (name + "_" + std::to_string(::getpid()));
   fs::remove_all(p);
   fs::create_directories(p);
   return p.string();

@@ -31,3 +31,42 @@ void ApplyWindow(Window w, ShRgb& coeffs) {
 }
 
 }  // namespace prt
+
+#include <algorithm>
+#include <vector>
+
+#include "sh/basis.h"
+#include "sh/quadrature.h"
+
+namespace prt {
+
+double MinReconstruction(const ShRgb& coeffs) {
+  const int lmax = LmaxOfCount(coeffs.size());
+  const SphereQuadrature grid = GaussSphere(lmax + 8);
+  std::vector<double> y(coeffs.size());
+  double lowest = 1e300;
+  for (const auto& d : grid.directions) {
+    EvalBasis(lmax, d, y.data());
+    glm::dvec3 v(0.0);
+    for (std::size_t k = 0; k < coeffs.size(); ++k) v += y[k] * coeffs[k];
+    lowest = std::min({lowest, v.x, v.y, v.z});
+  }
+  return lowest;
+}
+
+AutoWindow ChooseWindow(const ShRgb& coeffs) {
+  // Mean radiance is c_00 Y_00; 1e-9 of it is the "rounding" floor.
+  const double mean = std::max({coeffs[0].x, coeffs[0].y, coeffs[0].z}) * 0.28209479177387814;
+  const double floor = -1e-9 * std::max(mean, 1e-300);
+  AutoWindow result{Window::kNone, MinReconstruction(coeffs), 0.0};
+  for (Window w : {Window::kNone, Window::kLanczos, Window::kHann}) {
+    ShRgb windowed = coeffs;
+    ApplyWindow(w, windowed);
+    result.window = w;
+    result.min_after = (w == Window::kNone) ? result.min_before : MinReconstruction(windowed);
+    if (result.min_after >= floor) break;
+  }
+  return result;
+}
+
+}  // namespace prt

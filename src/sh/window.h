@@ -32,3 +32,24 @@ double WindowWeight(Window w, int l, int lmax);
 void ApplyWindow(Window w, ShRgb& coeffs);
 
 }  // namespace prt
+
+namespace prt {
+
+/// The result of `--window auto`.
+struct AutoWindow {
+  Window window;
+  double min_before;  ///< lowest reconstructed radiance (any channel) without a window
+  double min_after;   ///< the same with the chosen window
+};
+
+/// The mildest window (none, then lanczos, then hann) whose reconstruction of `coeffs` is
+/// non-negative everywhere, checked on a Gauss grid fine enough for bands 0..lmax; hann if
+/// none is (it rings least). Negative values relative to the mean radiance below 1e-9 count as
+/// zero, so rounding never forces a window.
+AutoWindow ChooseWindow(const ShRgb& coeffs);
+
+/// Lowest value of any channel of the reconstruction sum_k c_k Y_k over the sphere (sampled on
+/// a Gauss grid of lmax + 8 latitudes, exact for band-limited products of this size).
+double MinReconstruction(const ShRgb& coeffs);
+
+}  // namespace prt

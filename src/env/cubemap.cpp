@@ -1,0 +1,121 @@
+#include "env/cubemap.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "io/image_load.h"
+
+namespace prt {
+namespace fs = std::filesystem;
+
+CubemapEnvironment::CubemapEnvironment(std::array<ImageF, 6> faces, CubeLayout layout,
+                                       std::string description)
+    : faces_(std::move(faces)), frames_(FaceFrames(layout)), size_(faces_[0].width),
+      description_(std::move(description)) {
+  // Solid angles depend only on (col, row), the same for every face: compute them once.
+  solid_angles_.resize(static_cast<std::size_t>(size_) * size_);
+  for (int row = 0; row < size_; ++row)
+    for (int col = 0; col < size_; ++col)
+      solid_angles_[static_cast<std::size_t>(row) * size_ + col] = TexelSolidAngle(col, row, size_);
+}
+
+void CubemapEnvironment::Row(std::size_t i, std::vector<Texel>& out) const {
+  const int face = static_cast<int>(i / size_), row = static_cast<int>(i % size_);
+  const FaceFrame& f = frames_[face];
+  const double step = 2.0 / size_;
+  const double t = -1.0 + (row + 0.5) * step;
+  out.resize(size_);
+  for (int col = 0; col < size_; ++col) {
+    const double s = -1.0 + (col + 0.5) * step;
+    const glm::dvec3 d = f.n + s * f.u + t * f.v;
+    out[col].dir = d / std::sqrt(glm::dot(d, d));
+    out[col].solid_angle = solid_angles_[static_cast<std::size_t>(row) * size_ + col];
+    out[col].radiance = glm::dvec3(faces_[face].at(col, row));
+  }
+}
+
+glm::dvec3 CubemapEnvironment::Radiance(const glm::dvec3& dir) const {
+  // The face whose axis is closest to dir, then bilinear filtering inside that face.
+  int face = 0;
+  double best = -1.0;
+  for (int k = 0; k < 6; ++k) {
+    const double c = glm::dot(dir, frames_[k].n);
+    if (c > best) best = c, face = k;
+  }
+  const FaceFrame& f = frames_[face];
+  const double s = glm::dot(dir, f.u) / best, t = glm::dot(dir, f.v) / best;
+  const double x = std::clamp((s + 1.0) * 0.5 * size_ - 0.5, 0.0, size_ - 1.0);
+  const double y = std::clamp((t + 1.0) * 0.5 * size_ - 0.5, 0.0, size_ - 1.0);
+  const int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+  const int x1 = std::min(x0 + 1, size_ - 1), y1 = std::min(y0 + 1, size_ - 1);
+  const double fx = x - x0, fy = y - y0;
+  const ImageF& img = faces_[face];
+  const glm::dvec3 top = glm::mix(glm::dvec3(img.at(x0, y0)), glm::dvec3(img.at(x1, y0)), fx);
+  const glm::dvec3 bottom = glm::mix(glm::dvec3(img.at(x0, y1)), glm::dvec3(img.at(x1, y1)), fx);
+  return glm::mix(top, bottom, fy);
+}
+
+namespace {
+
+/// The one file folder/<name>.<ext> for a face; Error if none or several.
+std::string FindFace(const std::string& folder, const char* name) {
+  std::vector<std::string> found;
+  for (const char* ext : {".jpg", ".jpeg", ".png", ".hdr", ".exr", ".JPG", ".PNG", ".HDR", ".EXR"}) {
+    const fs::path p = fs::path(folder) / (std::string(name) + ext);
+    std::error_code ec;
+    if (fs::exists(p, ec)) found.push_back(p.string());
+  }
+  if (found.empty())
+    throw Error(folder + ": missing face '" + name +
+                "' (expected posx negx posy negy posz negz as .jpg, .png, .hdr or .exr)");
+  if (found.size() > 1)
+    throw Error(folder + ": face '" + name + "' exists in several formats (" + found[0] + ", " +
+                found[1] + "; expected exactly one)");
+  return found[0];
+}
+
+}  // namespace
+
+std::unique_ptr<Environment> LoadCubemap(const std::string& folder, CubeLayout layout) {
+  std::array<std::string, 6> paths;
+  for (int k = 0; k < 6; ++k) paths[k] = FindFace(folder, kFaceNames[k]);
+  // Check every size from the headers before decoding any pixels.
+  int size = 0;
+  for (int k = 0; k < 6; ++k) {
+    int w = 0, h = 0;
+    ImageSize(paths[k], w, h);
+    if (w != h)
+      throw Error(paths[k] + ": face is " + std::to_string(w) + "x" + std::to_string(h) +
+                  " (expected a square face)");
+    if (w > kMaxFaceSize)
+      throw Error(paths[k] + ": face of " + std::to_string(w) + "x" + std::to_string(h) +
+                  " is too large (at most " + std::to_string(kMaxFaceSize) + " per side)");
+    if (k == 0) size = w;
+    if (w != size)
+      throw Error(paths[k] + ": face is " + std::to_string(w) + "x" + std::to_string(h) +
+                  " but " + paths[0] + " is " + std::to_string(size) + "x" + std::to_string(size) +
+                  " (expected six faces of one size)");
+  }
+  const LdrDecode decode = layout == CubeLayout::kGames202 ? LdrDecode::kGamma22 : LdrDecode::kSrgb;
+  std::array<ImageF, 6> faces;
+  SanitizeCounts fixed;
+  for (int k = 0; k < 6; ++k) {
+    faces[k] = LoadImageLinear(paths[k], decode);
+    const SanitizeCounts c = SanitizeRadiance(faces[k]);
+    fixed.non_finite += c.non_finite, fixed.negative += c.negative, fixed.enormous += c.enormous;
+  }
+  if (fixed.total() > 0) Warn(folder + ": " + DescribeSanitized(fixed));
+  const std::string ext = fs::path(paths[0]).extension().string();
+  const std::string description =
+      "cubemap " + folder + " 6x" + std::to_string(size) + "^2 (" + ext.substr(1) +
+      (layout == CubeLayout::kGames202 ? ", course face mapping, pow 2.2" : "") + ")";
+  return std::make_unique<CubemapEnvironment>(std::move(faces), layout, description);
+}
+
+}  // namespace prt

@@ -1,0 +1,47 @@
+#pragma once
+/// \file
+/// A cube-map environment: six square faces of linear radiance (see cube_faces.h for the face
+/// frames and exact texel solid angles).
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "env/cube_faces.h"
+#include "env/environment.h"
+
+namespace prt {
+
+/// Largest face side accepted (a 16K face would need 3 GiB of floats per cube).
+constexpr int kMaxFaceSize = 8192;
+
+class CubemapEnvironment : public Environment {
+ public:
+  /// Faces in kFaceNames order (posx negx posy negy posz negz), all square and of one size.
+  CubemapEnvironment(std::array<ImageF, 6> faces, CubeLayout layout, std::string description);
+
+  glm::dvec3 Radiance(const glm::dvec3& dir) const override;
+  std::size_t RowCount() const override { return 6 * static_cast<std::size_t>(size_); }
+  void Row(std::size_t i, std::vector<Texel>& out) const override;
+  std::string Describe() const override { return description_; }
+
+  int face_size() const { return size_; }
+
+ private:
+  std::array<ImageF, 6> faces_;
+  std::array<FaceFrame, 6> frames_;
+  int size_;
+  std::vector<double> solid_angles_;  ///< size^2, shared by all faces
+  std::string description_;
+};
+
+/// Loads `folder/{posx,negx,posy,negy,posz,negz}.{jpg,png,hdr,exr}`. Throws Error naming the
+/// folder or face for a missing or ambiguous face, faces of different sizes, non-square or
+/// oversized faces (checked before decoding), or an unreadable image. LDR faces are decoded
+/// with the exact sRGB curve, or pow(x, 2.2) under the course layout; non-finite, negative and
+/// enormous texels are sanitised with a warning.
+std::unique_ptr<Environment> LoadCubemap(const std::string& folder, CubeLayout layout);
+
+}  // namespace prt

@@ -1,0 +1,64 @@
+#include "env/load_environment.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+#include "core/error.h"
+#include "env/cubemap.h"
+#include "env/equirect.h"
+#include "env/procedural.h"
+
+namespace prt {
+namespace fs = std::filesystem;
+namespace {
+
+double ParseValue(const std::string& spec, const std::string& key, const std::string& text, double lo,
+                  double hi) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v) || v < lo || v > hi) {
+    std::ostringstream ss;
+    ss << spec << ": " << key << "='" << text << "' is out of range (expected a number from " << lo
+       << " to " << hi << ")";
+    throw Error(ss.str());
+  }
+  return v;
+}
+
+std::unique_ptr<Environment> ParseSky(const std::string& spec, const std::string& params) {
+  SkyParams p;
+  std::stringstream ss(params);
+  std::string item;
+  while (std::getline(ss, item, ',')) {
+    const auto eq = item.find('=');
+    const std::string key = item.substr(0, eq);
+    const std::string value = eq == std::string::npos ? "" : item.substr(eq + 1);
+    if (key == "sun") p.sun = ParseValue(spec, key, value, 0.0, 1e6);
+    else if (key == "elevation") p.elevation = ParseValue(spec, key, value, -90.0, 90.0);
+    else if (key == "azimuth") p.azimuth = ParseValue(spec, key, value, -360.0, 360.0);
+    else if (key == "radius") p.radius = ParseValue(spec, key, value, 0.05, 45.0);
+    else
+      throw Error(spec + ": unknown sky parameter '" + key + "' (expected sun, elevation, azimuth or radius)");
+  }
+  return MakeSky(p);
+}
+
+}  // namespace
+
+std::unique_ptr<Environment> LoadEnvironment(const std::string& spec, CubeLayout layout) {
+  std::error_code ec;
+  if (fs::is_directory(spec, ec)) return LoadCubemap(spec, layout);
+  if (fs::exists(spec, ec)) return LoadEquirect(spec);
+
+  const auto colon = spec.find(':');
+  const std::string name = spec.substr(0, colon);
+  const std::string params = colon == std::string::npos ? "" : spec.substr(colon + 1);
+  if (name == "furnace") return MakeFurnace(params.empty() ? 1.0 : ParseValue(spec, "value", params, 0.0, 1e12));
+  if (name == "sky") return ParseSky(spec, params);
+  throw Error(spec + ": no such file, folder or built-in environment (expected a cubemap folder, an "
+                     "equirectangular .hdr/.exr/.png/.jpg file, or one of furnace, sky)");
+}
+
+}  // namespace prt

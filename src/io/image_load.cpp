@@ -1,0 +1,172 @@
+#include "io/image_load.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+#include <stb_image.h>
+
+#include <OpenEXR/ImfArray.h>
+#include <OpenEXR/ImfRgbaFile.h>
+
+#include "core/error.h"
+
+namespace prt {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string Lower(std::string s) {
+  for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+void CheckReadable(const std::string& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw Error(path + ": no such file");
+  if (fs::is_directory(path, ec)) throw Error(path + ": is a directory (expected an image file)");
+  if (fs::file_size(path, ec) == 0) throw Error(path + ": empty file (expected an image)");
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) throw Error(path + ": cannot open (" + std::strerror(errno) + ")");
+  std::fclose(f);
+}
+
+void CheckSize(const std::string& path, long long w, long long h) {
+  if (w <= 0 || h <= 0) throw Error(path + ": image has no pixels");
+  if (w > kMaxImageSide || h > kMaxImageSide ||
+      static_cast<unsigned long long>(w * h) > kMaxImagePixels)
+    throw Error(path + ": image of " + std::to_string(w) + "x" + std::to_string(h) +
+                " is too large (at most " + std::to_string(kMaxImageSide) + " per side and " +
+                std::to_string(kMaxImagePixels) + " pixels)");
+}
+
+bool IsExr(const std::string& path) { return Lower(fs::path(path).extension().string()) == ".exr"; }
+
+ImageF LoadExr(const std::string& path) {
+  try {
+    Imf::RgbaInputFile file(path.c_str());
+    const Imath::Box2i dw = file.dataWindow();
+    const long long w = static_cast<long long>(dw.max.x) - dw.min.x + 1;
+    const long long h = static_cast<long long>(dw.max.y) - dw.min.y + 1;
+    CheckSize(path, w, h);
+    Imf::Array2D<Imf::Rgba> pixels(h, w);
+    file.setFrameBuffer(&pixels[0][0] - dw.min.x - static_cast<long long>(dw.min.y) * w, 1, w);
+    file.readPixels(dw.min.y, dw.max.y);
+    ImageF image(static_cast<int>(w), static_cast<int>(h));
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const Imf::Rgba& p = pixels[y][x];
+        image.at(x, y) = {float(p.r), float(p.g), float(p.b)};
+      }
+    return image;
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    std::string what = e.what();
+    if (const auto nl = what.find('\n'); nl != std::string::npos) what.resize(nl);
+    throw Error(path + ": cannot read OpenEXR file (" + what + ")");
+  }
+}
+
+ImageF LoadStb(const std::string& path, LdrDecode ldr) {
+  int w = 0, h = 0, n = 0;
+  if (!stbi_info(path.c_str(), &w, &h, &n))
+    throw Error(path + ": not a readable image (" + std::string(stbi_failure_reason()) +
+                "; expected jpg, png, hdr or exr)");
+  CheckSize(path, w, h);
+  ImageF image(w, h);
+  const std::size_t count = static_cast<std::size_t>(w) * h;
+  if (stbi_is_hdr(path.c_str())) {
+    std::unique_ptr<float, void (*)(void*)> data(stbi_loadf(path.c_str(), &w, &h, &n, 3), stbi_image_free);
+    if (!data) throw Error(path + ": truncated or corrupt HDR image (" + stbi_failure_reason() + ")");
+    for (std::size_t i = 0; i < count; ++i)
+      image.pixels[i] = {data.get()[3 * i], data.get()[3 * i + 1], data.get()[3 * i + 2]};
+    return image;
+  }
+  // LDR: decode through a lookup table of the transfer curve.
+  const bool sixteen = stbi_is_16_bit(path.c_str());
+  const int levels = sixteen ? 65536 : 256;
+  std::vector<float> lut(levels);
+  for (int i = 0; i < levels; ++i) {
+    const double c = double(i) / (levels - 1);
+    lut[i] = float(ldr == LdrDecode::kSrgb ? SrgbToLinear(c) : std::pow(c, 2.2));
+  }
+  if (sixteen) {
+    std::unique_ptr<stbi_us, void (*)(void*)> data(stbi_load_16(path.c_str(), &w, &h, &n, 3), stbi_image_free);
+    if (!data) throw Error(path + ": truncated or corrupt image (" + stbi_failure_reason() + ")");
+    for (std::size_t i = 0; i < count; ++i)
+      image.pixels[i] = {lut[data.get()[3 * i]], lut[data.get()[3 * i + 1]], lut[data.get()[3 * i + 2]]};
+  } else {
+    std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load(path.c_str(), &w, &h, &n, 3), stbi_image_free);
+    if (!data) throw Error(path + ": truncated or corrupt image (" + stbi_failure_reason() + ")");
+    for (std::size_t i = 0; i < count; ++i)
+      image.pixels[i] = {lut[data.get()[3 * i]], lut[data.get()[3 * i + 1]], lut[data.get()[3 * i + 2]]};
+  }
+  return image;
+}
+
+}  // namespace
+
+double SrgbToLinear(double c) {
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+void ImageSize(const std::string& path, int& width, int& height) {
+  CheckReadable(path);
+  if (IsExr(path)) {
+    try {
+      Imf::RgbaInputFile file(path.c_str());
+      const Imath::Box2i dw = file.dataWindow();
+      width = dw.max.x - dw.min.x + 1;
+      height = dw.max.y - dw.min.y + 1;
+      return;
+    } catch (const std::exception& e) {
+      throw Error(path + ": cannot read OpenEXR header");
+    }
+  }
+  int n = 0;
+  if (!stbi_info(path.c_str(), &width, &height, &n))
+    throw Error(path + ": not a readable image (expected jpg, png, hdr or exr)");
+}
+
+ImageF LoadImageLinear(const std::string& path, LdrDecode ldr) {
+  CheckReadable(path);
+  return IsExr(path) ? LoadExr(path) : LoadStb(path, ldr);
+}
+
+SanitizeCounts SanitizeRadiance(ImageF& image) {
+  SanitizeCounts counts;
+  for (auto& p : image.pixels) {
+    for (int c = 0; c < 3; ++c) {
+      float& v = p[c];
+      if (!std::isfinite(v)) {
+        v = 0.0f;
+        ++counts.non_finite;
+      } else if (v < 0.0f) {
+        v = 0.0f;
+        ++counts.negative;
+      } else if (v > kMaxRadiance) {
+        v = kMaxRadiance;
+        ++counts.enormous;
+      }
+    }
+  }
+  return counts;
+}
+
+std::string DescribeSanitized(const SanitizeCounts& c) {
+  std::string s;
+  auto add = [&](std::size_t n, const char* what) {
+    if (n == 0) return;
+    s += (s.empty() ? "" : ", ") + std::to_string(n) + " " + what;
+  };
+  add(c.non_finite, "NaN/Inf values set to 0");
+  add(c.negative, "negative values set to 0");
+  add(c.enormous, "values above 1e15 clamped");
+  return s;
+}
+
+}  // namespace prt

@@ -1,0 +1,69 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "core/rng.h"
+#include "env/cube_faces.h"
+#include "env/cubemap.h"
+#include "tests/env/env_test_util.h"
+
+using namespace prt;
+
+namespace {
+constexpr double kFourPi = 4.0 * 3.14159265358979323846;
+// The bound: exact texel solid angles sum to 4 pi up to rounding.
+constexpr double kSolidAngleSumTolerance = 1e-12;
+}  // namespace
+
+TEST_SUITE("env") {
+  TEST_CASE("cube texel solid angles sum to 4 pi for any face size") {
+    for (int size : {1, 2, 3, 17, 64, 256, 1000}) {
+      double sum = 0.0;
+      for (int row = 0; row < size; ++row)
+        for (int col = 0; col < size; ++col) sum += TexelSolidAngle(col, row, size);
+      CHECK(std::abs(6.0 * sum - kFourPi) < kSolidAngleSumTolerance);
+    }
+    // Corner texels are about 5.2x smaller than centre ones (CONVENTIONS.md), at 512^2.
+    const double ratio = TexelSolidAngle(256, 256, 512) / TexelSolidAngle(0, 0, 512);
+    CHECK(ratio == doctest::Approx(5.2).epsilon(0.01));
+  }
+
+  TEST_CASE("face frames are orthonormal and right-handed (N = U x V reversed per OpenGL)") {
+    for (CubeLayout layout : {CubeLayout::kStandard, CubeLayout::kGames202}) {
+      glm::dvec3 normal_sum(0.0);
+      for (const FaceFrame& f : FaceFrames(layout)) {
+        CHECK(glm::dot(f.n, f.u) == 0.0);
+        CHECK(glm::dot(f.n, f.v) == 0.0);
+        CHECK(glm::dot(f.u, f.v) == 0.0);
+        normal_sum += f.n;
+      }
+      CHECK(glm::length(normal_sum) == 0.0);  // the six faces cover the six axis directions
+    }
+    // The standard table is the OpenGL layout: the faces' (U, V) frames are all left-handed
+    // with N, i.e. cross(U, V) = -N; the course's mirrored posx breaks that.
+    for (const FaceFrame& f : FaceFrames(CubeLayout::kStandard)) CHECK(glm::cross(f.u, f.v) == -f.n);
+    CHECK(glm::cross(FaceFrames(CubeLayout::kGames202)[0].u, FaceFrames(CubeLayout::kGames202)[0].v) ==
+          FaceFrames(CubeLayout::kGames202)[0].n);
+  }
+
+  TEST_CASE("Radiance() looks up the texel a direction falls in") {
+    // Each texel holds its own index, so a lookup at its centre must return that index.
+    const int size = 8;
+    std::array<ImageF, 6> faces;
+    for (int k = 0; k < 6; ++k) {
+      faces[k] = ImageF(size, size);
+      for (int row = 0; row < size; ++row)
+        for (int col = 0; col < size; ++col) faces[k].at(col, row) = glm::vec3(float(k), float(row), float(col));
+    }
+    const CubemapEnvironment env(faces, CubeLayout::kStandard, "index cube");
+    std::vector<Texel> texels;
+    for (std::size_t r = 0; r < env.RowCount(); ++r) {
+      env.Row(r, texels);
+      for (int col = 0; col < size; ++col) {
+        // Bilinear weights at a texel centre are 1 and 0 up to rounding of the coordinates.
+        const glm::dvec3 v = env.Radiance(texels[col].dir);
+        CHECK(glm::length(v - glm::dvec3(double(r / size), double(r % size), double(col))) < 1e-9);
+      }
+    }
+  }
+}
