@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/simd.h"
+
 namespace prt {
 namespace {
 
@@ -10,7 +12,14 @@ constexpr double kPi = 3.14159265358979323846;
 /// a_lm and b_lm of the recurrence for every (l, m) with l <= kMaxBasisLmax, built once.
 struct RecurrenceTable {
   std::vector<double> a, b;  // indexed by ShIndex(l, m), m >= 0
-  RecurrenceTable() : a(CoeffCount(kMaxBasisLmax)), b(CoeffCount(kMaxBasisLmax)) {
+  std::vector<double> q;     // Q_m, the l = m start values (sign included)
+  std::vector<double> c1;    // sqrt(2m + 3), the l = m + 1 factor
+  RecurrenceTable()
+      : a(CoeffCount(kMaxBasisLmax)), b(CoeffCount(kMaxBasisLmax)), q(kMaxBasisLmax + 1),
+        c1(kMaxBasisLmax + 1) {
+    q[0] = 0.28209479177387814;  // 1/sqrt(4 pi)
+    for (int m = 1; m <= kMaxBasisLmax; ++m) q[m] = -std::sqrt((2.0 * m + 1.0) / (2.0 * m)) * q[m - 1];
+    for (int m = 0; m <= kMaxBasisLmax; ++m) c1[m] = std::sqrt(2.0 * m + 3.0);
     for (int l = 2; l <= kMaxBasisLmax; ++l) {
       for (int m = 0; m <= l - 2; ++m) {
         const double l2 = double(l) * l, m2 = double(m) * m, lm1 = double(l - 1);
@@ -90,6 +99,53 @@ void EvalBasis(int lmax, const glm::dvec3& dir, double* out) {
     return;
   }
   EvalBasisRecurrence(lmax, dir, out);
+}
+
+PRT_VECTORIZED
+void EvalBasisBatch(int lmax, std::size_t n, const double* x, const double* y, const double* z,
+                    double* out, std::size_t stride) {
+  const RecurrenceTable& t = Table();
+  constexpr double kSqrt2 = 1.4142135623730951;
+  // Per direction: Re/Im of (x + i y)^m, and the last two Pbar values of the current m.
+  std::vector<double> buffer(4 * n);
+  double* c = buffer.data();
+  double* s = c + n;
+  double* p1 = s + n;
+  double* p2 = p1 + n;
+  for (std::size_t i = 0; i < n; ++i) c[i] = 1.0, s[i] = 0.0;
+  for (int m = 0; m <= lmax; ++m) {
+    if (m > 0) {
+      for (std::size_t i = 0; i < n; ++i) {
+        const double cn = c[i] * x[i] - s[i] * y[i];
+        s[i] = c[i] * y[i] + s[i] * x[i];
+        c[i] = cn;
+      }
+    }
+    const double qm = t.q[m];
+    double* pos = out + ShIndex(m, m) * stride;
+    double* neg = out + ShIndex(m, -m) * stride;
+    const double scale = (m == 0) ? 1.0 : kSqrt2;
+    for (std::size_t i = 0; i < n; ++i) {  // l = m
+      p2[i] = 0.0;
+      p1[i] = qm;
+      pos[i] = qm * scale * c[i];
+      if (m > 0) neg[i] = qm * kSqrt2 * s[i];
+    }
+    for (int l = m + 1; l <= lmax; ++l) {
+      pos = out + ShIndex(l, m) * stride;
+      neg = out + ShIndex(l, -m) * stride;
+      const double a = (l == m + 1) ? t.c1[m] : t.a[ShIndex(l, m)];
+      const double b = (l == m + 1) ? 0.0 : t.b[ShIndex(l, m)];
+      for (std::size_t i = 0; i < n; ++i) {
+        const double p = a * (z[i] * p1[i] - b * p2[i]);
+        p2[i] = p1[i];
+        p1[i] = p;
+        pos[i] = p * scale * c[i];
+      }
+      if (m > 0)
+        for (std::size_t i = 0; i < n; ++i) neg[i] = p1[i] * kSqrt2 * s[i];
+    }
+  }
 }
 
 std::vector<double> EvalBasis(int lmax, const glm::dvec3& dir) {

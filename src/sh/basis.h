@@ -42,6 +42,12 @@ std::vector<double> EvalBasis(int lmax, const glm::dvec3& dir);
 /// The recurrence for any lmax (what EvalBasis uses above band 2).
 void EvalBasisRecurrence(int lmax, const glm::dvec3& dir, double* out);
 
+/// The recurrence for a batch of n directions given as separate x, y, z arrays (unit vectors):
+/// writes Y_k(dir_i) to out[k * stride + i]. The inner loops run over the batch, so they
+/// vectorise; this is what light projection uses.
+void EvalBasisBatch(int lmax, std::size_t n, const double* x, const double* y, const double* z,
+                    double* out, std::size_t stride);
+
 /// Closed forms of bands 0..2 (9 values), as listed in CONVENTIONS.md.
 void EvalBasisBand2(const glm::dvec3& dir, double* out);
 

@@ -1,0 +1,12 @@
+#pragma once
+/// \file
+/// PRT_VECTORIZED: compiles a hot loop twice, for AVX2 and for the baseline x86-64, and picks
+/// one at run time (GCC function multiversioning). The build stays portable, and because the
+/// project compiles in ISO C++ mode (no floating-point contraction into FMA) both versions
+/// round identically: outputs do not depend on the machine's vector width.
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__SANITIZE_ADDRESS__)
+#define PRT_VECTORIZED __attribute__((target_clones("avx2", "default")))
+#else
+#define PRT_VECTORIZED
+#endif
