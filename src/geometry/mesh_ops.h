@@ -15,6 +15,10 @@
 
 namespace prt {
 
+/// Albedo of meshes that do not say otherwise (procedural meshes, OBJ files without usable
+/// materials): 0.8 grey, like mary.mtl's Kd.
+inline constexpr float kDefaultAlbedo = 0.8f;
+
 /// Axis-aligned bounding box of a set of points; empty when lo > hi.
 struct Bounds3 {
   glm::vec3 lo{1e30f};

@@ -11,11 +11,9 @@
 #include <glm/vec3.hpp>
 
 #include "geometry/mesh.h"
+#include "geometry/mesh_ops.h"
 
 namespace prt {
-
-/// Default albedo of procedural meshes: 0.8 grey, like mary.mtl's Kd.
-inline constexpr float kDefaultAlbedo = 0.8f;
 
 /// Latitude-longitude sphere: `segments` (>= 3) steps around the Y axis, segments / 2 (>= 2)
 /// rings from pole to pole, one vertex at each pole. Vertices lie on the sphere and their normal

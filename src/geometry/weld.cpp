@@ -1,0 +1,109 @@
+#include "geometry/weld.h"
+
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+#include <nanoflann.hpp>
+
+#include "geometry/mesh_ops.h"
+
+namespace prt {
+namespace {
+
+// The adaptor nanoflann needs to read points out of a vector of vec3.
+struct PointCloud {
+  std::vector<glm::vec3> points;
+  std::size_t kdtree_get_point_count() const { return points.size(); }
+  float kdtree_get_pt(std::size_t i, std::size_t dim) const { return points[i][static_cast<int>(dim)]; }
+  template <class Box>
+  bool kdtree_get_bbox(Box&) const { return false; }
+};
+using KdTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, PointCloud>, PointCloud, 3>;
+
+bool HasNormal(const glm::vec3& n) { return n.x != 0.0f || n.y != 0.0f || n.z != 0.0f; }
+
+}  // namespace
+
+Mesh WeldCorners(const CornerSoup& soup, float position_tolerance, MeshReport& report) {
+  const std::size_t n = soup.positions.size();
+  constexpr std::uint32_t kNone = ~0u;
+
+  // k-d tree over the corners without a normal (local index -> corner index in `bare`).
+  PointCloud cloud;
+  std::vector<std::uint32_t> bare;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!HasNormal(soup.normals[i])) bare.push_back(static_cast<std::uint32_t>(i)), cloud.points.push_back(soup.positions[i]);
+  KdTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+  if (!bare.empty()) tree.buildIndex();
+
+  Mesh mesh;
+  std::vector<glm::vec3> normal_sum, albedo_sum;
+  std::vector<int> corner_count;
+  std::vector<std::uint32_t> vertex_of(n, kNone);
+  std::unordered_map<std::uint64_t, std::uint32_t> vertex_of_id;
+  std::vector<std::pair<std::uint32_t, float>> matches;
+  const float radius_sq = position_tolerance * position_tolerance;  // L2_Simple works in squares
+  for (std::size_t i = 0; i < n; ++i) {
+    std::uint32_t vertex = kNone;
+    if (HasNormal(soup.normals[i])) {
+      // Same file (position, normal) pair: same vertex.
+      const auto it = vertex_of_id.find(soup.ids[i]);
+      if (it != vertex_of_id.end()) vertex = it->second;
+    } else {
+      // The earliest normal-less corner within the tolerance that already has a vertex.
+      const float query[3] = {soup.positions[i].x, soup.positions[i].y, soup.positions[i].z};
+      matches.clear();
+      tree.radiusSearch(query, radius_sq, matches, nanoflann::SearchParams(32, 0.0f, false));
+      std::uint32_t earliest = kNone;
+      for (const auto& match : matches) {
+        const std::uint32_t j = bare[match.first];
+        if (j < i && j < earliest) earliest = j;
+      }
+      if (earliest != kNone) vertex = vertex_of[earliest];
+    }
+    if (vertex == kNone) {
+      vertex = static_cast<std::uint32_t>(mesh.positions.size());
+      mesh.positions.push_back(soup.positions[i]);
+      normal_sum.emplace_back(0.0f);
+      albedo_sum.emplace_back(0.0f);
+      corner_count.push_back(0);
+      if (HasNormal(soup.normals[i])) vertex_of_id.emplace(soup.ids[i], vertex);
+    } else {
+      ++report.welded_away;
+    }
+    vertex_of[i] = vertex;
+    normal_sum[vertex] += soup.normals[i];
+    albedo_sum[vertex] += soup.albedo[i];
+    ++corner_count[vertex];
+  }
+
+  // Triangles; a corner pair welded together collapses the triangle.
+  for (std::size_t t = 0; t + 2 < n; t += 3) {
+    const std::array<std::uint32_t, 3> tri = {vertex_of[t], vertex_of[t + 1], vertex_of[t + 2]};
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) {
+      ++report.dropped_degenerate;
+      continue;
+    }
+    mesh.triangles.push_back(tri);
+  }
+
+  // Normals from the file where given, smooth ones elsewhere; mean albedo.
+  const std::size_t nv = mesh.positions.size();
+  mesh.normals.resize(nv);
+  mesh.albedo.resize(nv);
+  std::vector<glm::vec3> smooth;
+  for (std::size_t v = 0; v < nv; ++v) {
+    mesh.albedo[v] = albedo_sum[v] / static_cast<float>(corner_count[v]);
+    const float len = glm::length(normal_sum[v]);
+    if (len > 0.0f) {
+      mesh.normals[v] = normal_sum[v] / len;
+      continue;
+    }
+    if (smooth.empty()) smooth = SmoothNormals(mesh);
+    mesh.normals[v] = smooth[v];
+    ++report.recomputed_normals;
+  }
+  return mesh;
+}
+
+}  // namespace prt
