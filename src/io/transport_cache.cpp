@@ -1,0 +1,109 @@
+#include "io/transport_cache.h"
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/hash.h"
+
+namespace prt {
+namespace {
+
+constexpr char kMagic[8] = {'P', 'R', 'T', 'C', 'A', 'C', 'H', 'E'};
+constexpr std::uint32_t kFormatVersion = 1;
+
+struct Header {
+  char magic[8];
+  std::uint32_t version, lmax, channels, reserved;
+  std::uint64_t vertices, key, checksum;
+};
+static_assert(sizeof(Header) == 48, "cache header layout");
+
+template <class T>
+std::uint64_t HashVector(const std::vector<T>& v, std::uint64_t h) {
+  return Fnv1a(v.data(), v.size() * sizeof(T), h);
+}
+
+}  // namespace
+
+std::uint64_t TransportKey(const Mesh& mesh, const TransportOptions& o) {
+  std::uint64_t h = kFnvOffset;
+  h = HashVector(mesh.positions, h);
+  h = HashVector(mesh.normals, h);
+  h = HashVector(mesh.albedo, h);
+  h = HashVector(mesh.triangles, h);
+  const std::string options = std::string("prt ") + PRT_VERSION + " mode=" + TransportModeName(o.mode) +
+                              " lmax=" + std::to_string(o.lmax) + " samples=" + std::to_string(o.samples) +
+                              " sampler=" + SamplerName(o.sampler) + " bounces=" + std::to_string(o.bounces) +
+                              " seed=" + std::to_string(o.seed) + " tol=" + std::to_string(o.bounce_tolerance) +
+                              " sets=" + std::to_string(o.direction_sets);
+  return Fnv1a(options, h);
+}
+
+void WriteTransportCache(const std::string& path, const Transport& t, std::uint64_t key) {
+  Header h{};
+  std::memcpy(h.magic, kMagic, sizeof kMagic);
+  h.version = kFormatVersion;
+  h.lmax = static_cast<std::uint32_t>(t.lmax);
+  h.channels = static_cast<std::uint32_t>(t.channels);
+  h.vertices = t.vertices;
+  h.key = key;
+  h.checksum = HashVector(t.coeffs, kFnvOffset);
+  std::string bytes(sizeof h + t.coeffs.size() * sizeof(float), '\0');
+  std::memcpy(bytes.data(), &h, sizeof h);
+  std::memcpy(bytes.data() + sizeof h, t.coeffs.data(), t.coeffs.size() * sizeof(float));
+  WriteFileAtomic(path, bytes);
+}
+
+std::optional<Transport> ReadTransportCache(const std::string& path, std::uint64_t key, std::string& why) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    why = "no cache yet";
+    return std::nullopt;
+  }
+  std::ifstream in(path, std::ios::binary);
+  Header h{};
+  if (!in.read(reinterpret_cast<char*>(&h), sizeof h) || std::memcmp(h.magic, kMagic, sizeof kMagic) != 0) {
+    why = "not a prt cache file";
+    return std::nullopt;
+  }
+  if (h.version != kFormatVersion) {
+    why = "cache format version " + std::to_string(h.version) + " (expected " + std::to_string(kFormatVersion) + ")";
+    return std::nullopt;
+  }
+  if (h.key != key) {
+    why = "made from other inputs";
+    return std::nullopt;
+  }
+  if (h.lmax > 64 || (h.channels != 1 && h.channels != 3) || h.vertices > (1ULL << 32)) {
+    why = "corrupt header";
+    return std::nullopt;
+  }
+  const std::uint64_t floats = h.vertices * h.channels * (h.lmax + 1) * (h.lmax + 1);
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec || size != sizeof h + floats * sizeof(float)) {
+    why = "truncated or oversized (" + std::to_string(size) + " bytes, expected " +
+          std::to_string(sizeof h + floats * sizeof(float)) + ")";
+    return std::nullopt;
+  }
+  Transport t;
+  t.lmax = static_cast<int>(h.lmax);
+  t.channels = static_cast<int>(h.channels);
+  t.vertices = h.vertices;
+  t.coeffs.resize(floats);
+  if (!in.read(reinterpret_cast<char*>(t.coeffs.data()), static_cast<std::streamsize>(floats * sizeof(float)))) {
+    why = "truncated";
+    return std::nullopt;
+  }
+  if (HashVector(t.coeffs, kFnvOffset) != h.checksum) {
+    why = "checksum mismatch (corrupted)";
+    return std::nullopt;
+  }
+  why = "reused";
+  return t;
+}
+
+}  // namespace prt

@@ -1,0 +1,34 @@
+#pragma once
+/// \file
+/// The binary transport cache: lets `render` skip the precompute when nothing it depends on
+/// has changed. Never trusted: a file that is truncated, corrupted, from another format
+/// version or made from other inputs is ignored with a note, and the transport recomputed.
+///
+/// Layout (little-endian):
+///   "PRTCACHE"  8 bytes magic
+///   u32 format version, u32 lmax, u32 channels, u32 reserved
+///   u64 vertex count, u64 key (hash of every input, see TransportKey), u64 payload checksum
+///   float payload[vertices * channels * (lmax+1)^2]
+/// Written to a temporary name and renamed (core/atomic_file.h).
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "geometry/mesh.h"
+#include "precompute/transport.h"
+
+namespace prt {
+
+/// Hash of everything the transport depends on: the mesh's positions, normals, albedo and
+/// triangles, and every option of `options`.
+std::uint64_t TransportKey(const Mesh& mesh, const TransportOptions& options);
+
+/// Writes `transport` with `key` to `path` atomically. Throws Error if it cannot.
+void WriteTransportCache(const std::string& path, const Transport& transport, std::uint64_t key);
+
+/// Reads the cache at `path` if it is intact and was made with `key`; otherwise returns
+/// nothing and sets `why` to the reason ("no cache yet", "checksum mismatch", ...).
+std::optional<Transport> ReadTransportCache(const std::string& path, std::uint64_t key, std::string& why);
+
+}  // namespace prt

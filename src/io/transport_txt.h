@@ -1,0 +1,18 @@
+#pragma once
+/// \file
+/// The course's `transport.txt` (GAMES202 homework 2): the first line is the vertex count, then
+/// three rows per triangle in face order (one per corner), each (lmax+1)^2 numbers: the
+/// corner's transfer vector. The WebGL framework reads it as per-corner attributes.
+/// Written with 7 significant digits (float precision).
+
+#include <string>
+
+#include "geometry/mesh.h"
+#include "precompute/transport.h"
+
+namespace prt {
+
+/// The text of transport.txt for channel `channel` of `transport` (0 when it has one channel).
+std::string FormatTransportTxt(const Mesh& mesh, const Transport& transport, int channel);
+
+}  // namespace prt

@@ -1,0 +1,105 @@
+#include "precompute/transport.h"
+
+#include <chrono>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "core/parallel.h"
+#include "precompute/transport_steps.h"
+#include "sh/basis.h"
+#include "sh/zonal.h"
+
+namespace prt {
+namespace {
+
+double Since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+TransportMode TransportModeFromName(const std::string& name) {
+  if (name == "unshadowed") return TransportMode::kUnshadowed;
+  if (name == "interreflection") return TransportMode::kInterreflection;
+  return TransportMode::kShadowed;
+}
+
+const char* TransportModeName(TransportMode mode) {
+  switch (mode) {
+    case TransportMode::kUnshadowed: return "unshadowed";
+    case TransportMode::kInterreflection: return "interreflection";
+    default: return "shadowed";
+  }
+}
+
+std::vector<double> EstimateUnshadowed(const std::vector<glm::dvec3>& dirs, const glm::dvec3& normal, int lmax) {
+  constexpr double kPi = 3.14159265358979323846;
+  std::vector<double> t(CoeffCount(lmax), 0.0), y(CoeffCount(lmax));
+  const double weight = 4.0 * kPi / double(dirs.size()) / kPi;
+  for (const auto& d : dirs) {
+    const double c = glm::dot(normal, d);
+    if (c <= 0.0) continue;
+    EvalBasis(lmax, d, y.data());
+    for (std::size_t k = 0; k < t.size(); ++k) t[k] += weight * c * y[k];
+  }
+  return t;
+}
+
+Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, TransportReport* report) {
+  TransportReport local;
+  TransportReport& r = report ? *report : local;
+  r = TransportReport{};
+
+  Transport transport;
+  transport.lmax = options.lmax;
+  transport.vertices = mesh.vertex_count();
+  const int count = CoeffCount(options.lmax);
+
+  // Unshadowed: the closed form at every vertex; nothing to trace.
+  if (options.mode == TransportMode::kUnshadowed) {
+    const auto t0 = std::chrono::steady_clock::now();
+    transport.coeffs.resize(transport.vertices * count);
+    ParallelFor(transport.vertices, 256, [&](std::size_t begin, std::size_t end) {
+      std::vector<double> t(count);
+      for (std::size_t v = begin; v < end; ++v) {
+        UnshadowedTransfer(options.lmax, glm::dvec3(mesh.normals[v]), t.data());
+        for (int k = 0; k < count; ++k) transport.coeffs[v * count + k] = static_cast<float>(t[k]);
+      }
+    });
+    r.closed_form_vertices = transport.vertices;
+    r.direct_seconds = Since(t0);
+    return transport;
+  }
+
+  auto t0 = std::chrono::steady_clock::now();
+  const Bvh bvh = Bvh::Build(mesh);
+  r.bvh_built = true;
+  r.bvh_seconds = Since(t0);
+
+  t0 = std::chrono::steady_clock::now();
+  const DirectionPool pool =
+      MakeDirectionPool(options.sampler, options.samples, options.direction_sets, options.seed);
+  r.directions_per_vertex = static_cast<int>(pool.size());
+  const bool keep_hits = options.mode == TransportMode::kInterreflection;
+  DirectResult direct = ComputeDirect(mesh, bvh, pool, options.lmax, keep_hits);
+  r.rays = direct.rays;
+  r.closed_form_vertices = direct.closed_form_vertices;
+  r.direct_seconds = Since(t0);
+
+  if (!keep_hits) {
+    transport.coeffs.resize(direct.transfer.size());
+    for (std::size_t i = 0; i < direct.transfer.size(); ++i) transport.coeffs[i] = static_cast<float>(direct.transfer[i]);
+    return transport;
+  }
+
+  t0 = std::chrono::steady_clock::now();
+  BounceResult bounced = AddBounces(mesh, pool, direct, options, r);
+  r.bounce_seconds = Since(t0);
+  transport.channels = bounced.channels;
+  transport.coeffs.resize(bounced.transfer.size());
+  for (std::size_t i = 0; i < bounced.transfer.size(); ++i) transport.coeffs[i] = static_cast<float>(bounced.transfer[i]);
+  return transport;
+}
+
+}  // namespace prt

@@ -1,0 +1,87 @@
+#pragma once
+/// \file
+/// Per-vertex diffuse transport: the SH vector T(v) such that a vertex of albedo rho under a
+/// distant light with coefficients L sends out radiance  rho * sum_k L_k T_k(v)  [1].
+///
+///   unshadowed       T_k = (1/pi) integral max(0, n.w) Y_k(w) dw = (A_l/pi) Y_k(n), closed form
+///                    (sh/zonal.h): no rays, no BVH.
+///   shadowed         T_k = (1/pi) integral V(w) max(0, n.w) Y_k(w) dw. Estimated with a control
+///                    variate: the closed form minus the Monte Carlo estimate of what is blocked,
+///                      T = T_unshadowed - (4 pi / N) (1/pi) sum over blocked w_i of (n.w_i) Y(w_i),
+///                    which is unbiased, exact for unoccluded vertices (they get the closed form
+///                    and are counted), and has noise only where something is in the way.
+///   interreflection  adds bounces: T^{b+1}(v) = (1/pi) integral over blocked directions of
+///                    rho(h) max(0, n.w) T^b(h) dw, h the closest hit, T^b(h) and rho(h)
+///                    interpolated barycentrically; T = T^0 + T^1 + ... [1, sec. 5]. Stops early
+///                    once a bounce adds less than `bounce_tolerance` of the direct energy.
+///                    With coloured albedo, bounces differ per channel: three vectors a vertex.
+///
+/// The albedo of the receiving vertex stays outside T (the course's convention). Directions
+/// come from a pool of `direction_sets` sets drawn by the chosen sampler, each prepared once as
+/// a ray fan (geometry/ray_fan.h); vertex v uses set hash(seed, v) mod pool size, so neighbours
+/// get different sets, results do not depend on the thread count, and no fan is rebuilt per
+/// vertex.
+///
+/// References
+/// [1] Sloan, Kautz, Snyder, "Precomputed Radiance Transfer for Real-Time Rendering in Dynamic,
+///     Low-Frequency Lighting Environments", SIGGRAPH 2002.
+/// [2] Green, "Spherical Harmonic Lighting: The Gritty Details", GDC 2003, sec. "Diffuse
+///     shadowed / interreflected transfer".
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "geometry/mesh.h"
+#include "precompute/samplers.h"
+#include "sh/coeffs.h"
+
+namespace prt {
+
+enum class TransportMode { kUnshadowed, kShadowed, kInterreflection };
+
+TransportMode TransportModeFromName(const std::string& name);
+const char* TransportModeName(TransportMode mode);
+
+struct TransportOptions {
+  TransportMode mode = TransportMode::kShadowed;
+  int lmax = 2;
+  int samples = 1024;                ///< directions per vertex (stratified: floor(sqrt)^2)
+  Sampler sampler = Sampler::kFibonacci;
+  int bounces = 1;                   ///< interreflection bounces
+  std::uint64_t seed = 1;
+  double bounce_tolerance = 1e-4;    ///< stop when a bounce adds less than this share of direct
+  int direction_sets = 64;           ///< size of the pool of direction sets
+};
+
+/// Transfer vectors of every vertex.
+struct Transport {
+  int lmax = 0;
+  int channels = 1;  ///< 1: one vector for R, G and B; 3: one per channel (coloured bounces)
+  std::size_t vertices = 0;
+  std::vector<float> coeffs;  ///< [(v * channels + c) * CoeffCount(lmax) + k]
+
+  const float* at(std::size_t v, int c) const {
+    return coeffs.data() + (v * channels + (channels == 1 ? 0 : c)) * CoeffCount(lmax);
+  }
+};
+
+/// What the precompute did and left out, for the run summary.
+struct TransportReport {
+  bool bvh_built = false;
+  double bvh_seconds = 0, direct_seconds = 0, bounce_seconds = 0;
+  std::uint64_t rays = 0;                 ///< rays actually traced
+  std::size_t closed_form_vertices = 0;   ///< vertices given the exact closed form
+  int directions_per_vertex = 0;
+  std::vector<double> bounce_share;       ///< energy each bounce added, relative to direct
+  std::string bounce_stop;                ///< why the bounces stopped
+};
+
+/// Computes the transport of `mesh` (unit normals, albedo in [0, 1]).
+Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, TransportReport* report);
+
+/// Monte Carlo estimate of the unshadowed transfer from a direction set (weights 4 pi/N), kept
+/// to test samplers against the closed form.
+std::vector<double> EstimateUnshadowed(const std::vector<glm::dvec3>& dirs, const glm::dvec3& normal, int lmax);
+
+}  // namespace prt

@@ -1,0 +1,98 @@
+// Interreflection: each bounce gathers the previous bounce's transfer from the blocked
+// directions, weighted by the albedo at the hit over pi and the cosine at the receiver.
+#include <cmath>
+#include <cstdio>
+
+#include <glm/geometric.hpp>
+
+#include "core/parallel.h"
+#include "core/progress.h"
+#include "precompute/transport_steps.h"
+
+namespace prt {
+namespace {
+
+bool GreyAlbedo(const Mesh& mesh) {
+  for (const auto& a : mesh.albedo)
+    if (a.x != a.y || a.y != a.z) return false;
+  return true;
+}
+
+/// Sum of the band-0 coefficient over vertices and channels: the bounce's energy.
+double Energy(const std::vector<double>& t, int count) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < t.size(); i += count) sum += t[i];
+  return sum;
+}
+
+}  // namespace
+
+BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const DirectResult& direct,
+                        const TransportOptions& options, TransportReport& report) {
+  const int count = CoeffCount(options.lmax);
+  const std::size_t nv = mesh.vertex_count();
+  BounceResult result;
+  result.channels = GreyAlbedo(mesh) ? 1 : 3;
+  const int channels = result.channels;
+  const std::size_t stride = static_cast<std::size_t>(channels) * count;
+
+  // Bounce 0 is the direct transfer, the same for every channel.
+  std::vector<double> current(nv * stride);
+  for (std::size_t v = 0; v < nv; ++v)
+    for (int c = 0; c < channels; ++c)
+      std::copy(direct.transfer.begin() + v * count, direct.transfer.begin() + (v + 1) * count,
+                current.begin() + v * stride + c * count);
+  result.transfer = current;
+  const double direct_energy = Energy(current, count);
+  const double weight = 4.0 / double(pool.size());  // (4 pi / N) * (1 / pi)
+
+  std::size_t front_hits = 0;
+  for (const auto& hits : direct.hits)
+    for (const VertexHit& h : hits) front_hits += h.front;
+  if (front_hits == 0) {
+    report.bounce_stop = "no bounce pass: no vertex sees any lit surface of the mesh";
+    return result;
+  }
+  report.bounce_stop = "all " + std::to_string(options.bounces) + " bounces computed";
+  for (int bounce = 1; bounce <= options.bounces; ++bounce) {
+    std::vector<double> next(nv * stride, 0.0);
+    Progress progress("bounce " + std::to_string(bounce), nv);
+    ParallelFor(nv, 64, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t v = begin; v < end; ++v) {
+        const glm::dvec3 n(mesh.normals[v]);
+        const auto& dirs = pool.sets[pool.SetOf(v)];
+        double* out = next.data() + v * stride;
+        for (const VertexHit& h : direct.hits[v]) {
+          if (!h.front) continue;  // the unlit back of a surface reflects nothing
+          const double cosine = glm::dot(n, dirs[h.dir]);
+          const auto& tri = mesh.triangles[h.triangle];
+          const double b[3] = {1.0 - h.u - h.v, h.u, h.v};
+          for (int c = 0; c < channels; ++c) {
+            double rho = 0.0;
+            for (int j = 0; j < 3; ++j) rho += b[j] * mesh.albedo[tri[j]][c];
+            const double f = weight * cosine * rho;
+            const double* t0 = current.data() + tri[0] * stride + c * count;
+            const double* t1 = current.data() + tri[1] * stride + c * count;
+            const double* t2 = current.data() + tri[2] * stride + c * count;
+            for (int k = 0; k < count; ++k) out[c * count + k] += f * (b[0] * t0[k] + b[1] * t1[k] + b[2] * t2[k]);
+          }
+        }
+      }
+      progress.Advance(end - begin);
+    });
+    for (std::size_t i = 0; i < next.size(); ++i) result.transfer[i] += next[i];
+    const double share = direct_energy > 0.0 ? Energy(next, count) / direct_energy : 0.0;
+    report.bounce_share.push_back(share);
+    if (share < options.bounce_tolerance && bounce < options.bounces) {
+      char why[160];
+      std::snprintf(why, sizeof why, "stopped after bounce %d of %d: it added %.2g of the direct energy (< %.2g)",
+                    bounce, options.bounces, share, options.bounce_tolerance);
+      report.bounce_stop = why;
+      break;
+    }
+    current.swap(next);
+  }
+  return result;
+}
+
+}  // namespace prt

@@ -1,0 +1,45 @@
+#pragma once
+/// \file
+/// The two steps of shadowed and interreflected transport (see transport.h for the maths):
+/// direct transfer with visibility, then the bounces. Internal to precompute/.
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry/bvh.h"
+#include "geometry/mesh.h"
+#include "precompute/direction_pool.h"
+#include "precompute/transport.h"
+
+namespace prt {
+
+/// A blocked direction of a vertex and what it hit (kept for the bounces).
+struct VertexHit {
+  std::uint32_t triangle;
+  float u, v;          ///< barycentrics of the hit point
+  std::uint32_t dir;   ///< index into the vertex's direction set
+  bool front;          ///< hit the lit (front) side of the surface
+};
+
+struct DirectResult {
+  std::vector<double> transfer;                ///< [v * count + k]
+  std::vector<std::vector<VertexHit>> hits;    ///< per vertex (only when asked for)
+  std::uint64_t rays = 0;
+  std::size_t closed_form_vertices = 0;
+};
+
+/// Shadowed transfer of every vertex (control-variate estimator). With `keep_hits`, traces
+/// closest hits instead of any-hit rays and records them.
+DirectResult ComputeDirect(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lmax,
+                           bool keep_hits);
+
+struct BounceResult {
+  int channels = 1;
+  std::vector<double> transfer;  ///< [(v * channels + c) * count + k], direct + all bounces
+};
+
+/// Adds up to options.bounces bounces to `direct`; records each bounce's share in `report`.
+BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const DirectResult& direct,
+                        const TransportOptions& options, TransportReport& report);
+
+}  // namespace prt
