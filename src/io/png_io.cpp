@@ -1,0 +1,82 @@
+#include "io/png_io.h"
+
+#include <cstring>
+#include <memory>
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+
+namespace prt {
+namespace {
+
+constexpr unsigned char kPngSignature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
+
+// stb keeps its PNG settings in process-wide globals: set them once, before the first encode.
+void ConfigureStbOnce() {
+  static const bool configured = [] {
+    stbi_write_png_compression_level = 1;  // stb raises anything below 5 to 5, its fastest
+    stbi_write_force_png_filter = 1;       // "sub" on every row: no per-row filter search
+    return true;
+  }();
+  (void)configured;
+}
+
+void AppendBytes(void* context, void* data, int size) {
+  static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                             static_cast<std::size_t>(size));
+}
+
+}  // namespace
+
+std::string EncodePng(const Image8& image) {
+  if (image.width <= 0 || image.height <= 0 ||
+      image.rgb.size() != 3 * static_cast<std::size_t>(image.width) * image.height)
+    throw Error("PNG encoder: image " + std::to_string(image.width) + "x" +
+                std::to_string(image.height) + " with " + std::to_string(image.rgb.size()) +
+                " bytes (expected a non-empty image of 3 * width * height bytes)");
+  ConfigureStbOnce();
+  std::string bytes;
+  if (!stbi_write_png_to_func(AppendBytes, &bytes, image.width, image.height, 3,
+                              image.rgb.data(), 3 * image.width))
+    throw Error("PNG encoder: stb_image_write failed (expected enough memory)");
+  return bytes;
+}
+
+void WritePng(const std::string& path, const Image8& image) {
+  WriteFileAtomic(path, EncodePng(image));
+}
+
+Image8 DecodePng(const std::string& bytes, const std::string& name) {
+  if (bytes.size() < sizeof kPngSignature ||
+      std::memcmp(bytes.data(), kPngSignature, sizeof kPngSignature) != 0)
+    throw Error(name + ": not a PNG file (expected the PNG signature)");
+  const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
+  const int size = static_cast<int>(std::min<std::size_t>(bytes.size(), 0x7fffffff));
+  int width = 0, height = 0, channels = 0;
+  Image8 image;
+  if (stbi_is_16_bit_from_memory(data, size)) {
+    // Round 16-bit channels to 8 bits (stb's own conversion truncates).
+    std::unique_ptr<stbi_us, void (*)(void*)> pixels(
+        stbi_load_16_from_memory(data, size, &width, &height, &channels, 3), stbi_image_free);
+    if (!pixels) throw Error(name + ": cannot decode PNG: " + stbi_failure_reason() +
+                             " (expected a complete, uncorrupted file)");
+    image = Image8(width, height);
+    for (std::size_t i = 0; i < image.rgb.size(); ++i)
+      image.rgb[i] = static_cast<std::uint8_t>((pixels.get()[i] * 255u + 32767u) / 65535u);
+    return image;
+  }
+  std::unique_ptr<stbi_uc, void (*)(void*)> pixels(
+      stbi_load_from_memory(data, size, &width, &height, &channels, 3), stbi_image_free);
+  if (!pixels) throw Error(name + ": cannot decode PNG: " + stbi_failure_reason() +
+                           " (expected a complete, uncorrupted file)");
+  image = Image8(width, height);
+  std::memcpy(image.rgb.data(), pixels.get(), image.rgb.size());
+  return image;
+}
+
+Image8 ReadPng(const std::string& path) { return DecodePng(ReadFile(path), path); }
+
+}  // namespace prt

@@ -1,0 +1,31 @@
+#pragma once
+/// \file
+/// PNG files through stb (Debian's libstb): 8-bit RGB out, any PNG in.
+///
+/// Writing favours speed over size (frames are written by the hundred): the lowest zlib effort
+/// stb offers and one fixed row filter. Files are written under a temporary name and renamed
+/// (core/atomic_file.h), so a failed write never leaves a partial PNG.
+
+#include <string>
+
+#include "core/image.h"
+
+namespace prt {
+
+/// The PNG encoding of an 8-bit RGB image, in memory (for encoding on another thread).
+/// Throws Error if the image is empty or its buffer is not 3 * width * height bytes.
+std::string EncodePng(const Image8& image);
+
+/// Writes `image` to `path` atomically. Throws Error naming `path` on failure.
+void WritePng(const std::string& path, const Image8& image);
+
+/// Decodes PNG bytes; `name` (usually the path) prefixes error messages. Grey, grey + alpha,
+/// palette and RGBA images become RGB (alpha is dropped, not composited); 16-bit channels are
+/// rounded to 8 bits. Throws Error for data that is not a PNG or is truncated or corrupt.
+Image8 DecodePng(const std::string& bytes, const std::string& name);
+
+/// Reads a PNG file as 8-bit RGB (see DecodePng). Throws Error naming `path` when it is missing,
+/// unreadable, not a PNG, truncated or corrupt.
+Image8 ReadPng(const std::string& path);
+
+}  // namespace prt

@@ -1,0 +1,232 @@
+#include "raster/rasterizer.h"
+
+#include <algorithm>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+
+#include "core/error.h"
+#include "core/parallel.h"
+#include "raster/clip.h"
+#include "raster/triangle_setup.h"
+
+namespace prt {
+namespace {
+
+constexpr int kBandRows = 8;                // output rows per parallel band
+constexpr std::size_t kVertexGrain = 16384;  // vertices per transform chunk
+constexpr std::size_t kTriangleGrain = 4096; // triangles per setup chunk
+
+// Size of the sample grid (the output size times K).
+struct Target {
+  int width, height;
+};
+
+void Validate(const Camera& camera, int width, int height, const std::vector<glm::vec3>& positions,
+              const std::vector<std::array<std::uint32_t, 3>>& triangles,
+              const std::vector<glm::vec3>& colors, const RasterOptions& options) {
+  CheckCamera(camera);
+  if (options.ssaa < 1 || options.ssaa > 8)
+    throw Error("--ssaa: " + std::to_string(options.ssaa) + " (expected 1 to 8)");
+  if (width < 1 || height < 1 || width > kMaxTargetSide / options.ssaa ||
+      height > kMaxTargetSide / options.ssaa)
+    throw Error("--size: " + std::to_string(width) + "x" + std::to_string(height) +
+                " (expected 1 to " + std::to_string(kMaxTargetSide) + " pixels a side, times --ssaa)");
+  if (colors.size() != positions.size())
+    throw Error("rasterizer: " + std::to_string(colors.size()) + " colours for " +
+                std::to_string(positions.size()) + " vertices (expected one per vertex)");
+  for (std::size_t i = 0; i < triangles.size(); ++i)
+    for (std::uint32_t index : triangles[i])
+      if (index >= positions.size())
+        throw Error("rasterizer: triangle " + std::to_string(i) + " uses vertex " +
+                    std::to_string(index) + " (expected < " + std::to_string(positions.size()) + ")");
+}
+
+ScreenVertex Project(const ClipVertex& c, Target target) {
+  ScreenVertex s;
+  s.inv_w = 1.f / c.position.w;
+  s.x = (c.position.x * s.inv_w + 1.f) * 0.5f * static_cast<float>(target.width);
+  s.y = (1.f - c.position.y * s.inv_w) * 0.5f * static_cast<float>(target.height);
+  s.color = c.color;
+  return s;
+}
+
+// Clips, projects and sets up one input triangle; appends 0 or more raster triangles.
+void SetupOne(const ClipVertex (&v)[3], const unsigned (&outcode)[3], const ClipPlanes& planes,
+              Target target, bool cull, std::vector<RasterTriangle>& out) {
+  if (outcode[0] & outcode[1] & outcode[2]) return;  // entirely outside one plane
+  const auto emit = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+    if (auto t = SetupTriangle(a, b, c, target.width, target.height, cull)) out.push_back(*t);
+  };
+  if ((outcode[0] | outcode[1] | outcode[2]) == 0) {
+    emit(Project(v[0], target), Project(v[1], target), Project(v[2], target));
+    return;
+  }
+  // Crosses a plane: clip to a convex polygon and draw it as a fan.
+  const ClipPolygon poly =
+      ClipTriangle(v[0], v[1], v[2], outcode[0] | outcode[1] | outcode[2], planes);
+  ScreenVertex s[kMaxClipVertices];
+  for (int i = 0; i < poly.count; ++i) s[i] = Project(poly.vertex[i], target);
+  for (int i = 1; i + 1 < poly.count; ++i) emit(s[0], s[i], s[i + 1]);
+}
+
+// Fills the rows [row_begin, row_end) of one triangle; depth and colour hold the band, whose
+// first sample row is band_y0. Depth is 1/w: larger is nearer, 0 means empty.
+void FillRows(const RasterTriangle& t, int row_begin, int row_end, int band_y0, int width,
+              float* depth, glm::vec3* color) {
+  const int y_end = std::min(t.y_max + 1, row_end);
+  for (int y = std::max(t.y_min, row_begin); y < y_end; ++y) {
+    const Span span = RowSpan(t, y);
+    if (span.begin >= span.end) continue;
+    // Plane values at the first pixel centre of the span, then steps along x.
+    const float dx = static_cast<float>(span.begin) + 0.5f - t.ref_x;
+    const float dy = static_cast<float>(y) + 0.5f - t.ref_y;
+    const float w0 = t.inv_w.at_ref + t.inv_w.ddx * dx + t.inv_w.ddy * dy;
+    const float r0 = t.r_w.at_ref + t.r_w.ddx * dx + t.r_w.ddy * dy;
+    const float g0 = t.g_w.at_ref + t.g_w.ddx * dx + t.g_w.ddy * dy;
+    const float b0 = t.b_w.at_ref + t.b_w.ddx * dx + t.b_w.ddy * dy;
+    const std::size_t row = static_cast<std::size_t>(y - band_y0) * width;
+    for (int x = span.begin; x < span.end; ++x) {
+      const float i = static_cast<float>(x - span.begin);
+      const float inv_w = w0 + t.inv_w.ddx * i;
+      if (!(inv_w > depth[row + x])) continue;  // depth test: nearer wins, first drawn keeps ties
+      depth[row + x] = inv_w;
+      const float scale = 1.f / inv_w;
+      color[row + x] = glm::vec3((r0 + t.r_w.ddx * i) * scale, (g0 + t.g_w.ddx * i) * scale,
+                                 (b0 + t.b_w.ddx * i) * scale);
+    }
+  }
+}
+
+// Band-local sample buffers, reused by each worker thread across bands and frames.
+struct BandBuffers {
+  std::vector<float> depth;
+  std::vector<glm::vec3> color;
+};
+
+// Writes output rows [row_begin, row_end) of `frame`: the average of the covered samples of each
+// pixel, the background behind the uncovered ones, and the covered fraction.
+void Resolve(const BandBuffers& band, int row_begin, int row_end, int band_y0, int k,
+             const Background& background, const ViewRays& rays, RasterImage& frame) {
+  const int width = frame.image.width, height = frame.image.height;
+  const std::size_t stride = static_cast<std::size_t>(width) * k;  // samples per row
+  const float inv_samples = 1.f / static_cast<float>(k * k);
+  for (int oy = row_begin; oy < row_end; ++oy) {
+    glm::vec3* out = &frame.image.at(0, oy);
+    float* coverage = &frame.coverage[static_cast<std::size_t>(oy) * width];
+    const float ndc_y = 1.f - (static_cast<float>(oy) + 0.5f) / static_cast<float>(height) * 2.f;
+    for (int ox = 0; ox < width; ++ox) {
+      glm::vec3 sum(0.f);
+      int covered = 0;
+      for (int sy = oy * k - band_y0; sy < (oy + 1) * k - band_y0; ++sy)
+        for (std::size_t s = sy * stride + ox * k; s < sy * stride + (ox + 1) * k; ++s)
+          if (band.depth[s] > 0.f) sum += band.color[s], ++covered;
+      coverage[ox] = static_cast<float>(covered) * inv_samples;
+      out[ox] = sum * inv_samples;
+      if (covered == k * k) continue;
+      glm::vec3 back = background.color;
+      if (background.radiance) {
+        const float ndc_x = (static_cast<float>(ox) + 0.5f) / static_cast<float>(width) * 2.f - 1.f;
+        back = background.radiance(rays.Direction(ndc_x, ndc_y));
+      }
+      out[ox] += (1.f - coverage[ox]) * back;
+    }
+  }
+}
+
+}  // namespace
+
+void Rasterizer::SetUp(const Camera& camera, float aspect, int target_width, int target_height,
+                       const std::vector<glm::vec3>& positions,
+                       const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                       const std::vector<glm::vec3>& colors, bool cull_back_faces) {
+  const Target target{target_width, target_height};
+  // Vertices to clip space, with their outcodes.
+  const glm::mat4 view_projection = ProjectionMatrix(camera, aspect) * ViewMatrix(camera);
+  const ClipPlanes planes = GuardBandPlanes(camera.near_plane, target.width, target.height);
+  clip_.resize(positions.size());
+  outcodes_.resize(positions.size());
+  ParallelFor(positions.size(), kVertexGrain, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      clip_[i] = view_projection * glm::vec4(positions[i], 1.f);
+      outcodes_[i] = Outcode(clip_[i], planes);
+    }
+  });
+  // Triangle setup in fixed chunks; chunk c's output keeps the input order.
+  chunks_.resize(ChunkCount(triangles.size(), kTriangleGrain));
+  ParallelFor(triangles.size(), kTriangleGrain, [&](std::size_t begin, std::size_t end) {
+    std::vector<RasterTriangle>& out = chunks_[begin / kTriangleGrain];
+    out.clear();
+    for (std::size_t i = begin; i < end; ++i) {
+      const auto& tri = triangles[i];
+      const ClipVertex v[3] = {{clip_[tri[0]], colors[tri[0]]}, {clip_[tri[1]], colors[tri[1]]},
+                               {clip_[tri[2]], colors[tri[2]]}};
+      const unsigned codes[3] = {outcodes_[tri[0]], outcodes_[tri[1]], outcodes_[tri[2]]};
+      SetupOne(v, codes, planes, target, cull_back_faces, out);
+    }
+  });
+}
+
+void Rasterizer::Bin(int band_count, int band_samples) {
+  // Counting sort by band; a triangle spanning several bands is listed in each.
+  band_start_.assign(band_count + 1, 0);
+  for (const auto& chunk : chunks_)
+    for (const RasterTriangle& t : chunk)
+      for (int b = t.y_min / band_samples; b <= t.y_max / band_samples; ++b) ++band_start_[b + 1];
+  for (int b = 0; b < band_count; ++b) band_start_[b + 1] += band_start_[b];
+  binned_.resize(band_start_[band_count]);
+  std::vector<std::size_t> fill(band_start_.begin(), band_start_.end() - 1);
+  for (const auto& chunk : chunks_)
+    for (const RasterTriangle& t : chunk)
+      for (int b = t.y_min / band_samples; b <= t.y_max / band_samples; ++b) binned_[fill[b]++] = &t;
+}
+
+const RasterImage& Rasterizer::Draw(const Camera& camera, int width, int height,
+                                    const std::vector<glm::vec3>& positions,
+                                    const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                                    const std::vector<glm::vec3>& colors,
+                                    const RasterOptions& options) {
+  Validate(camera, width, height, positions, triangles, colors, options);
+  const int k = options.ssaa;
+  const Target target{width * k, height * k};
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  SetUp(camera, aspect, target.width, target.height, positions, triangles, colors,
+        options.cull_back_faces);
+  const int band_samples = kBandRows * k;
+  const int band_count = (height + kBandRows - 1) / kBandRows;
+  Bin(band_count, band_samples);
+
+  // Fill and resolve each band.
+  frame_.image.width = width;
+  frame_.image.height = height;
+  frame_.image.pixels.resize(static_cast<std::size_t>(width) * height);
+  frame_.coverage.resize(static_cast<std::size_t>(width) * height);
+  const Background& background = options.background;
+  const ViewRays rays = MakeViewRays(camera, aspect);
+  ParallelFor(band_count, 1, [&](std::size_t band, std::size_t) {
+    thread_local BandBuffers buffers;
+    const std::size_t samples = static_cast<std::size_t>(band_samples) * target.width;
+    if (buffers.depth.size() < samples) buffers.depth.resize(samples);
+    if (buffers.color.size() < samples) buffers.color.resize(samples);
+    std::fill_n(buffers.depth.begin(), samples, 0.f);
+    const int y0 = static_cast<int>(band) * band_samples;
+    const int y1 = std::min(y0 + band_samples, target.height);
+    for (std::size_t i = band_start_[band]; i < band_start_[band + 1]; ++i)
+      FillRows(*binned_[i], y0, y1, y0, target.width, buffers.depth.data(), buffers.color.data());
+
+    Resolve(buffers, y0 / k, y1 / k, y0, k, background, rays, frame_);
+  });
+  return frame_;
+}
+
+RasterImage Rasterize(const Camera& camera, int width, int height,
+                      const std::vector<glm::vec3>& positions,
+                      const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                      const std::vector<glm::vec3>& colors, const RasterOptions& options) {
+  Rasterizer rasterizer;
+  rasterizer.Draw(camera, width, height, positions, triangles, colors, options);
+  return rasterizer.TakeFrame();
+}
+
+}  // namespace prt

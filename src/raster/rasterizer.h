@@ -1,0 +1,93 @@
+#pragma once
+/// \file
+/// The rasterizer: draws triangles with per-vertex linear RGB colours into a linear image,
+/// with a depth buffer, near-plane clipping and optional supersampling.
+///
+/// The pipeline, one step per function in rasterizer.cpp:
+///   1. vertices -> clip space (camera.h);
+///   2. per triangle: clip against the near plane and a guard band (clip.h), project, snap and
+///      set up edge functions and colour planes (triangle_setup.h);
+///   3. sort the set-up triangles into bands of scanlines, keeping the drawing order;
+///   4. per band, in parallel: fill each triangle's spans with a depth test (nearer wins; on an
+///      exact tie the triangle drawn first stays), then resolve the K x K samples of every pixel
+///      and put the background behind the uncovered ones.
+/// Every band sees its triangles in input order, so the image does not depend on the number of
+/// threads.
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/image.h"
+#include "raster/camera.h"
+#include "raster/triangle_setup.h"
+
+namespace prt {
+
+/// What shows where no triangle is: `radiance` if set, else the solid `color` (linear RGB).
+struct Background {
+  glm::vec3 color{0.f};
+  /// Linear radiance seen along a unit world-space view direction (e.g. the environment,
+  /// rotated by the caller). Called from several threads at once: must be thread-safe.
+  std::function<glm::vec3(const glm::vec3& direction)> radiance;
+};
+
+/// How to draw.
+struct RasterOptions {
+  int ssaa = 1;                  ///< K: render K*W x K*H samples, box-filter to W x H; 1..8
+  bool cull_back_faces = false;  ///< drop triangles clockwise on screen (counter-clockwise = front)
+  Background background;
+};
+
+/// Largest render target side in samples (width * ssaa and height * ssaa).
+constexpr int kMaxTargetSide = 16384;
+
+/// The drawn frame: linear radiance (background already filled in) and, per pixel, the covered
+/// fraction of its K x K samples (0 = background only, 1 = fully covered).
+struct RasterImage {
+  ImageF image;
+  std::vector<float> coverage;  ///< width * height, row-major like image
+};
+
+/// Draws frame after frame, keeping its buffers between frames: after the first frame of a
+/// given size, drawing allocates nothing (fresh memory costs a page fault per 4 KiB).
+class Rasterizer {
+ public:
+  /// Draws `triangles` (vertex indices into `positions`, world space) with per-vertex `colors`
+  /// (linear RGB, same length as positions) as seen by `camera` into a width x height image.
+  /// The result stays valid until the next Draw or TakeFrame. Throws Error for an unusable
+  /// camera, a bad size or ssaa, mismatched array lengths, or a vertex index out of range.
+  const RasterImage& Draw(const Camera& camera, int width, int height,
+                          const std::vector<glm::vec3>& positions,
+                          const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                          const std::vector<glm::vec3>& colors, const RasterOptions& options = {});
+
+  /// Moves the last frame out (the next Draw allocates a new one).
+  RasterImage TakeFrame() { return std::move(frame_); }
+
+ private:
+  void SetUp(const Camera& camera, float aspect, int target_width, int target_height,
+             const std::vector<glm::vec3>& positions,
+             const std::vector<std::array<std::uint32_t, 3>>& triangles,
+             const std::vector<glm::vec3>& colors, bool cull_back_faces);
+  void Bin(int band_count, int band_samples);
+
+  RasterImage frame_;
+  std::vector<glm::vec4> clip_;                      // per vertex, clip space
+  std::vector<unsigned> outcodes_;                   // per vertex, clip.h Outcode
+  std::vector<std::vector<RasterTriangle>> chunks_;  // set-up triangles per input chunk
+  std::vector<std::size_t> band_start_;              // band b: binned_[band_start_[b] ...]
+  std::vector<const RasterTriangle*> binned_;        // triangles per band, in input order
+};
+
+/// One frame with a temporary Rasterizer (see Rasterizer::Draw).
+RasterImage Rasterize(const Camera& camera, int width, int height,
+                      const std::vector<glm::vec3>& positions,
+                      const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                      const std::vector<glm::vec3>& colors, const RasterOptions& options = {});
+
+}  // namespace prt

@@ -1,0 +1,80 @@
+#pragma once
+/// \file
+/// One screen-space triangle made ready for scanline filling: vertices snapped to a fixed-point
+/// grid, three integer edge functions with the top-left fill rule, and the planes that give
+/// perspective-correct colour.
+///
+/// Coverage is decided exactly in integers [1, 2]: pixel (x, y) is covered when all three edge
+/// functions at its centre (x + 1/2, y + 1/2) are positive, or zero on a top or left edge. Two
+/// triangles sharing an edge therefore cover each pixel along it exactly once. RowSpan turns the
+/// three edge tests into one [begin, end) interval per scanline.
+///
+/// Colour is interpolated perspective-correctly [3]: 1/w and colour/w are affine functions of
+/// the screen position, so they are stored as planes and colour = (colour/w) / (1/w) per pixel.
+///
+/// References:
+///  [1] J. Pineda, "A Parallel Algorithm for Polygon Rasterization", SIGGRAPH 1988.
+///  [2] Microsoft, "Direct3D 11.3 Functional Specification", section 15.6 (rasterization rules:
+///      8 bits of sub-pixel precision, the top-left rule).
+///  [3] P. Heckbert and H. Moreton, "Interpolation for Polygon Texture Mapping and Shading",
+///      in State of the Art in Computer Graphics, Springer 1991.
+
+#include <cstdint>
+#include <optional>
+
+#include <glm/vec3.hpp>
+
+namespace prt {
+
+/// Sub-pixel precision: coordinates are snapped to 1/256 pixel.
+constexpr int kSubpixelBits = 8;
+constexpr int kSubpixelScale = 1 << kSubpixelBits;
+/// Largest |screen coordinate| in pixels SetupTriangle accepts. Keeps every edge-function
+/// product below 2^49, well inside int64. The clipper keeps vertices within half of it.
+constexpr float kMaxScreenCoord = 32768.f;
+
+/// A projected vertex. Screen space: pixels, x right, y down, pixel (i, j) has its centre at
+/// (i + 0.5, j + 0.5).
+struct ScreenVertex {
+  float x = 0.f, y = 0.f;
+  float inv_w = 1.f;       ///< 1 / clip w, > 0 (1 for a flat screen-space triangle)
+  glm::vec3 color{0.f};   ///< linear RGB
+};
+
+/// E(X, Y) = a X + b Y + c on fixed-point coordinates; a pixel centre is inside when E >= 0.
+/// The top-left rule is folded into c (non top-left edges get c - 1, so E = 0 is outside).
+struct EdgeFunction {
+  std::int32_t a = 0, b = 0;
+  std::int64_t c = 0;
+};
+
+/// value(x, y) = at_ref + ddx (x - ref_x) + ddy (y - ref_y), with x, y in pixels.
+struct Plane {
+  float at_ref = 0.f, ddx = 0.f, ddy = 0.f;
+};
+
+/// A triangle ready to fill. Bounds are the inclusive pixel range that may be covered, already
+/// clipped to the render target.
+struct RasterTriangle {
+  EdgeFunction edge[3];
+  int x_min = 0, x_max = -1, y_min = 0, y_max = -1;
+  float ref_x = 0.f, ref_y = 0.f;  ///< where the planes are anchored (the first vertex)
+  Plane inv_w, r_w, g_w, b_w;      ///< 1/w and colour/w
+};
+
+/// Snaps and sets up a triangle for a width x height target. Returns nothing when the triangle
+/// covers no pixel centre of the target, has zero area, is back-facing and cull_back_faces is
+/// set (front faces are counter-clockwise on screen, the OpenGL default), or has a coordinate
+/// beyond kMaxScreenCoord or a non-positive inv_w.
+std::optional<RasterTriangle> SetupTriangle(const ScreenVertex& v0, const ScreenVertex& v1,
+                                            const ScreenVertex& v2, int width, int height,
+                                            bool cull_back_faces);
+
+/// Pixels [begin, end) of scanline y covered by the triangle (empty when begin >= end).
+/// Precondition: y in [t.y_min, t.y_max].
+struct Span {
+  int begin = 0, end = 0;
+};
+Span RowSpan(const RasterTriangle& t, int y);
+
+}  // namespace prt

@@ -1,0 +1,72 @@
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "raster/tonemap.h"
+
+namespace {
+
+// The sRGB encoding straight from its definition, in double.
+double SrgbTimes255(double v) {
+  v = std::min(std::max(v, 0.0), 1.0);
+  return 255.0 * (v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055);
+}
+
+}  // namespace
+
+TEST_SUITE("raster") {
+  TEST_CASE("EncodeSrgb8 rounds the sRGB curve exactly") {
+    // Values within this distance (in 8-bit steps) of a rounding threshold may go either way:
+    // the table thresholds are floats, the reference is double.
+    constexpr double kThresholdSlack = 1e-4;
+    int checked = 0;
+    for (int i = 0; i <= 200000; ++i) {
+      const float v = static_cast<float>(i) / 200000.f * 1.1f - 0.05f;
+      const double exact = SrgbTimes255(v);
+      if (std::fabs(exact - std::floor(exact) - 0.5) < kThresholdSlack) continue;
+      CHECK(int(prt::EncodeSrgb8(v)) == int(std::lround(exact)));
+      ++checked;
+    }
+    CHECK(checked > 190000);
+    CHECK(prt::EncodeSrgb8(std::numeric_limits<float>::quiet_NaN()) == 0);
+    CHECK(prt::EncodeSrgb8(std::numeric_limits<float>::infinity()) == 255);
+  }
+
+  TEST_CASE("Negative radiance and NaN are clamped to zero and counted") {
+    prt::ImageF image(3, 2);
+    image.at(0, 0) = glm::vec3(-0.5f, 0.2f, 0.2f);                        // negative
+    image.at(1, 0) = glm::vec3(-1e-6f, -2.f, -3.f);                       // negative, one pixel
+    image.at(2, 0) = glm::vec3(std::numeric_limits<float>::quiet_NaN(), 1.f, 1.f);  // NaN
+    image.at(0, 1) = glm::vec3(0.5f);
+    image.at(1, 1) = glm::vec3(-std::numeric_limits<float>::infinity(), 0.f, 0.f);
+    image.at(2, 1) = glm::vec3(std::numeric_limits<float>::infinity());
+    const prt::ToneMapped out = prt::ToneMap(image);
+    CHECK(out.negative_pixels == 3);
+    CHECK(out.nan_pixels == 1);
+    CHECK(out.image.rgb[0] == 0);                   // -0.5 -> 0, not wrapped to 255 or so
+    CHECK(out.image.rgb[3 * 2 + 0] == 0);           // NaN -> 0
+    CHECK(out.image.rgb[3 * 2 + 1] == 255);
+    CHECK(out.image.rgb[3 * 3 + 0] == 188);         // sRGB(0.5) = 0.7354 -> 187.5 -> 188
+    for (int c = 0; c < 3; ++c) CHECK(out.image.rgb[3 * 5 + c] == 255);
+  }
+
+  TEST_CASE("Exposure and the tone curves") {
+    prt::ImageF image(1, 1);
+    image.at(0, 0) = glm::vec3(0.25f, 1.f, 100.f);
+    prt::ToneMapOptions options;
+    options.exposure_ev = 1.f;  // 0.25 -> 0.5
+    CHECK(prt::ToneMap(image, options).image.rgb[0] == 188);
+    options.exposure_ev = 0.f;
+    options.curve = prt::ToneCurve::kReinhard;  // 1 -> 1/2
+    CHECK(prt::ToneMap(image, options).image.rgb[1] == 188);
+    CHECK(prt::ApplyToneCurve(prt::ToneCurve::kReinhard, 100.f) == doctest::Approx(100.f / 101.f));
+    // Narkowicz's fit: 0 -> 0, 1 -> about 0.8, large -> 2.51 / 2.43 (clamped to white).
+    CHECK(prt::ApplyToneCurve(prt::ToneCurve::kAces, 0.f) == 0.f);
+    CHECK(prt::ApplyToneCurve(prt::ToneCurve::kAces, 1.f) == doctest::Approx(2.54 / 3.16));
+    CHECK(prt::ApplyToneCurve(prt::ToneCurve::kAces, 1e30f) == doctest::Approx(2.51 / 2.43));
+    CHECK(prt::ParseToneCurve("aces") == prt::ToneCurve::kAces);
+    CHECK_FALSE(prt::ParseToneCurve("filmic").has_value());
+    CHECK(std::string(prt::ToneCurveName(prt::ToneCurve::kReinhard)) == "reinhard");
+  }
+}
