@@ -68,14 +68,37 @@ float ApplyToneCurve(ToneCurve curve, float x) {
   }
 }
 
-std::uint8_t EncodeSrgb8(float v) {
+namespace {
+
+std::uint8_t Encode(const SrgbTable& t, float v) {
   if (!(v > 0.f)) return 0;  // also NaN
   if (v >= 1.f) return 255;
-  const SrgbTable& t = Table();
   int k = t.start[static_cast<int>(v * kCells)];
   while (v >= t.threshold[k + 1]) ++k;
   return static_cast<std::uint8_t>(k);
 }
+
+// One row, with the curve fixed at compile time. Returns pixels with a negative / NaN channel.
+template <ToneCurve kCurve>
+void MapRow(const glm::vec3* in, int width, float scale, std::uint8_t* out,
+            std::size_t& negative, std::size_t& nan) {
+  const SrgbTable& table = Table();
+  for (int x = 0; x < width; ++x) {
+    bool has_negative = false, has_nan = false;
+    for (int i = 0; i < 3; ++i) {
+      float v = in[x][i] * scale;
+      if (v != v) has_nan = true, v = 0.f;  // NaN
+      if (v < 0.f) has_negative = true, v = 0.f;
+      out[3 * x + i] = Encode(table, ApplyToneCurve(kCurve, v));
+    }
+    negative += has_negative;
+    nan += has_nan;
+  }
+}
+
+}  // namespace
+
+std::uint8_t EncodeSrgb8(float v) { return Encode(Table(), v); }
 
 ToneMapped ToneMap(const ImageF& image, const ToneMapOptions& options) {
   ToneMapped out;
@@ -86,18 +109,12 @@ ToneMapped ToneMap(const ImageF& image, const ToneMapOptions& options) {
   std::vector<std::size_t> negative(rows, 0), nan(rows, 0);
   ParallelFor(rows, 16, [&](std::size_t begin, std::size_t end) {
     for (std::size_t y = begin; y < end; ++y) {
-      for (int x = 0; x < image.width; ++x) {
-        const glm::vec3 c = image.at(x, static_cast<int>(y)) * scale;
-        bool has_negative = false, has_nan = false;
-        std::uint8_t* dst = &out.image.rgb[3 * (y * image.width + x)];
-        for (int i = 0; i < 3; ++i) {
-          float v = c[i];
-          if (std::isnan(v)) has_nan = true, v = 0.f;
-          if (v < 0.f) has_negative = true, v = 0.f;
-          dst[i] = EncodeSrgb8(ApplyToneCurve(options.curve, v));
-        }
-        negative[y] += has_negative;
-        nan[y] += has_nan;
+      const glm::vec3* in = &image.pixels[y * image.width];
+      std::uint8_t* dst = &out.image.rgb[3 * y * image.width];
+      switch (options.curve) {
+        case ToneCurve::kSrgb: MapRow<ToneCurve::kSrgb>(in, image.width, scale, dst, negative[y], nan[y]); break;
+        case ToneCurve::kReinhard: MapRow<ToneCurve::kReinhard>(in, image.width, scale, dst, negative[y], nan[y]); break;
+        case ToneCurve::kAces: MapRow<ToneCurve::kAces>(in, image.width, scale, dst, negative[y], nan[y]); break;
       }
     }
   });
