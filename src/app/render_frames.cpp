@@ -1,0 +1,117 @@
+#include "app/render_frames.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <future>
+#include <regex>
+
+#include <glm/matrix.hpp>
+
+#include "core/error.h"
+#include "core/progress.h"
+#include "geometry/mesh_ops.h"
+#include "io/png_io.h"
+#include "precompute/shade.h"
+#include "raster/rasterizer.h"
+#include "raster/tonemap.h"
+#include "sh/axis_rotation.h"
+
+namespace prt {
+namespace fs = std::filesystem;
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+double Since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// Frame files in `dir` numbered `first` or higher (left from an earlier, longer run).
+std::size_t CountStaleFrames(const std::string& dir, int first) {
+  static const std::regex pattern("frame_([0-9]+)\\.png");
+  std::size_t n = 0;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    std::smatch m;
+    const std::string name = entry.path().filename().string();
+    if (std::regex_match(name, m, pattern) && std::stoll(m[1].str()) >= first) ++n;
+  }
+  return n;
+}
+
+}  // namespace
+
+std::string FrameName(int i) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "frame_%04d.png", i);
+  return buf;
+}
+
+Camera ChooseCamera(const Mesh& mesh, const RenderOptions& o) {
+  const Bounds3 b = MeshBounds(mesh);
+  Camera c = FrameBounds(b.lo, b.hi, float(o.width) / float(o.height));
+  if (o.eye) c.eye = glm::vec3(*o.eye);
+  if (o.target) c.target = glm::vec3(*o.target);
+  if (o.up) c.up = glm::vec3(*o.up);
+  if (o.fov) c.fov_deg = float(*o.fov);
+  c = FitClipPlanes(c, b.lo, b.hi);
+  CheckCamera(c);
+  return c;
+}
+
+FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light,
+                        const Environment& env, const Camera& camera, const RenderOptions& o) {
+  std::error_code ec;
+  fs::create_directories(o.out, ec);
+  if (!fs::is_directory(o.out)) throw Error(o.out + ": cannot create the output folder");
+
+  const ShRgb used(light.begin(), light.begin() + std::min(light.size(), std::size_t(CoeffCount(transport.lmax))));
+  const AxisRotation rotation(o.axis, transport.lmax);
+  const glm::dvec3 axis = glm::normalize(o.axis);
+  ToneMapOptions tone;
+  tone.curve = o.tonemap;
+  tone.exposure_ev = float(o.exposure);
+
+  FrameStats stats;
+  stats.frames = o.frames;
+  Rasterizer rasterizer;
+  std::future<void> writing;  // the previous frame's encode-and-write
+  Progress progress("rendering", static_cast<std::size_t>(o.frames));
+  for (int i = 0; i < o.frames; ++i) {
+    const double angle = 2.0 * kPi * o.turns * double(i) / double(o.frames);
+    // The light, and the environment behind the mesh, turned by R: L'(d) = L(R^T d).
+    const auto t0 = std::chrono::steady_clock::now();
+    const ShRgb lit = rotation.Rotate(used, angle);
+    const std::vector<glm::vec3> colors = ShadeVertices(mesh, transport, lit);
+    RasterOptions ro;
+    ro.ssaa = o.ssaa;
+    ro.background.color = o.background_color;
+    if (o.env_background) {
+      const glm::mat3 inverse(glm::transpose(AxisAngle(axis, angle)));
+      ro.background.radiance = [&env, inverse](const glm::vec3& d) {
+        return glm::vec3(env.Radiance(glm::dvec3(inverse * d)));
+      };
+    }
+    const RasterImage& frame = rasterizer.Draw(camera, o.width, o.height, mesh.positions, mesh.triangles, colors, ro);
+    ToneMapped mapped = ToneMap(frame.image, tone);
+    stats.draw_seconds += Since(t0);
+    stats.negative_pixels += mapped.negative_pixels;
+    stats.nan_pixels += mapped.nan_pixels;
+
+    const auto t1 = std::chrono::steady_clock::now();
+    if (writing.valid()) writing.get();  // rethrows a write error
+    stats.encode_seconds += Since(t1);
+    const std::string path = o.out + "/" + FrameName(i);
+    writing = std::async(std::launch::async, [path, image = std::move(mapped.image)] { WritePng(path, image); });
+    progress.Advance(1);
+  }
+  const auto t1 = std::chrono::steady_clock::now();
+  if (writing.valid()) writing.get();
+  stats.encode_seconds += Since(t1);
+  stats.stale_frames = CountStaleFrames(o.out, o.frames);
+  return stats;
+}
+
+}  // namespace prt

@@ -1,0 +1,21 @@
+#pragma once
+/// \file
+/// Shading with precomputed transfer: the outgoing radiance of vertex v is
+///     albedo(v) * sum_k L_k T_k(v)     per colour channel,
+/// a dot product of (lmax+1)^2 numbers: this is why PRT relights in real time. Only the bands
+/// the transport has are used (a light of more bands is truncated, of fewer padded with 0).
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "geometry/mesh.h"
+#include "precompute/transport.h"
+#include "sh/coeffs.h"
+
+namespace prt {
+
+/// Linear RGB outgoing radiance of every vertex of `mesh` under `light`.
+std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transport, const ShRgb& light);
+
+}  // namespace prt
