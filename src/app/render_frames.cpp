@@ -61,18 +61,32 @@ Camera ChooseCamera(const Mesh& mesh, const RenderOptions& o) {
   return c;
 }
 
+ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
+                     const Environment& env, const Camera& camera, const RenderOptions& o, double angle) {
+  // The light, and the environment behind the mesh, turned by R: L'(d) = L(R^T d). Only the
+  // bands the transport has are turned.
+  const ShRgb used(light.begin(), light.begin() + std::min(light.size(), std::size_t(CoeffCount(transport.lmax))));
+  const ShRgb lit = AxisRotation(o.axis, transport.lmax).Rotate(used, angle);
+  const std::vector<glm::vec3> colors = ShadeVertices(mesh, transport, lit);
+  RasterOptions ro;
+  ro.ssaa = o.ssaa;
+  ro.background.color = o.background_color;
+  if (o.env_background) {
+    const glm::mat3 inverse(glm::transpose(AxisAngle(glm::normalize(o.axis), angle)));
+    ro.background.radiance = [&env, inverse](const glm::vec3& d) { return glm::vec3(env.Radiance(glm::dvec3(inverse * d))); };
+  }
+  const RasterImage& frame = rasterizer.Draw(camera, o.width, o.height, mesh.positions, mesh.triangles, colors, ro);
+  ToneMapOptions tone;
+  tone.curve = o.tonemap;
+  tone.exposure_ev = float(o.exposure);
+  return ToneMap(frame.image, tone);
+}
+
 FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light,
                         const Environment& env, const Camera& camera, const RenderOptions& o) {
   std::error_code ec;
   fs::create_directories(o.out, ec);
   if (!fs::is_directory(o.out)) throw Error(o.out + ": cannot create the output folder");
-
-  const ShRgb used(light.begin(), light.begin() + std::min(light.size(), std::size_t(CoeffCount(transport.lmax))));
-  const AxisRotation rotation(o.axis, transport.lmax);
-  const glm::dvec3 axis = glm::normalize(o.axis);
-  ToneMapOptions tone;
-  tone.curve = o.tonemap;
-  tone.exposure_ev = float(o.exposure);
 
   FrameStats stats;
   stats.frames = o.frames;
@@ -80,22 +94,10 @@ FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRg
   std::future<void> writing;  // the previous frame's encode-and-write
   Progress progress("rendering", static_cast<std::size_t>(o.frames));
   for (int i = 0; i < o.frames; ++i) {
+    // Each frame from its absolute angle: no accumulated drift.
     const double angle = 2.0 * kPi * o.turns * double(i) / double(o.frames);
-    // The light, and the environment behind the mesh, turned by R: L'(d) = L(R^T d).
     const auto t0 = std::chrono::steady_clock::now();
-    const ShRgb lit = rotation.Rotate(used, angle);
-    const std::vector<glm::vec3> colors = ShadeVertices(mesh, transport, lit);
-    RasterOptions ro;
-    ro.ssaa = o.ssaa;
-    ro.background.color = o.background_color;
-    if (o.env_background) {
-      const glm::mat3 inverse(glm::transpose(AxisAngle(axis, angle)));
-      ro.background.radiance = [&env, inverse](const glm::vec3& d) {
-        return glm::vec3(env.Radiance(glm::dvec3(inverse * d)));
-      };
-    }
-    const RasterImage& frame = rasterizer.Draw(camera, o.width, o.height, mesh.positions, mesh.triangles, colors, ro);
-    ToneMapped mapped = ToneMap(frame.image, tone);
+    ToneMapped mapped = DrawFrame(rasterizer, mesh, transport, light, env, camera, o, angle);
     stats.draw_seconds += Since(t0);
     stats.negative_pixels += mapped.negative_pixels;
     stats.nan_pixels += mapped.nan_pixels;

@@ -15,6 +15,8 @@
 #include "geometry/mesh.h"
 #include "precompute/transport.h"
 #include "raster/camera.h"
+#include "raster/rasterizer.h"
+#include "raster/tonemap.h"
 #include "sh/coeffs.h"
 
 namespace prt {
@@ -30,6 +32,11 @@ struct FrameStats {
 /// The camera of the options: automatic framing of the mesh bounds, overridden by what the
 /// options give, with clip planes fitted to the mesh.
 Camera ChooseCamera(const Mesh& mesh, const RenderOptions& options);
+
+/// Draws one frame with the light turned by `angle` radians about the options' axis: shading,
+/// rasterizing over the turned environment, tone mapping. `rasterizer` keeps its buffers.
+ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
+                     const Environment& env, const Camera& camera, const RenderOptions& options, double angle);
 
 /// Renders all frames into options.out (created if missing).
 FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light,
