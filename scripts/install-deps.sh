@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(g++ cmake make pkg-config
-          libglm-dev libstb-dev libtinyobjloader-dev libnanoflann-dev doctest-dev libopenexr-dev)
+          zlib1g-dev libglm-dev libstb-dev libtinyobjloader-dev libnanoflann-dev doctest-dev libopenexr-dev)
 [ -n "${PRT_EXTRA_PACKAGES:-}" ] && read -r -a extra <<<"$PRT_EXTRA_PACKAGES" && packages+=("${extra[@]}")
 
 missing=()

@@ -6,6 +6,7 @@ find_package(tinyobjloader CONFIG REQUIRED)       # libtinyobjloader-dev
 find_package(nanoflann CONFIG REQUIRED)           # libnanoflann-dev
 find_package(doctest CONFIG REQUIRED)             # doctest-dev
 find_package(OpenEXR CONFIG REQUIRED)             # libopenexr-dev
+find_package(ZLIB REQUIRED)                       # zlib1g-dev (PNG deflate)
 
 # stb ships no CMake config; Debian builds the implementations into libstb.
 find_path(PRT_STB_INCLUDE_DIR stb_image.h PATH_SUFFIXES stb REQUIRED)
@@ -21,7 +22,7 @@ target_compile_definitions(prt::glm INTERFACE GLM_FORCE_XYZW_ONLY GLM_ENABLE_EXP
 
 prt_system_target(prt::stb)
 target_include_directories(prt::stb SYSTEM INTERFACE ${PRT_STB_INCLUDE_DIR})
-target_link_libraries(prt::stb INTERFACE ${PRT_STB_LIBRARY})
+target_link_libraries(prt::stb INTERFACE ${PRT_STB_LIBRARY} ZLIB::ZLIB)
 
 prt_system_target(prt::tinyobjloader)
 target_link_libraries(prt::tinyobjloader INTERFACE tinyobjloader::tinyobjloader)

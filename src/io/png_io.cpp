@@ -4,30 +4,15 @@
 #include <memory>
 
 #include <stb_image.h>
-#include <stb_image_write.h>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "io/png_writer_zlib.h"
 
 namespace prt {
 namespace {
 
 constexpr unsigned char kPngSignature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
-
-// stb keeps its PNG settings in process-wide globals: set them once, before the first encode.
-void ConfigureStbOnce() {
-  static const bool configured = [] {
-    stbi_write_png_compression_level = 1;  // stb raises anything below 5 to 5, its fastest
-    stbi_write_force_png_filter = 1;       // "sub" on every row: no per-row filter search
-    return true;
-  }();
-  (void)configured;
-}
-
-void AppendBytes(void* context, void* data, int size) {
-  static_cast<std::string*>(context)->append(static_cast<const char*>(data),
-                                             static_cast<std::size_t>(size));
-}
 
 }  // namespace
 
@@ -37,10 +22,8 @@ std::string EncodePng(const Image8& image) {
     throw Error("PNG encoder: image " + std::to_string(image.width) + "x" +
                 std::to_string(image.height) + " with " + std::to_string(image.rgb.size()) +
                 " bytes (expected a non-empty image of 3 * width * height bytes)");
-  ConfigureStbOnce();
   std::string bytes;
-  if (!stbi_write_png_to_func(AppendBytes, &bytes, image.width, image.height, 3,
-                              image.rgb.data(), 3 * image.width))
+  if (!EncodePngZlib(image.rgb.data(), image.width, image.height, bytes))
     throw Error("PNG encoder: stb_image_write failed (expected enough memory)");
   return bytes;
 }
