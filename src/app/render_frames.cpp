@@ -14,7 +14,10 @@
 #include "geometry/mesh_ops.h"
 #include "io/png_io.h"
 #include "precompute/shade.h"
+#include "io/image_load.h"
+#include "raster/annotate.h"
 #include "raster/rasterizer.h"
+#include "sh/basis.h"
 #include "raster/tonemap.h"
 #include "sh/axis_rotation.h"
 
@@ -61,17 +64,62 @@ Camera ChooseCamera(const Mesh& mesh, const RenderOptions& o) {
   return c;
 }
 
+namespace {
+
+/// Radiance of the SH reconstruction sum_k L_k Y_k(d).
+glm::vec3 Reconstruct(const ShRgb& light, const glm::dvec3& d) {
+  const int lmax = LmaxOfCount(light.size());
+  double y[CoeffCount(kMaxLmax)];
+  EvalBasis(lmax, d, y);
+  glm::dvec3 sum(0.0);
+  for (std::size_t k = 0; k < light.size(); ++k) sum += y[k] * light[k];
+  return glm::vec3(sum);
+}
+
+/// Per-vertex colours of the chosen view; `scale` receives max |T_K| for the transport view.
+std::vector<glm::vec3> ViewColors(const Mesh& mesh, const Transport& transport, const ShRgb& lit,
+                                  const RenderOptions& o, double& scale) {
+  if (o.view == "irradiance") return ShadeVertices(mesh, transport, lit, false);
+  if (o.view == "albedo") return mesh.albedo;
+  std::vector<glm::vec3> colors(mesh.vertex_count());
+  if (o.view == "light") {
+    for (std::size_t v = 0; v < colors.size(); ++v) colors[v] = Reconstruct(lit, glm::dvec3(mesh.normals[v]));
+    return colors;
+  }
+  if (o.view == "transport") {
+    scale = 0.0;
+    for (std::size_t v = 0; v < colors.size(); ++v) scale = std::max(scale, double(std::abs(transport.at(v, 0)[o.transport_index])));
+    const double s = scale > 0 ? scale : 1.0;
+    for (std::size_t v = 0; v < colors.size(); ++v) {
+      // Palette colours are display values: decode them so the sRGB tone curve restores them.
+      const glm::vec3 c = DivergingColor(transport.at(v, 0)[o.transport_index] / s);
+      colors[v] = glm::vec3(SrgbToLinear(c.x), SrgbToLinear(c.y), SrgbToLinear(c.z));
+    }
+    return colors;
+  }
+  return ShadeVertices(mesh, transport, lit);
+}
+
+}  // namespace
+
 ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
                      const Environment& env, const Camera& camera, const RenderOptions& o, double angle) {
+  if (o.view == "transport" && o.transport_index >= CoeffCount(transport.lmax))
+    throw UsageError("--view: transport:" + std::to_string(o.transport_index) + " is out of range (expected 0 to " +
+                         std::to_string(CoeffCount(transport.lmax) - 1) + " for lmax " + std::to_string(transport.lmax) + ")",
+                     "render");
   // The light, and the environment behind the mesh, turned by R: L'(d) = L(R^T d). Only the
   // bands the transport has are turned.
   const ShRgb used(light.begin(), light.begin() + std::min(light.size(), std::size_t(CoeffCount(transport.lmax))));
   const ShRgb lit = AxisRotation(o.axis, transport.lmax).Rotate(used, angle);
-  const std::vector<glm::vec3> colors = ShadeVertices(mesh, transport, lit);
+  double scale = 0.0;
+  const std::vector<glm::vec3> colors = ViewColors(mesh, transport, lit, o, scale);
   RasterOptions ro;
   ro.ssaa = o.ssaa;
   ro.background.color = o.background_color;
-  if (o.env_background) {
+  if (o.view == "light") {
+    ro.background.radiance = [&lit](const glm::vec3& d) { return Reconstruct(lit, glm::dvec3(d)); };
+  } else if (o.env_background) {
     const glm::mat3 inverse(glm::transpose(AxisAngle(glm::normalize(o.axis), angle)));
     ro.background.radiance = [&env, inverse](const glm::vec3& d) { return glm::vec3(env.Radiance(glm::dvec3(inverse * d))); };
   }
@@ -79,7 +127,10 @@ ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& 
   ToneMapOptions tone;
   tone.curve = o.tonemap;
   tone.exposure_ev = float(o.exposure);
-  return ToneMap(frame.image, tone);
+  if (o.view == "transport") tone = ToneMapOptions{};  // false colours pass through unchanged
+  ToneMapped mapped = ToneMap(frame.image, tone);
+  if (o.view == "transport") DrawDivergingLegend(mapped.image, scale, "T" + std::to_string(o.transport_index));
+  return mapped;
 }
 
 FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light,

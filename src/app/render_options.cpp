@@ -5,6 +5,9 @@
 
 #include "core/error.h"
 #include "raster/rasterizer.h"
+#include "sh/coeffs.h"
+
+#include <cstdlib>
 
 namespace prt {
 
@@ -20,6 +23,10 @@ const char* const kRenderOptionsHelp =
     "  --tonemap T         srgb | reinhard | aces (default srgb)\n"
     "  --exposure EV       radiance is scaled by 2^EV before tone mapping, -20..20 (default 0)\n"
     "  --ssaa K            K x K supersampling, 1..8 (default 1)\n"
+    "  --view V            radiance | irradiance | albedo | transport:K | light (default radiance):\n"
+    "                      the final colour, the lighting alone (albedo 1), the albedo, the K-th\n"
+    "                      transport coefficient in false colour with a legend, or the light as\n"
+    "                      the SH coefficients reconstruct it (on the mesh: in the normal's direction)\n"
     "  --eye X,Y,Z --target X,Y,Z --up X,Y,Z --fov DEGREES\n"
     "                      the camera; what is not given comes from automatic framing of the mesh,\n"
     "                      and the run summary prints the camera used in this same syntax\n";
@@ -63,6 +70,20 @@ RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
   if (static_cast<long long>(o.width) * o.ssaa > kMaxTargetSide || static_cast<long long>(o.height) * o.ssaa > kMaxTargetSide)
     throw UsageError("--ssaa: " + std::to_string(o.ssaa) + " times the frame size exceeds " +
                      std::to_string(kMaxTargetSide) + " samples per side", args.command());
+  const std::string view = args.String("--view", d.view);
+  if (view.rfind("transport:", 0) == 0) {
+    const std::string k = view.substr(10);
+    char* end = nullptr;
+    const long index = std::strtol(k.c_str(), &end, 10);
+    if (k.empty() || *end != '\0' || index < 0 || index >= CoeffCount(kMaxLmax))
+      throw UsageError("--view: '" + view + "' (expected transport:K with K a coefficient index from 0)", args.command());
+    o.view = "transport", o.transport_index = static_cast<int>(index);
+  } else if (view == "radiance" || view == "irradiance" || view == "albedo" || view == "light") {
+    o.view = view;
+  } else {
+    throw UsageError("--view: unknown value '" + view + "' (expected radiance, irradiance, albedo, transport:K or light)",
+                     args.command());
+  }
   if (auto v = args.Vec3("--eye")) o.eye = v;
   if (auto v = args.Vec3("--target")) o.target = v;
   if (auto v = args.Vec3("--up")) o.up = v;

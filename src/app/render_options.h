@@ -26,6 +26,10 @@ struct RenderOptions {
   int ssaa = 1;
   std::optional<glm::dvec3> eye, target, up;
   std::optional<double> fov;
+  /// What to draw: radiance (the final colour), irradiance (albedo 1), albedo, transport (the
+  /// coefficient transport_index in false colour) or light (the SH-reconstructed light).
+  std::string view = "radiance";
+  int transport_index = 0;
 };
 
 /// Reads the render options from `args`, with `defaults` for what is not given.

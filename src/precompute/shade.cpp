@@ -6,7 +6,8 @@
 
 namespace prt {
 
-std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transport, const ShRgb& light) {
+std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transport, const ShRgb& light,
+                                     bool albedo) {
   const int count = std::min<int>(CoeffCount(transport.lmax), static_cast<int>(light.size()));
   std::vector<glm::vec3> colors(mesh.vertex_count());
   ParallelFor(colors.size(), 1024, [&](std::size_t begin, std::size_t end) {
@@ -18,7 +19,7 @@ std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transpor
         for (int k = 0; k < count; ++k) s += light[k][c] * t[k];
         sum[c] = s;
       }
-      colors[v] = glm::vec3(glm::dvec3(mesh.albedo[v]) * sum);
+      colors[v] = albedo ? glm::vec3(glm::dvec3(mesh.albedo[v]) * sum) : glm::vec3(sum);
     }
   });
   return colors;

@@ -15,7 +15,9 @@
 
 namespace prt {
 
-/// Linear RGB outgoing radiance of every vertex of `mesh` under `light`.
-std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transport, const ShRgb& light);
+/// Linear RGB outgoing radiance of every vertex of `mesh` under `light`; without `albedo`, as if
+/// every albedo were 1 (the irradiance over pi, shadows and bounces included).
+std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transport, const ShRgb& light,
+                                     bool albedo = true);
 
 }  // namespace prt
