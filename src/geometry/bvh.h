@@ -38,7 +38,7 @@ struct RayFan;
 /// Options of the BVH build; the defaults suit meshes of 1e3-1e6 triangles.
 struct BvhOptions {
   int bins = 16;                  ///< SAH candidate planes per axis are bin borders
-  int max_leaf_size = 8;          ///< a larger node is always split
+  int max_leaf_size = 4;          ///< a larger node is always split
   float traversal_cost = 1.0f;    ///< C_trav: cost of visiting a node, in triangle tests
   float intersection_cost = 1.0f; ///< C_isect: cost of one ray-triangle test
 };

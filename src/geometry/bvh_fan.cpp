@@ -13,6 +13,9 @@
 // that such an ABI differs with and without AVX does not concern them.
 #pragma GCC diagnostic ignored "-Wpsabi"
 
+// Every lane helper is forced inline so lanes stay in registers.
+#define PRT_INLINE inline __attribute__((always_inline))
+
 namespace prt {
 namespace {
 
@@ -21,29 +24,29 @@ using VF = float __attribute__((vector_size(4 * K)));
 using VI = std::int32_t __attribute__((vector_size(4 * K)));
 constexpr int kStackSize = 128;  // > the build's depth limit
 
-inline VF Load(const float* p) {
+PRT_INLINE VF Load(const float* p) {
   VF v;
   std::memcpy(&v, p, sizeof v);
   return v;
 }
-inline VF Min(VF a, VF b) { return a < b ? a : b; }
-inline VF Max(VF a, VF b) { return a > b ? a : b; }
-inline VF Splat(float x) { return VF{} + x; }
+PRT_INLINE VF Min(VF a, VF b) { return a < b ? a : b; }
+PRT_INLINE VF Max(VF a, VF b) { return a > b ? a : b; }
+PRT_INLINE VF Splat(float x) { return VF{} + x; }
 
 // Lane mask <-> bits.
-inline std::uint32_t Bits(VI m) {
+PRT_INLINE std::uint32_t Bits(VI m) {
   std::uint32_t b = 0;
   for (int l = 0; l < K; ++l) b |= (m[l] != 0 ? 1u : 0u) << l;
   return b;
 }
-inline VI LaneMask(std::uint32_t bits) {
+PRT_INLINE VI LaneMask(std::uint32_t bits) {
   VI lane_bit;
   for (int l = 0; l < K; ++l) lane_bit[l] = 1 << l;
   return (lane_bit & static_cast<std::int32_t>(bits)) != 0;
 }
 
 // Lanes (among `mask`) whose ray enters the box [lo, hi] within (0, tmax).
-inline std::uint32_t BoxLanes(const BvhNode& n, const glm::vec3& org, const FanPacket& p,
+PRT_INLINE std::uint32_t BoxLanes(const BvhNode& n, const glm::vec3& org, const FanPacket& p,
                               VF tmax, std::uint32_t mask) {
   const VF tx0 = (n.lo.x - org.x) * Load(p.inv[0]), tx1 = (n.hi.x - org.x) * Load(p.inv[0]);
   const VF ty0 = (n.lo.y - org.y) * Load(p.inv[1]), ty1 = (n.hi.y - org.y) * Load(p.inv[1]);
@@ -55,7 +58,7 @@ inline std::uint32_t BoxLanes(const BvhNode& n, const glm::vec3& org, const FanP
 
 // Watertight test of triangle c on the lanes of `mask` (the lane-parallel form of
 // IntersectTriangle, same operations in the same order). Returns the hit lanes; writes t, u, v.
-inline std::uint32_t TriangleLanes(const std::array<glm::vec3, 3>& c, const glm::vec3& org,
+PRT_INLINE std::uint32_t TriangleLanes(const std::array<glm::vec3, 3>& c, const glm::vec3& org,
                                    const FanPacket& p, VF tmax, std::uint32_t mask, VF& t, VF& u, VF& v) {
   const glm::vec3 A = c[0] - org, B = c[1] - org, C = c[2] - org;
   const VF sx = Load(p.shear[0]), sy = Load(p.shear[1]), sz = Load(p.shear[2]);
@@ -93,7 +96,7 @@ inline std::uint32_t TriangleLanes(const std::array<glm::vec3, 3>& c, const glm:
 
 // Which child to visit first: the one whose centre lies further along the packet's first
 // direction is behind the other.
-inline bool LeftFirst(const BvhNode& l, const BvhNode& r, const FanPacket& p) {
+PRT_INLINE bool LeftFirst(const BvhNode& l, const BvhNode& r, const FanPacket& p) {
   const glm::vec3 d(p.dir[0][0], p.dir[1][0], p.dir[2][0]);
   const glm::vec3 delta = (l.lo + l.hi) - (r.lo + r.hi);
   return delta.x * d.x + delta.y * d.y + delta.z * d.z <= 0.0f;
@@ -107,6 +110,7 @@ struct StackEntry {
 // Traces one packet. `closest` false: any hit, returns the occluded lanes. `closest` true:
 // closest hit per lane in (t, tri, u, v), returns the lanes that hit.
 template <bool closest>
+PRT_INLINE
 std::uint32_t TracePacket(const std::vector<BvhNode>& nodes, const std::vector<std::array<glm::vec3, 3>>& corners,
                           const FanPacket& p, const glm::vec3& org, std::uint32_t active, VF tmax,
                           VF& best_t, VI& best_tri, VF& best_u, VF& best_v) {
@@ -148,9 +152,43 @@ std::uint32_t TracePacket(const std::vector<BvhNode>& nodes, const std::vector<s
   return found;
 }
 
-std::uint32_t HorizonLanes(const FanPacket& p, const glm::vec3& normal) {
+PRT_INLINE std::uint32_t HorizonLanes(const FanPacket& p, const glm::vec3& normal) {
   const VF c = normal.x * Load(p.dir[0]) + normal.y * Load(p.dir[1]) + normal.z * Load(p.dir[2]);
   return Bits(c > Splat(0.0f)) & ((1u << p.count) - 1u);
+}
+
+// The two traversals, compiled twice: for AVX2 (one instruction per 8 lanes) and for the
+// baseline x86-64 (two SSE instructions per 8 lanes); the loader picks the clone the CPU runs.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define PRT_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define PRT_CLONES
+#endif
+
+// Occlusion of the lanes of `active`: returns the occluded ones.
+PRT_CLONES std::uint32_t OccludedPacket(const std::vector<BvhNode>& nodes,
+                                        const std::vector<std::array<glm::vec3, 3>>& corners,
+                                        const FanPacket& p, const glm::vec3& org, std::uint32_t active,
+                                        float tmax) {
+  VF t{}, u{}, v{};
+  VI tri{};
+  return TracePacket<false>(nodes, corners, p, org, active, Splat(tmax), t, tri, u, v);
+}
+
+// Closest hits of the lanes of `active`: returns the lanes that hit, fills the per-lane arrays.
+PRT_CLONES std::uint32_t IntersectPacket(const std::vector<BvhNode>& nodes,
+                                         const std::vector<std::array<glm::vec3, 3>>& corners,
+                                         const FanPacket& p, const glm::vec3& org, std::uint32_t active,
+                                         float tmax, float* t_out, std::int32_t* tri_out, float* u_out,
+                                         float* v_out) {
+  VF t{}, u{}, v{};
+  VI tri{};
+  const std::uint32_t hit = TracePacket<true>(nodes, corners, p, org, active, Splat(tmax), t, tri, u, v);
+  std::memcpy(t_out, &t, sizeof t);
+  std::memcpy(tri_out, &tri, sizeof tri);
+  std::memcpy(u_out, &u, sizeof u);
+  std::memcpy(v_out, &v, sizeof v);
+  return hit;
 }
 
 }  // namespace
@@ -162,9 +200,7 @@ void Bvh::OccludedFan(const RayFan& fan, const glm::vec3& origin, const glm::vec
   for (const FanPacket& p : fan.packets) {
     const std::uint32_t active = HorizonLanes(p, normal);
     if (active == 0) continue;
-    VF t{}, u{}, v{};
-    VI tri{};
-    const std::uint32_t hit = TracePacket<false>(nodes_, corners_, p, origin, active, Splat(tmax), t, tri, u, v);
+    const std::uint32_t hit = OccludedPacket(nodes_, corners_, p, origin, active, tmax);
     for (std::uint32_t m = hit; m != 0; m &= m - 1) occluded[p.index[__builtin_ctz(m)]] = 1;
   }
 }
@@ -176,9 +212,9 @@ void Bvh::IntersectFan(const RayFan& fan, const glm::vec3& origin, const glm::ve
   for (const FanPacket& p : fan.packets) {
     const std::uint32_t active = HorizonLanes(p, normal);
     if (active == 0) continue;
-    VF t{}, u{}, v{};
-    VI tri{};
-    const std::uint32_t hit = TracePacket<true>(nodes_, corners_, p, origin, active, Splat(tmax), t, tri, u, v);
+    float t[K], u[K], v[K];
+    std::int32_t tri[K];
+    const std::uint32_t hit = IntersectPacket(nodes_, corners_, p, origin, active, tmax, t, tri, u, v);
     for (std::uint32_t m = hit; m != 0; m &= m - 1) {
       const int l = __builtin_ctz(m);
       hits[p.index[l]] = Hit{t[l], prim_indices_[static_cast<std::uint32_t>(tri[l])], u[l], v[l]};
