@@ -12,6 +12,7 @@ const std::vector<Command>& Commands() {
       {"report", "error against run time, and the stiff and extreme cases", kReportHelp, RunReport},
       {"diff", "compare two images", kDiffHelp, RunDiff},
       {"bench", "performance measurements", kBenchHelp, RunBench},
+      {"basis", "draw the real SH basis functions as a grid of spheres", kBasisHelp, RunBasis},
       {"help", "show help for a command", kHelpHelp, RunHelp},
   };
   return commands;

@@ -30,6 +30,7 @@ int RunReference(const std::vector<std::string>& tokens);
 int RunReport(const std::vector<std::string>& tokens);
 int RunDiff(const std::vector<std::string>& tokens);
 int RunBench(const std::vector<std::string>& tokens);
+int RunBasis(const std::vector<std::string>& tokens);
 int RunHelp(const std::vector<std::string>& tokens);
 
 extern const char* const kDemoHelp;
@@ -40,6 +41,7 @@ extern const char* const kReferenceHelp;
 extern const char* const kReportHelp;
 extern const char* const kDiffHelp;
 extern const char* const kBenchHelp;
+extern const char* const kBasisHelp;
 extern const char* const kHelpHelp;
 
 }  // namespace prt
