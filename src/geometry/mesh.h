@@ -19,6 +19,10 @@ struct Mesh {
   std::vector<glm::vec3> normals;    ///< unit length, one per vertex
   std::vector<glm::vec3> albedo;     ///< linear RGB in [0,1], one per vertex
   std::vector<std::array<std::uint32_t, 3>> triangles;  ///< counter-clockwise seen from outside
+  /// Every face of the source file in file order, zero-area and collapsed ones included (their
+  /// corners' vertices), for formats with one row per file face such as the course's
+  /// transport.txt. Empty when the mesh was not read from a file: then `triangles` is it.
+  std::vector<std::array<std::uint32_t, 3>> file_triangles;
 
   std::size_t vertex_count() const { return positions.size(); }
   std::size_t triangle_count() const { return triangles.size(); }

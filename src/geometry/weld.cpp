@@ -77,10 +77,14 @@ Mesh WeldCorners(const CornerSoup& soup, float position_tolerance, MeshReport& r
     ++corner_count[vertex];
   }
 
-  // Triangles; a corner pair welded together collapses the triangle.
+  // Triangles; a zero-area one, or one with a corner pair welded together, is dropped (but kept
+  // in file_triangles, which mirrors the file face for face).
   for (std::size_t t = 0; t + 2 < n; t += 3) {
     const std::array<std::uint32_t, 3> tri = {vertex_of[t], vertex_of[t + 1], vertex_of[t + 2]};
-    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) {
+    mesh.file_triangles.push_back(tri);
+    const glm::dvec3 p0(soup.positions[t]), p1(soup.positions[t + 1]), p2(soup.positions[t + 2]);
+    const bool zero_area = glm::length(glm::cross(p1 - p0, p2 - p0)) == 0.0;
+    if (zero_area || tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) {
       ++report.dropped_degenerate;
       continue;
     }

@@ -118,10 +118,8 @@ LoadedMesh LoadObj(const std::string& path) {
         p[c] = glm::dvec3(attrib.vertices[3 * i.vertex_index], attrib.vertices[3 * i.vertex_index + 1],
                           attrib.vertices[3 * i.vertex_index + 2]);
       }
-      if (glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) == 0.0) {
-        ++out.report.dropped_degenerate;
-        continue;
-      }
+      // Zero-area faces go on into the soup: the welder drops them from the triangles but
+      // keeps them in file_triangles, so per-face outputs still have a row for every face.
       const glm::vec3 albedo = checked_albedo(shape.mesh.material_ids.empty() ? -1 : shape.mesh.material_ids[f]);
       for (int c = 0; c < 3; ++c) {
         const tinyobj::index_t& i = idx[f * 3 + c];
@@ -141,8 +139,6 @@ LoadedMesh LoadObj(const std::string& path) {
     }
   }
   if (faces == 0) Fail(path, "no faces", "at least one triangle");
-  if (soup.positions.empty())
-    Fail(path, "all " + std::to_string(faces) + " faces have zero area", "at least one non-degenerate triangle");
   if (zero_normals > 0)
     out.report.warnings.push_back(path + ": " + std::to_string(zero_normals) +
                                   " corners have zero-length normals (recomputed)");
@@ -153,7 +149,8 @@ LoadedMesh LoadObj(const std::string& path) {
   const float tolerance = kWeldRelativeTolerance * glm::length(box.hi - box.lo);
   out.mesh = WeldCorners(soup, tolerance, out.report);
   if (out.mesh.triangles.empty())
-    Fail(path, "all faces collapse when welding", "at least one non-degenerate triangle");
+    Fail(path, "all " + std::to_string(faces) + " faces have zero area or collapse when welding",
+         "at least one non-degenerate triangle");
   return out;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// The course's `transport.txt` (GAMES202 homework 2): the first line is the vertex count, then
-/// three rows per triangle in face order (one per corner), each (lmax+1)^2 numbers: the
-/// corner's transfer vector. The WebGL framework reads it as per-corner attributes.
+/// three rows per face in file order (one per corner; every face of the file, zero-area ones
+/// included, see Mesh::file_triangles), each (lmax+1)^2 numbers: the corner's transfer vector. The WebGL framework reads it as per-corner attributes.
 /// Written with 7 significant digits (float precision).
 
 #include <string>
