@@ -90,6 +90,7 @@ TransportOptions TransportOptionsOf(const SceneOptions& options) {
   t.sampler = SamplerFromName(options.sampler);
   t.bounces = options.bounces;
   t.seed = options.seed;
+  t.direction_sets = options.direction_sets;
   return t;
 }
 

@@ -20,6 +20,8 @@ const char* const kSceneOptionsHelp =
     "  --samples N        directions per vertex (default 1024)\n"
     "  --sampler NAME     fibonacci | stratified | uniform (default fibonacci)\n"
     "  --bounces B        interreflection bounces, 1..1000 (default 1)\n"
+    "  --direction-sets K independent direction sets the vertices draw from, 1..1024 (default 64):\n"
+    "                     many give independent per-vertex noise, 1 gives smooth, correlated error\n"
     "  --albedo R,G,B     override the material colour, each in [0,1]\n"
     "  --seed S           random seed (default 1)\n"
     "  --threads N        worker threads, 1..1024; results do not depend on it (default: all cores)\n"
@@ -37,6 +39,7 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
   o.samples = args.Int("--samples", d.samples, 1, 1 << 24);
   o.sampler = args.Choice("--sampler", d.sampler, {"fibonacci", "stratified", "uniform"});
   o.bounces = args.Int("--bounces", d.bounces, 1, 1000);
+  o.direction_sets = args.Int("--direction-sets", d.direction_sets, 1, 1024);
   if (auto albedo = args.Vec3("--albedo")) {
     for (int c = 0; c < 3; ++c)
       if ((*albedo)[c] < 0.0 || (*albedo)[c] > 1.0)

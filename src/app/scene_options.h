@@ -23,6 +23,7 @@ struct SceneOptions {
   int samples = 1024;                ///< directions per vertex
   std::string sampler = "fibonacci"; ///< fibonacci | stratified | uniform
   int bounces = 1;                   ///< interreflection bounces
+  int direction_sets = 64;           ///< pool of direction sets (1: every vertex shares one)
   std::optional<glm::dvec3> albedo;  ///< overrides the material colour
   std::uint64_t seed = 1;
   int threads = 0;                   ///< 0 = all cores

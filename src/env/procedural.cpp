@@ -75,7 +75,7 @@ class Sky : public Environment {
 
   /// Everything but the disk: smooth, so the Gauss rule integrates it to spectral accuracy.
   glm::dvec3 Smooth(const glm::dvec3& d) const {
-    const glm::dvec3 zenith(0.22, 0.42, 0.95), horizon(0.85, 0.88, 0.95), ground(0.28, 0.25, 0.22);
+    const glm::dvec3 zenith(0.22, 0.42, 0.95), horizon(0.85, 0.88, 0.95), ground(0.42, 0.40, 0.37);
     const double up = std::max(d.y, 0.0);
     const glm::dvec3 sky = glm::mix(horizon, zenith, std::pow(up, 0.6));
     const double cos_sun = glm::dot(d, sun_dir_);
