@@ -30,7 +30,7 @@ void FillRect(Image8& image, int x0, int y0, int x1, int y1, glm::vec3 color) {
 glm::vec3 DivergingColor(double t) {
   t = std::clamp(t, -1.0, 1.0);
   const glm::vec3 white(0.97f, 0.97f, 0.97f), blue(0.23f, 0.30f, 0.75f), red(0.71f, 0.02f, 0.15f);
-  const float s = static_cast<float>(std::sqrt(std::abs(t)));  // more contrast near zero
+  const float s = static_cast<float>(std::abs(t));
   return t < 0 ? white + (blue - white) * s : white + (red - white) * s;
 }
 
