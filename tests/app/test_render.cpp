@@ -13,7 +13,10 @@
 #include "raster/image_diff.h"
 #include "raster/tonemap.h"
 #include "sh/rotation.h"
+#include "env/load_environment.h"
+#include "io/obj_loader.h"
 #include "tests/golden.h"
+#include "tests/test_support.h"
 
 using namespace prt;
 
@@ -142,5 +145,23 @@ TEST_SUITE("render") {
     MESSAGE("symmetry: " << FormatDiffMetrics(m));
     CHECK(m.differing_pixels <= 8);
     CHECK(m.mean_abs < 0.2);
+  }
+
+  TEST_CASE("golden frame of the course scene: mary under Grace Cathedral") {
+    PRT_SHARED_DATA_OR_SKIP(data);
+    Scene s;
+    s.mesh = LoadObj(data + "/games202/mary/mary.obj").mesh;
+    s.env = LoadEnvironment(data + "/games202/cubemap/GraceCathedral", CubeLayout::kStandard);
+    s.light = ProjectLight(*s.env, 2);
+    TransportOptions t;
+    t.mode = TransportMode::kShadowed;
+    t.samples = 64;
+    s.transport = ComputeTransport(s.mesh, t, nullptr);
+    RenderOptions o = SmallFrame();
+    o.width = 72, o.height = 96;
+    o.env_background = false;
+    o.eye = glm::dvec3(0, 8, 22) * 0.45, o.target = glm::dvec3(0, 1.7, 0), o.fov = 30.0;
+    const Image8 img = Draw(s, o, 0.0);
+    test::CheckGolden("mary_gracecathedral", img);
   }
 }

@@ -16,6 +16,8 @@
 #include "env/load_environment.h"
 #include "io/light_txt.h"
 #include "precompute/light.h"
+#include "sh/basis.h"
+#include "sh/zonal.h"
 #include "core/atomic_file.h"
 #include "tests/test_support.h"
 
@@ -192,5 +194,26 @@ TEST_SUITE("env") {
       MESSAGE(std::string(name) << ": mean seam jump standard " << seam[0] << ", course " << seam[1]);
       CHECK(seam[0] * 3.0 < seam[1]);
     }
+  }
+
+  TEST_CASE("Grace Cathedral is bright above with the standard faces, below with the course's") {
+    PRT_SHARED_DATA_OR_SKIP(data);
+    // Irradiance on a surface facing n: E(n) = sum_lm A_l L_lm Y_lm(n) (R&H 2001). The
+    // cathedral's lamps and windows are overhead, so E(up) > E(down); the course's face table
+    // swaps up and down (CONVENTIONS.md) and must show the opposite.
+    auto irradiance = [](const ShRgb& L, const glm::dvec3& n) {
+      double y[9], e = 0.0;
+      EvalBasisBand2(n, y);
+      for (int k = 0; k < 9; ++k) e += ClampedCosineBand(k < 1 ? 0 : k < 4 ? 1 : 2) * L[k].x * y[k];
+      return e;
+    };
+    const std::string folder = data + "/games202/cubemap/GraceCathedral";
+    const ShRgb standard = ProjectLight(*LoadEnvironment(folder, CubeLayout::kStandard), 2);
+    const ShRgb course = ProjectLight(*LoadEnvironment(folder, CubeLayout::kGames202), 2);
+    const glm::dvec3 up(0, 1, 0), down(0, -1, 0);
+    MESSAGE("red irradiance up/down: standard " << irradiance(standard, up) << " / " << irradiance(standard, down)
+                                                << ", course " << irradiance(course, up) << " / " << irradiance(course, down));
+    CHECK(irradiance(standard, up) > 1.5 * irradiance(standard, down));
+    CHECK(irradiance(course, up) < irradiance(course, down));
   }
 }
