@@ -134,4 +134,11 @@ void Args::Finish() const {
     Fail("'" + positionals_.front() + "': unexpected argument");
 }
 
+void Args::RejectUnknown(const std::set<std::string>& known) const {
+  for (const auto& o : options_)
+    if (!known.count(o.first)) Fail(o.first + ": unknown option");
+}
+
+void Args::Allow(const std::set<std::string>& names) { used_.insert(names.begin(), names.end()); }
+
 }  // namespace prt

@@ -47,6 +47,13 @@ class Args {
   /// Throws UsageError for any option or positional not asked for.
   void Finish() const;
 
+  /// Throws UsageError for any option given that is not in `known` (checked before any is read,
+  /// for commands that hand the same options to several parts).
+  void RejectUnknown(const std::set<std::string>& known) const;
+
+  /// Marks the options in `names` as used, so Finish() accepts them even if nothing reads them.
+  void Allow(const std::set<std::string>& names);
+
  private:
   std::optional<std::string> Take(const std::string& name);
   [[noreturn]] void Fail(const std::string& message) const;
