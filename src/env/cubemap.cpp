@@ -61,6 +61,22 @@ glm::dvec3 CubemapEnvironment::Radiance(const glm::dvec3& dir) const {
   return glm::mix(top, bottom, fy);
 }
 
+std::unique_ptr<CubemapEnvironment> CubemapFromFunction(const std::function<glm::dvec3(const glm::dvec3&)>& radiance,
+                                                       int size, CubeLayout layout) {
+  std::array<ImageF, 6> faces;
+  const auto& frames = FaceFrames(layout);
+  for (int k = 0; k < 6; ++k) {
+    faces[k] = ImageF(size, size);
+    for (int row = 0; row < size; ++row)
+      for (int col = 0; col < size; ++col) {
+        const double s = -1.0 + (col + 0.5) * 2.0 / size, t = -1.0 + (row + 0.5) * 2.0 / size;
+        faces[k].at(col, row) = glm::vec3(radiance(glm::normalize(frames[k].n + s * frames[k].u + t * frames[k].v)));
+      }
+  }
+  return std::make_unique<CubemapEnvironment>(std::move(faces), layout,
+                                              "cubemap from a function 6x" + std::to_string(size) + "^2");
+}
+
 namespace {
 
 /// The one file folder/<name>.<ext> for a face; Error if none or several.

@@ -4,6 +4,7 @@
 /// frames and exact texel solid angles).
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -36,6 +37,11 @@ class CubemapEnvironment : public Environment {
   std::vector<double> solid_angles_;  ///< size^2, shared by all faces
   std::string description_;
 };
+
+/// A size^2 cubemap whose texel centres hold `radiance(direction)`: for tests, benchmarks and
+/// resolution studies.
+std::unique_ptr<CubemapEnvironment> CubemapFromFunction(const std::function<glm::dvec3(const glm::dvec3&)>& radiance,
+                                                       int size, CubeLayout layout = CubeLayout::kStandard);
 
 /// Loads `folder/{posx,negx,posy,negy,posz,negz}.{jpg,png,hdr,exr}`. Throws Error naming the
 /// folder or face for a missing or ambiguous face, faces of different sizes, non-square or

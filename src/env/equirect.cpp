@@ -60,6 +60,21 @@ glm::dvec3 EquirectEnvironment::Radiance(const glm::dvec3& d) const {
   return glm::mix(top, bottom, fy);
 }
 
+std::unique_ptr<EquirectEnvironment> EquirectFromFunction(const std::function<glm::dvec3(const glm::dvec3&)>& radiance,
+                                                         int width, int height) {
+  ImageF image(width, height);
+  for (int row = 0; row < height; ++row) {
+    const double theta = kPi * (row + 0.5) / height;
+    for (int col = 0; col < width; ++col) {
+      const double phi = 2.0 * kPi * (col + 0.5) / width - kPi;
+      const glm::dvec3 d(std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi));
+      image.at(col, row) = glm::vec3(radiance(d));
+    }
+  }
+  return std::make_unique<EquirectEnvironment>(std::move(image), "equirect from a function " + std::to_string(width) +
+                                                                     "x" + std::to_string(height));
+}
+
 std::unique_ptr<Environment> LoadEquirect(const std::string& path) {
   ImageF image = LoadImageLinear(path, LdrDecode::kSrgb);
   if (image.width != 2 * image.height)

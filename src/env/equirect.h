@@ -9,6 +9,7 @@
 /// Its solid angle is exact: (2 pi / W) (cos theta0 - cos theta1); a row's texels sum to the
 /// area of its band and all rows to 4 pi.
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,6 +36,10 @@ class EquirectEnvironment : public Environment {
   std::vector<double> sin_phi_, cos_phi_;  ///< per column centre
   std::string description_;
 };
+
+/// A width x height equirect whose texel centres hold `radiance(direction)`.
+std::unique_ptr<EquirectEnvironment> EquirectFromFunction(const std::function<glm::dvec3(const glm::dvec3&)>& radiance,
+                                                         int width, int height);
 
 /// Loads an equirectangular .hdr, .exr, .png or .jpg. Throws Error for an unreadable file;
 /// warns if the aspect ratio is not 2:1; sanitises non-finite, negative and enormous texels

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
 #include "core/rng.h"
 #include "env/cube_faces.h"
 #include "env/cubemap.h"
