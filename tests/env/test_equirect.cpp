@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
 #include "env/equirect.h"
 #include "tests/env/env_test_util.h"
 
