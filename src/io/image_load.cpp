@@ -12,6 +12,7 @@
 #include <OpenEXR/ImfArray.h>
 #include <OpenEXR/ImfRgbaFile.h>
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 
 namespace prt {
@@ -45,6 +46,71 @@ void CheckSize(const std::string& path, long long w, long long h) {
 
 bool IsExr(const std::string& path) { return Lower(fs::path(path).extension().string()) == ".exr"; }
 
+// stb_image (Debian's 2.27) trusts the pixel data of a Radiance .hdr file: a truncated flat file
+// decodes silently from whatever the buffer held, and an RLE count of 0 (or a run of 0) loops
+// forever. So the payload is walked here first, exactly as stb will read it, and a file that
+// ends early or has a zero-length run is an error. Other faults (a scanline of the wrong
+// length, a run past the end of the line) stb reports itself.
+void CheckHdrPayload(const std::string& path, long long width, long long height) {
+  const std::string bytes = ReadFile(path);
+  auto fail = [&](const std::string& problem) {
+    throw Error(path + ": truncated or corrupt HDR image (" + problem + "; expected " +
+                std::to_string(width) + "x" + std::to_string(height) + " RGBE pixels)");
+  };
+  // The header ends at an empty line; the resolution line follows.
+  std::size_t pos = bytes.find("\n\n");
+  if (pos == std::string::npos) return;  // stb rejects the header itself
+  pos = bytes.find('\n', pos + 2);
+  if (pos == std::string::npos) fail("no pixel data");
+  ++pos;
+  const auto left = [&] { return static_cast<long long>(bytes.size() - pos); };
+  const long long flat_bytes = 4 * width * height;
+  auto byte = [&](std::size_t i) { return static_cast<unsigned char>(bytes[i]); };
+  if (width < 8 || width >= 32768) {
+    if (left() < flat_bytes) fail("the file ends after " + std::to_string(left() / 4) + " pixels");
+    return;
+  }
+  for (long long row = 0; row < height; ++row) {
+    if (left() < 4) fail("the file ends at scanline " + std::to_string(row));
+    if (byte(pos) != 2 || byte(pos + 1) != 2 || (byte(pos + 2) & 0x80)) {
+      // Not run-length encoded: stb reads the whole image as flat pixels from here.
+      if (left() < flat_bytes) fail("the file ends before the last flat pixel");
+      return;
+    }
+    if (((byte(pos + 2) << 8) | byte(pos + 3)) != width) return;  // stb reports it
+    pos += 4;
+    for (int channel = 0; channel < 4; ++channel) {
+      for (long long x = 0; x < width;) {
+        if (left() < 1) fail("the file ends in scanline " + std::to_string(row));
+        const int count = byte(pos++);
+        const int run = count > 128 ? count - 128 : count;
+        if (run == 0) fail("a run of length 0 in scanline " + std::to_string(row));
+        if (run > width - x) return;  // stb reports it
+        const long long need = count > 128 ? 1 : run;
+        if (left() < need) fail("the file ends in scanline " + std::to_string(row));
+        pos += static_cast<std::size_t>(need);
+        x += run;
+      }
+    }
+  }
+}
+
+// stb's info call gives "unknown image type" for a PNG larger than it decodes; read the size
+// from the IHDR chunk then, so the message says what is wrong.
+void CheckPngHeaderSize(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return;
+  unsigned char h[24] = {};
+  const std::size_t n = std::fread(h, 1, sizeof h, f);
+  std::fclose(f);
+  static const unsigned char kSignature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
+  if (n < sizeof h || std::memcmp(h, kSignature, 8) != 0 || std::memcmp(h + 12, "IHDR", 4) != 0) return;
+  auto be32 = [&](int i) {
+    return static_cast<long long>(h[i]) << 24 | h[i + 1] << 16 | h[i + 2] << 8 | h[i + 3];
+  };
+  CheckSize(path, be32(16), be32(20));
+}
+
 ImageF LoadExr(const std::string& path) {
   try {
     Imf::RgbaInputFile file(path.c_str());
@@ -73,13 +139,17 @@ ImageF LoadExr(const std::string& path) {
 
 ImageF LoadStb(const std::string& path, LdrDecode ldr) {
   int w = 0, h = 0, n = 0;
-  if (!stbi_info(path.c_str(), &w, &h, &n))
-    throw Error(path + ": not a readable image (" + std::string(stbi_failure_reason()) +
-                "; expected jpg, png, hdr or exr)");
+  if (!stbi_info(path.c_str(), &w, &h, &n)) {
+    const std::string reason = stbi_failure_reason();
+    CheckPngHeaderSize(path);
+    throw Error(path + ": not a readable image (" + reason + "; expected jpg, png, hdr or exr)");
+  }
   CheckSize(path, w, h);
+  const bool hdr = stbi_is_hdr(path.c_str());
+  if (hdr) CheckHdrPayload(path, w, h);
   ImageF image(w, h);
   const std::size_t count = static_cast<std::size_t>(w) * h;
-  if (stbi_is_hdr(path.c_str())) {
+  if (hdr) {
     std::unique_ptr<float, void (*)(void*)> data(stbi_loadf(path.c_str(), &w, &h, &n, 3), stbi_image_free);
     if (!data) throw Error(path + ": truncated or corrupt HDR image (" + stbi_failure_reason() + ")");
     for (std::size_t i = 0; i < count; ++i)
@@ -128,8 +198,10 @@ void ImageSize(const std::string& path, int& width, int& height) {
     }
   }
   int n = 0;
-  if (!stbi_info(path.c_str(), &width, &height, &n))
+  if (!stbi_info(path.c_str(), &width, &height, &n)) {
+    CheckPngHeaderSize(path);
     throw Error(path + ": not a readable image (expected jpg, png, hdr or exr)");
+  }
 }
 
 ImageF LoadImageLinear(const std::string& path, LdrDecode ldr) {

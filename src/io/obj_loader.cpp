@@ -72,6 +72,10 @@ LoadedMesh LoadObj(const std::string& path) {
   LoadedMesh out;
   for (const std::string& w : Lines(reader.Warning())) {
     if (w.find("out of bounds") != std::string::npos) Fail(path, w, "indices within the file's vertex list");
+    // A face of one or two vertices: tinyobjloader drops it with a warning; most often the
+    // file was cut off in its last line, so it is an error, not a silently smaller mesh.
+    if (w.find("Degenerated face") != std::string::npos)
+      Fail(path, "a face with fewer than 3 vertices (truncated file?)", "faces of at least 3 vertices");
     out.report.warnings.push_back(path + ": " + w + " (using albedo 0.8 where no material applies)");
   }
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
