@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# The test suite under the sanitizers:
+#   bash scripts/sanitize.sh asan [doctest args]   AddressSanitizer + UndefinedBehaviorSanitizer
+#                                                   (build-asan/), every test by default
+#   bash scripts/sanitize.sh tsan [doctest args]   ThreadSanitizer (build-tsan/), the threaded
+#                                                   stages by default: core (thread pool),
+#                                                   precompute (transport) and app (rendering)
+#   bash scripts/sanitize.sh all                    both, one after the other
+# The `prt` binary that the command-line tests run is the sanitized one too. Any report fails
+# the run (halt_on_error). PRT_JOBS sets the build parallelism (default: all cores).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+what=${1:-asan}
+shift || true
+jobs=${PRT_JOBS:-$(nproc)}
+
+build() {  # build FOLDER CMAKE_OPTION
+  cmake -S . -B "$1" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-D$2=ON" >/dev/null
+  cmake --build "$1" --parallel "$jobs" --target prt prt_tests
+}
+
+run_asan() {
+  build build-asan PRT_SANITIZE
+  echo "== AddressSanitizer + UndefinedBehaviorSanitizer: prt_tests $*"
+  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1 \
+  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  PRT_BINARY="$PWD/build-asan/prt" build-asan/prt_tests --no-intro=true "$@"
+}
+
+run_tsan() {
+  build build-tsan PRT_TSAN
+  local filter=()
+  [ $# -eq 0 ] && filter=(--test-suite=core,precompute,app)
+  echo "== ThreadSanitizer: prt_tests ${filter[*]} $*"
+  TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
+  PRT_BINARY="$PWD/build-tsan/prt" build-tsan/prt_tests --no-intro=true "${filter[@]}" "$@"
+}
+
+case "$what" in
+  asan) run_asan "$@" ;;
+  tsan) run_tsan "$@" ;;
+  all) run_asan && run_tsan ;;
+  *) echo "usage: bash scripts/sanitize.sh asan|tsan|all [doctest args]" >&2; exit 2 ;;
+esac

@@ -1,0 +1,166 @@
+// No data lost: outputs are written to a temporary name in the same folder and renamed when
+// complete (core/atomic_file.h), so a run killed with SIGKILL in the middle of its frames leaves
+// every frame either the old complete file or a new complete one, never a truncated file.
+//
+// What SIGKILL can leave: the one temporary file being written at the kill (named
+// `.frame_NNNN.png.tmp<pid>_<n>`: a dot file, ignored by every reader, never counted as a
+// frame). A later run does not remove it: temporary names carry the writer's pid, and each run
+// cleans only its own (its AtomicFile destructors), so two runs never delete each other's work.
+#include <doctest/doctest.h>
+
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <thread>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "io/png_io.h"
+#include "tests/test_support.h"
+
+namespace prt {
+namespace {
+namespace fs = std::filesystem;
+
+/// A complete 8x8 PNG of one grey level: the "earlier output" a new run may replace.
+std::string MarkerPng(unsigned char level) {
+  Image8 image;
+  image.width = image.height = 8;
+  image.rgb.assign(3 * 8 * 8, level);
+  return EncodePng(image);
+}
+
+std::string Slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+bool IsTemp(const std::string& name) { return name[0] == '.' && name.find(".tmp") != std::string::npos; }
+
+/// Writes frame_0000.png .. frame_{n-1}.png as markers; returns their bytes by name.
+std::map<std::string, std::string> FillWithMarkers(const std::string& dir, int n) {
+  std::map<std::string, std::string> old;
+  for (int i = 0; i < n; ++i) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.png", i);
+    old[name] = MarkerPng(static_cast<unsigned char>(i % 200));
+    WriteFileAtomic(dir + "/" + name, old[name]);
+  }
+  return old;
+}
+
+}  // namespace
+
+TEST_SUITE("app") {
+  TEST_CASE("no data lost: a render killed mid-run leaves only complete frames, old or new") {
+    const char* binary = std::getenv("PRT_BINARY");
+    if (!binary || !*binary) {
+      MESSAGE("skipped: PRT_BINARY is not set (run the tests through ctest)");
+      return;
+    }
+    const std::string dir = test::ScratchDir("no_data_loss_kill");
+    constexpr int kMarkers = 400;
+    const auto old = FillWithMarkers(dir, kMarkers);
+
+    // Many small frames: the run would take minutes; it is killed once 20 frames are new.
+    const std::string out = dir;
+    const std::string mesh = test::Fixture("obj/tetra_no_normals.obj");
+    const pid_t pid = ::fork();
+    REQUIRE(pid >= 0);
+    if (pid == 0) {
+      // Only async-signal-safe calls between fork and exec (the test process has threads).
+      const int null = ::open("/dev/null", O_WRONLY);
+      if (null >= 0) ::dup2(null, 2);
+      ::execl(binary, binary, "render", "--mesh", mesh.c_str(), "--env", "furnace", "--transport", "unshadowed",
+              "--frames", "100000", "--size", "48x32", "--threads", "1", "--out", out.c_str(), "--quiet",
+              static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    const std::string watched = dir + "/frame_0020.png";
+    bool started = false;
+    // Polls until frame 20 is new (or the child has exited, which fails below). The bound only
+    // keeps a broken build from hanging the suite; it is not a time limit on prt.
+    for (int tries = 0; tries < 60000 && !started; ++tries) {
+      started = Slurp(watched) != old.at("frame_0020.png");
+      int status = 0;
+      if (!started && ::waitpid(pid, &status, WNOHANG) == pid) break;
+      if (!started) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    ::kill(pid, SIGKILL);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    REQUIRE(started);
+    CHECK(WIFSIGNALED(status));
+
+    int fresh = 0, kept = 0, temps = 0;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+      const std::string name = entry.path().filename().string();
+      if (IsTemp(name)) {
+        ++temps;
+        CHECK(name.find(".tmp" + std::to_string(pid) + "_") != std::string::npos);
+        continue;
+      }
+      if (name == "transport.cache") continue;
+      CAPTURE(name);
+      const std::string bytes = Slurp(entry.path().string());
+      Image8 image;
+      CHECK_NOTHROW(image = DecodePng(bytes, name));  // complete, never truncated
+      if (old.count(name) && bytes == old.at(name)) ++kept;
+      else {
+        ++fresh;
+        CHECK(image.width == 48);
+        CHECK(image.height == 32);
+      }
+    }
+    MESSAGE("after SIGKILL: " << fresh << " new frames, " << kept << " earlier frames intact, " << temps
+                              << " temporary file(s) left by the killed run");
+    CHECK(fresh >= 21);
+    CHECK(fresh + kept >= kMarkers);  // every earlier frame is there, replaced or intact
+    CHECK(temps <= 1);                // at most the frame being written at the kill
+  }
+
+  TEST_CASE("no data lost: fewer frames than the folder has remove nothing; failed runs keep old outputs") {
+    const auto r0 = test::RunPrt("--version");
+    if (!r0) return;
+    const std::string dir = test::ScratchDir("no_data_loss_fewer");
+    const auto old = FillWithMarkers(dir, 10);
+    const std::string run = "render --env furnace --transport unshadowed --frames 3 --size 16x16 --mesh '" +
+                            test::Fixture("obj/quad.obj") + "' --out '" + dir + "'";
+    const auto r = test::RunPrt(run);
+    REQUIRE(r);
+    CAPTURE(r->err);
+    CHECK(r->exit_code == 0);
+    CHECK(r->err.find("note: 7 older frame files") != std::string::npos);
+    for (const auto& [name, bytes] : old) {
+      CAPTURE(name);
+      REQUIRE(fs::exists(dir + "/" + name));
+      if (name >= "frame_0003.png") CHECK(Slurp(dir + "/" + name) == bytes);  // untouched
+      else CHECK(Slurp(dir + "/" + name) != bytes);                           // replaced
+    }
+
+    // A run that fails (bad mesh) leaves the earlier frames, cache and text files as they were.
+    std::ofstream(dir + "/light.txt") << "earlier light\n";
+    const std::string cache_before = Slurp(dir + "/transport.cache");
+    const auto failed = test::RunPrt("render --env furnace --frames 2 --mesh '" + test::Fixture("obj/no_faces.obj") +
+                                     "' --out '" + dir + "'");
+    REQUIRE(failed);
+    CHECK(failed->exit_code == 1);
+    const auto failed_pre = test::RunPrt("precompute --env '" + test::Fixture("images/truncated.png") +
+                                         "' --out '" + dir + "'");
+    REQUIRE(failed_pre);
+    CHECK(failed_pre->exit_code == 1);
+    CHECK(Slurp(dir + "/light.txt") == "earlier light\n");
+    CHECK(Slurp(dir + "/transport.cache") == cache_before);
+    for (const auto& [name, bytes] : old)
+      if (name >= "frame_0003.png") CHECK(Slurp(dir + "/" + name) == bytes);
+    for (const auto& entry : fs::directory_iterator(dir)) CHECK_FALSE(IsTemp(entry.path().filename().string()));
+  }
+}
+
+}  // namespace prt
