@@ -1,0 +1,193 @@
+#include "app/report_sweep.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "app/render_frames.h"
+#include "app/report_image.h"
+#include "core/log.h"
+#include "env/cubemap.h"
+#include "geometry/mesh_ops.h"
+#include "geometry/procedural.h"
+#include "precompute/light.h"
+#include "precompute/reference.h"
+#include "precompute/shade.h"
+#include "raster/image_diff.h"
+
+namespace prt {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double Since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+/// Bands 0..lmax of `t` (a prefix of each vector).
+Transport Truncate(const Transport& t, int lmax) {
+  Transport out;
+  out.lmax = lmax;
+  out.channels = t.channels;
+  out.vertices = t.vertices;
+  const int from = CoeffCount(t.lmax), to = CoeffCount(lmax);
+  out.coeffs.resize(t.vertices * t.channels * to);
+  for (std::size_t i = 0; i < t.vertices * t.channels; ++i)
+    std::copy(t.coeffs.begin() + i * from, t.coeffs.begin() + i * from + to, out.coeffs.begin() + i * to);
+  return out;
+}
+
+ShRgb Prefix(const ShRgb& light, int lmax) { return ShRgb(light.begin(), light.begin() + CoeffCount(lmax)); }
+
+std::vector<glm::dvec3> ToDouble(const std::vector<glm::vec3>& v) { return {v.begin(), v.end()}; }
+
+double RelativeL2(const ShRgb& x, const ShRgb& ref) {
+  double d2 = 0, r2 = 0;
+  for (std::size_t k = 0; k < ref.size(); ++k) {
+    const glm::dvec3 d = x[k] - ref[k];
+    d2 += glm::dot(d, d);
+    r2 += glm::dot(ref[k], ref[k]);
+  }
+  return r2 > 0 ? std::sqrt(d2 / r2) : std::sqrt(d2);
+}
+
+struct Scorer {
+  const Mesh& mesh;
+  const Environment& env;
+  const Camera& camera;
+  const RenderOptions& picture;
+  const ShRgb& light;
+  const Reference& reference;
+  const Image8& reference_image;
+
+  /// Scores the transport `t` (of max lmax) at every lmax against the converged transport.
+  void Score(const Transport& t, const Transport* converged, SweepRow row, int max_lmax,
+             std::vector<SweepRow>& rows) const {
+    for (int l = 1; l <= max_lmax; ++l) {
+      const Transport tl = Truncate(t, l);
+      const std::vector<glm::vec3> colors = ShadeVertices(mesh, tl, Prefix(light, l));
+      row.lmax = l;
+      if (converged)
+        row.sampling = CompareVertices(colors, ToDouble(ShadeVertices(mesh, Truncate(*converged, l), Prefix(light, l))));
+      row.total = CompareVertices(colors, reference.radiance);
+      row.psnr = CompareImages(DrawVertexColors(mesh, colors, env, camera, picture), reference_image).psnr;
+      rows.push_back(row);
+    }
+  }
+};
+
+Transport Timed(const Mesh& mesh, TransportOptions o, double& seconds, int& directions) {
+  TransportReport r;
+  const auto t0 = Clock::now();
+  Transport t = ComputeTransport(mesh, o, &r);
+  seconds = Since(t0);
+  directions = r.directions_per_vertex;
+  return t;
+}
+
+}  // namespace
+
+Mesh MakeReportScene() {
+  Mesh knot = MakeTorusKnot(2, 3, 0.16f, 128, 16, glm::vec3(0.80f, 0.38f, 0.20f));
+  const Bounds3 b = MeshBounds(knot);
+  const float scale = 3.4f / (b.hi.y - b.lo.y);
+  TransformMesh(knot, scale, glm::vec3(0.0f, -scale * b.lo.y, 0.0f));
+  Mesh scene = MakePlane(12.0f, 24, 0.0f, glm::vec3(0.7f, 0.7f, 0.7f));
+  AppendMesh(scene, knot);
+  return scene;
+}
+
+ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::string& env_spec,
+                          const ReportConfig& c, const RenderOptions& picture) {
+  ReportData data;
+  data.environment = env_spec;
+  data.vertices = static_cast<int>(mesh.vertex_count());
+  data.max_lmax = c.max_lmax;
+  const ShRgb light = ProjectLight(env, c.max_lmax);
+  const Camera camera = ChooseCamera(mesh, picture);
+
+  std::vector<TransportMode> modes = {TransportMode::kUnshadowed};
+  for (TransportMode m : c.modes)
+    if (m != TransportMode::kUnshadowed) modes.push_back(m);
+  for (TransportMode mode : modes) {
+    ModeBaseline base;
+    base.mode = TransportModeName(mode);
+    // Ground truth of this mode.
+    ReferenceOptions ro;
+    ro.mode = mode;
+    ro.samples = c.reference_samples;
+    ro.bounces = c.bounces;
+    ro.seed = c.seed + 1000;
+    auto t0 = Clock::now();
+    const Reference reference = ComputeReference(mesh, env, ro);
+    base.reference_seconds = Since(t0);
+    base.reference_rms_error = reference.rms_error;
+    base.reference_rms_radiance = reference.rms_radiance;
+    base.reference_samples = c.reference_samples;
+    const Image8 reference_image = DrawVertexColors(mesh, ToFloat(reference.radiance), env, camera, picture);
+    const Scorer scorer{mesh, env, camera, picture, light, reference, reference_image};
+    char line[256];
+    std::snprintf(line, sizeof line, "report: %s reference, %d directions per vertex [%.2f s], own RMS error %.3g%%",
+                  base.mode.c_str(), c.reference_samples, base.reference_seconds,
+                  100.0 * reference.rms_error / std::max(reference.rms_radiance, 1e-300));
+    Summary(line);
+
+    TransportOptions to;
+    to.mode = mode;
+    to.lmax = c.max_lmax;
+    to.bounces = c.bounces;
+    to.seed = c.seed;
+    if (mode == TransportMode::kUnshadowed) {
+      SweepRow row;
+      row.mode = base.mode;
+      row.sampler = "closed-form";
+      const Transport t = Timed(mesh, to, row.seconds, row.directions);
+      scorer.Score(t, nullptr, row, c.max_lmax, data.rows);
+      data.baselines.push_back(base);
+      continue;
+    }
+    // The converged transport, and a half-size run to bound its own noise.
+    to.sampler = Sampler::kFibonacci;
+    to.samples = c.converged_samples;
+    int dirs = 0;
+    const Transport converged = Timed(mesh, to, base.converged_seconds, dirs);
+    base.converged_samples = c.converged_samples;
+    to.samples = c.converged_samples / 2;
+    to.seed = c.seed + 7;
+    double half_seconds = 0;
+    const Transport half = Timed(mesh, to, half_seconds, dirs);
+    base.converged_self_error =
+        CompareVertices(ShadeVertices(mesh, half, light), ToDouble(ShadeVertices(mesh, converged, light))).relative;
+    to.seed = c.seed;
+    std::snprintf(line, sizeof line, "report: %s converged transport, %d fibonacci directions [%.2f s]",
+                  base.mode.c_str(), c.converged_samples, base.converged_seconds);
+    Summary(line);
+    data.baselines.push_back(base);
+
+    for (Sampler s : {Sampler::kUniform, Sampler::kStratified, Sampler::kFibonacci}) {
+      for (int n = c.min_samples; n <= c.max_samples; n *= 2) {
+        to.sampler = s;
+        to.samples = n;
+        SweepRow row;
+        row.mode = base.mode;
+        row.sampler = SamplerName(s);
+        row.samples = n;
+        const Transport t = Timed(mesh, to, row.seconds, row.directions);
+        scorer.Score(t, &converged, row, c.max_lmax, data.rows);
+      }
+      Summary("report: " + base.mode + " " + SamplerName(s) + " swept");
+    }
+  }
+
+  // Light projection against cubemap resolution.
+  for (int size : c.face_sizes) {
+    const auto cube = CubemapFromFunction([&env](const glm::dvec3& d) { return env.Radiance(d); }, size);
+    LightRow row;
+    row.face_size = size;
+    const auto t0 = Clock::now();
+    const ShRgb projected = ProjectLight(*cube, c.max_lmax);
+    row.seconds = Since(t0);
+    row.coeff_error = RelativeL2(projected, light);
+    data.light.push_back(row);
+  }
+  return data;
+}
+
+}  // namespace prt

@@ -1,0 +1,68 @@
+// prt reference and prt report: the stability cases, the plot, and the files the commands write.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "app/stability.h"
+#include "core/atomic_file.h"
+#include "raster/plot.h"
+#include "tests/test_support.h"
+
+namespace {
+
+/// Count of pixels that are not pure white.
+std::size_t Inked(const prt::Image8& im) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < im.rgb.size(); i += 3) n += (im.rgb[i] != 255 || im.rgb[i + 1] != 255 || im.rgb[i + 2] != 255);
+  return n;
+}
+
+}  // namespace
+
+TEST_SUITE("app") {
+  TEST_CASE("stability: every stiff and extreme case passes and states its figure") {
+    const auto cases = prt::RunStabilityCases();
+    CHECK(cases.size() >= 16);
+    for (const auto& c : cases) {
+      INFO(c.name << ": " << c.figure << " (" << c.note << ")");
+      CHECK(c.pass);
+      CHECK(!c.checks.empty());
+    }
+    const std::string csv = prt::StabilityCsv(cases);
+    CHECK(csv.find("rotation_36000_frames") != std::string::npos);
+  }
+
+  TEST_CASE("plot: axes, lines and legend are drawn; points that log axes cannot show are skipped") {
+    prt::PlotSeries a{"a", {1e-3, 1e-2, 1e-1}, {1e-1, 1e-2, 1e-3}, prt::PlotColor(0), false};
+    prt::PlotSeries b{"b", {0.0, 1e-2, 1.0}, {1.0, -1.0, 1e-2}, prt::PlotColor(1), true};
+    prt::PlotOptions o;
+    o.title = "t", o.x_label = "x", o.y_label = "y";
+    const prt::Image8 im = prt::DrawLogLogPlot({a, b}, o);
+    CHECK(im.width == o.width);
+    CHECK(Inked(im) > 2000);
+    const prt::Image8 empty = prt::DrawLogLogPlot({}, o);
+    CHECK(Inked(empty) > 0);  // axes even without data
+  }
+
+  TEST_CASE("prt reference and prt report --stability write their files") {
+    const std::string dir = prt::test::ScratchDir("report_cli");
+    const auto ref = prt::test::RunPrt("reference --env furnace:0.5 --transport unshadowed --reference-samples 16 "
+                                       "--size 64x48 --quiet --out '" + dir + "/ref'");
+    if (!ref) {
+      MESSAGE("skipped: the prt binary is not known (PRT_BINARY)");
+      return;
+    }
+    CHECK(ref->exit_code == 0);
+    CHECK(std::filesystem::exists(dir + "/ref/reference.png"));
+    const std::string text = prt::ReadFile(dir + "/ref/reference.txt");
+    CHECK(text.find("\n33985\n") != std::string::npos);  // the demo scene's vertex count
+    const auto stab = prt::test::RunPrt("report --stability --quiet --out '" + dir + "/stab'");
+    REQUIRE(stab);
+    CHECK(stab->exit_code == 0);
+    CHECK(prt::ReadFile(dir + "/stab/stability.csv").find(",pass,") != std::string::npos);
+    const auto bad = prt::test::RunPrt("report --quick");
+    REQUIRE(bad);
+    CHECK(bad->exit_code == 2);  // --out is required
+  }
+}
