@@ -1,0 +1,27 @@
+// Fuzzes the option parser: the input is split at newlines into command-line tokens and read
+// as `prt render` reads them (Args, scene options, render options, Finish). Any tokens give
+// options or a UsageError/Error.
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/args.h"
+#include "app/render_options.h"
+#include "app/scene_options.h"
+#include "core/error.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  std::vector<std::string> tokens;
+  std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
+  for (std::string token; std::getline(in, token);) tokens.push_back(token);
+  try {
+    prt::Args args("render", tokens, prt::SceneFlags());
+    const prt::SceneOptions scene = prt::ReadSceneOptions(args);
+    const prt::RenderOptions render = prt::ReadRenderOptions(args, prt::RenderOptions{});
+    args.String("--cache");
+    args.Finish();
+    if (scene.lmax < 0 || render.frames < 1 || render.width < 1 || render.height < 1) __builtin_trap();
+  } catch (const prt::Error&) {
+  }
+  return 0;
+}
