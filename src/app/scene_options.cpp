@@ -1,5 +1,8 @@
 #include "app/scene_options.h"
 
+#include "app/report_auto_lmax.h"
+#include "env/load_environment.h"
+
 #include <cmath>
 
 #include "core/error.h"
@@ -15,7 +18,9 @@ const char* const kSceneOptionsHelp =
     "  --env ENV          cubemap folder (posx negx posy negy posz negz, jpg/png/hdr/exr), an\n"
     "                     equirectangular .hdr/.exr/.png/.jpg file, or a built-in: furnace[:C],\n"
     "                     sky[:sun=3,elevation=40,azimuth=35,radius=2] (default: sky)\n"
-    "  --lmax L           highest SH band, 0..64; (L+1)^2 coefficients (default 2: 9)\n"
+    "  --lmax L           highest SH band, 0..64; (L+1)^2 coefficients (default 2: 9); `auto`:\n"
+    "                     the smallest whose irradiance error is below --tolerance\n"
+    "  --tolerance X      relative error for --lmax auto, 1e-12..1 (default 0.01)\n"
     "  --transport MODE   unshadowed | shadowed | interreflection (default shadowed)\n"
     "  --samples N        directions per vertex (default 1024)\n"
     "  --sampler NAME     fibonacci | stratified | uniform (default fibonacci)\n"
@@ -34,7 +39,18 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
   SceneOptions o = d;
   o.mesh = args.String("--mesh", d.mesh);
   o.env = args.String("--env", d.env);
-  o.lmax = args.Int("--lmax", d.lmax, 0, kMaxLmax);
+  const std::string lmax_text = args.String("--lmax", std::to_string(d.lmax));
+  o.tolerance = args.Double("--tolerance", d.tolerance, 1e-12, 1.0);
+  if (lmax_text == "auto") {
+    o.lmax_auto = true;
+  } else {
+    const auto v = ParseNumber(lmax_text);
+    if (!v || *v != std::floor(*v) || *v < 0 || *v > kMaxLmax)
+      throw UsageError("--lmax: '" + lmax_text + "' is out of range (expected an integer from 0 to " +
+                           std::to_string(kMaxLmax) + ") or auto",
+                       args.command());
+    o.lmax = static_cast<int>(*v);
+  }
   o.transport = args.Choice("--transport", d.transport, {"unshadowed", "shadowed", "interreflection"});
   o.samples = args.Int("--samples", d.samples, 1, 1 << 24);
   o.sampler = args.Choice("--sampler", d.sampler, {"fibonacci", "stratified", "uniform"});
@@ -53,6 +69,12 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
   o.window = args.Choice("--window", d.window, {"none", "hann", "lanczos", "auto"});
   SetQuiet(args.Flag("--quiet"));
   SetThreadCount(o.threads);
+  if (o.lmax_auto) {
+    // Measured on the environment itself (loaded here once more: the commands load it again).
+    const AutoLmax choice = ChooseLmax(*LoadEnvironment(o.env, o.layout), o.tolerance, kMaxLmax);
+    o.lmax = choice.lmax;
+    Summary(choice.why);
+  }
   return o;
 }
 

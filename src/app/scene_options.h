@@ -29,6 +29,8 @@ struct SceneOptions {
   int threads = 0;                   ///< 0 = all cores
   CubeLayout layout = CubeLayout::kStandard;  ///< --games202-faces selects the course's
   std::string window = "none";       ///< none | hann | lanczos | auto
+  bool lmax_auto = false;            ///< --lmax auto: lmax chosen by --tolerance (report_auto_lmax.h)
+  double tolerance = 0.01;           ///< --tolerance: relative irradiance error for --lmax auto
 };
 
 /// The value-less flags of the scene options, plus `extra` (for the Args constructor).

@@ -4,7 +4,9 @@
 #include <filesystem>
 #include <string>
 
+#include "app/report_auto_lmax.h"
 #include "app/stability.h"
+#include "env/procedural.h"
 #include "core/atomic_file.h"
 #include "raster/plot.h"
 #include "tests/test_support.h"
@@ -31,6 +33,17 @@ TEST_SUITE("app") {
     }
     const std::string csv = prt::StabilityCsv(cases);
     CHECK(csv.find("rotation_36000_frames") != std::string::npos);
+  }
+
+  TEST_CASE("--lmax auto: the smallest band count whose irradiance error is within the tolerance") {
+    const auto furnace = prt::MakeFurnace(1.0);
+    CHECK(prt::ChooseLmax(*furnace, 1e-6, 64).lmax == 0);  // constant light: band 0 is all of it
+    const auto sky = prt::MakeSky(prt::SkyParams{});
+    const prt::AutoLmax loose = prt::ChooseLmax(*sky, 0.1, 64), tight = prt::ChooseLmax(*sky, 0.01, 64);
+    CHECK(loose.error <= 0.1);
+    CHECK(tight.error <= 0.01);
+    CHECK(tight.lmax > loose.lmax);
+    CHECK(prt::ChooseLmax(*sky, 0.01, tight.lmax - 1).error > 0.01);  // one band fewer is not enough
   }
 
   TEST_CASE("plot: axes, lines and legend are drawn; points that log axes cannot show are skipped") {
