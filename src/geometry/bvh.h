@@ -9,10 +9,14 @@
 /// triangle count); candidate planes are the borders of `bins` equal bins of the centroids'
 /// box on each axis. The builder sees only triangle boxes and centroids.
 ///
-/// Traversal: ordered (nearer child first) with the robust slab test of [3] (the far distance
-/// is enlarged by 2 gamma(3) so rounding never culls a box the ray truly touches), and the
-/// watertight triangle test of `triangle.h`. Fan traversal (`ray_fan.h`) traces many
-/// directions from one origin at once.
+/// Below a depth of 96 a node that SAH cannot split is halved at the median centroid of its
+/// longest axis, so leaves never exceed max_leaf_size and the depth stays below 128.
+///
+/// Traversal runs on a 4-wide tree collapsed from the binary one (`bvh4.h`, `bvh4_traverse.h`):
+/// ordered (nearer children first), with the robust slab test of [3] (the far distance is
+/// enlarged by 2 gamma(3) so rounding never culls a box the ray truly touches), and the
+/// watertight triangle test of `triangle.h` on four triangles at once. The fans (`ray_fan.h`)
+/// trace each of their directions with the per-direction constants computed once.
 ///
 /// References
 ///  [1] J. D. MacDonald, K. S. Booth, "Heuristics for ray tracing using space subdivision",
@@ -28,6 +32,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "geometry/bvh4.h"
 #include "geometry/mesh.h"
 #include "geometry/ray.h"
 
@@ -38,7 +43,7 @@ struct RayFan;
 /// Options of the BVH build; the defaults suit meshes of 1e3-1e6 triangles.
 struct BvhOptions {
   int bins = 16;                  ///< SAH candidate planes per axis are bin borders
-  int max_leaf_size = 4;          ///< a larger node is always split
+  int max_leaf_size = 4;          ///< a larger node is always split (clamped to 1..32)
   float traversal_cost = 1.0f;    ///< C_trav: cost of visiting a node, in triangle tests
   float intersection_cost = 1.0f; ///< C_isect: cost of one ray-triangle test
 };
@@ -79,13 +84,15 @@ class Bvh {
 
   const std::vector<BvhNode>& nodes() const { return nodes_; }
   const std::vector<std::uint32_t>& prim_indices() const { return prim_indices_; }
+  /// The 4-wide tree collapsed from nodes(), which every traversal runs on.
+  const Bvh4& wide() const { return wide_; }
   /// Largest side of the root box (0 if empty): the `scene_scale` of OffsetRayOrigin.
   float SceneScale() const;
 
  private:
   std::vector<BvhNode> nodes_;                         // nodes_[0] is the root
   std::vector<std::uint32_t> prim_indices_;            // triangle ids in leaf order
-  std::vector<std::array<glm::vec3, 3>> corners_;      // corners_[i] of prim_indices_[i]
+  Bvh4 wide_;                                          // what traversal runs on (bvh4.h)
 };
 
 /// Surface area of a box, 0 for an empty one.

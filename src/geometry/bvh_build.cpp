@@ -10,8 +10,9 @@
 namespace prt {
 namespace {
 
-// Deeper trees are made leaves so the traversal stacks (kMaxDepth + 1 entries) never overflow.
-constexpr int kMaxDepth = 120;
+// From this depth on, nodes are halved at the median centroid instead of by SAH, which ends
+// within 32 more levels: the depth stays below 128 and leaves within max_leaf_size.
+constexpr int kSahDepth = 96;
 
 struct Builder {
   const BvhOptions& opt;
@@ -41,7 +42,8 @@ struct Builder {
     nodes[node].lo = box.lo;
     nodes[node].hi = box.hi;
     const std::uint32_t n = end - begin;
-    if (n <= 1 || depth >= kMaxDepth) return MakeLeaf(node, begin, end);
+    if (n <= 1) return MakeLeaf(node, begin, end);
+    if (depth >= kSahDepth) return SplitAtMedian(node, begin, end, depth, cbox);
 
     // Find the cheapest bin border over the three axes.
     const int nb = opt.bins;
@@ -64,9 +66,9 @@ struct Builder {
       std::vector<float> right_cost(nb, 0.0f);
       Bounds3 acc;
       std::uint32_t count = 0;
+      // (An empty bin's box is inverted: extending by its corners would blow `acc` up.)
       for (int b = nb - 1; b > 0; --b) {
-        acc.Extend(bin_box[b].lo);
-        acc.Extend(bin_box[b].hi);
+        if (bin_count[b] > 0) acc.Extend(bin_box[b].lo), acc.Extend(bin_box[b].hi);
         count += bin_count[b];
         right_cost[b] = count == 0 ? 0.0f : BoxArea(acc.lo, acc.hi) * static_cast<float>(count);
       }
@@ -74,8 +76,7 @@ struct Builder {
       acc = Bounds3();
       count = 0;
       for (int b = 1; b < nb; ++b) {
-        acc.Extend(bin_box[b - 1].lo);
-        acc.Extend(bin_box[b - 1].hi);
+        if (bin_count[b - 1] > 0) acc.Extend(bin_box[b - 1].lo), acc.Extend(bin_box[b - 1].hi);
         count += bin_count[b - 1];
         if (count == 0 || count == n) continue;
         const float cost = opt.traversal_cost + opt.intersection_cost *
@@ -102,6 +103,11 @@ struct Builder {
       mid = begin + n / 2;  // all centroids coincide: any halving is as good as another
     }
 
+    Children(node, begin, mid, end, depth);
+  }
+
+  // Makes `node` interior with children [begin, mid) and [mid, end).
+  void Children(std::uint32_t node, std::uint32_t begin, std::uint32_t mid, std::uint32_t end, int depth) {
     const auto left = static_cast<std::uint32_t>(nodes.size());
     nodes.push_back(BvhNode{});
     nodes.push_back(BvhNode{});
@@ -109,6 +115,21 @@ struct Builder {
     nodes[node].count = 0;
     Split(left, begin, mid, depth + 1);
     Split(left + 1, mid, end, depth + 1);
+  }
+
+  // Past kSahDepth: a leaf when small enough, else halves at the median along the longest axis.
+  void SplitAtMedian(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth,
+                     const Bounds3& cbox) {
+    if (end - begin <= static_cast<std::uint32_t>(opt.max_leaf_size)) return MakeLeaf(node, begin, end);
+    const glm::vec3 e = cbox.hi - cbox.lo;
+    const int axis = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
+    const std::uint32_t mid = begin + (end - begin) / 2;
+    std::nth_element(prims.data() + begin, prims.data() + mid, prims.data() + end,
+                     [&](std::uint32_t a, std::uint32_t b) {
+                       return centroids[a][axis] < centroids[b][axis] ||
+                              (centroids[a][axis] == centroids[b][axis] && a < b);
+                     });
+    Children(node, begin, mid, end, depth);
   }
 };
 
@@ -125,7 +146,7 @@ Bvh Bvh::Build(const Mesh& mesh, const BvhOptions& options) {
   if (n == 0) return bvh;
   BvhOptions opt = options;
   opt.bins = std::max(2, opt.bins);
-  opt.max_leaf_size = std::max(1, opt.max_leaf_size);
+  opt.max_leaf_size = std::clamp(opt.max_leaf_size, 1, static_cast<int>(4 * kBvh4MaxBlocks));
   Builder b{opt, {}, {}, bvh.prim_indices_, bvh.nodes_};
   b.boxes.resize(n);
   b.centroids.resize(n);
@@ -138,12 +159,13 @@ Bvh Bvh::Build(const Mesh& mesh, const BvhOptions& options) {
   bvh.nodes_.reserve(2 * n);
   bvh.nodes_.push_back(BvhNode{});
   b.Split(0, 0, static_cast<std::uint32_t>(n), 0);
-  // Corners in leaf order, so a leaf's triangles are contiguous in memory.
-  bvh.corners_.resize(n);
+  // Corners in leaf order, then the 4-wide tree that stores them in blocks of four.
+  std::vector<std::array<glm::vec3, 3>> corners(n);
   for (std::size_t i = 0; i < n; ++i) {
     const auto& tri = mesh.triangles[bvh.prim_indices_[i]];
-    bvh.corners_[i] = {mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]};
+    corners[i] = {mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]};
   }
+  bvh.wide_ = CollapseToBvh4(bvh.nodes_, bvh.prim_indices_, corners);
   return bvh;
 }
 

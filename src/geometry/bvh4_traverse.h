@@ -1,0 +1,194 @@
+#pragma once
+/// \file
+/// Single-ray traversal of the 4-wide BVH (internal to src/geometry; used by Bvh::Occluded,
+/// Bvh::Intersect and the fans). Per node, one SIMD slab test of the four child boxes [1]; the
+/// children the ray enters are visited nearest first, the others pushed with their entry
+/// distance [2]. Per leaf block, the watertight test of `triangle.h` runs on four triangles at
+/// once with the same operations in the same order as the scalar test, so every hit, miss,
+/// distance and barycentric is bit-identical to IntersectTriangle; lanes with an edge function
+/// of exactly 0 are redone by the scalar test, which refines them in double [3].
+///
+/// Any hit stops at the first hit. Closest hit shrinks tmax at each hit and skips popped
+/// entries that start beyond it; among triangles of one block at the same distance the first
+/// lane wins.
+///
+/// References
+///  [1] I. Wald, C. Benthin, S. Boulos, "Getting Rid of Packets: Efficient SIMD Single-Ray
+///      Traversal using Multi-branching BVHs", IEEE Symposium on Interactive Ray Tracing, 2008.
+///  [2] T. Ize, "Robust BVH Ray Traversal", Journal of Computer Graphics Techniques 2(2), 2013.
+///  [3] S. Woop, C. Benthin, I. Wald, "Watertight Ray/Triangle Intersection", JCGT 2(1), 2013.
+
+#include "geometry/box_test.h"
+#include "geometry/bvh4.h"
+#include "geometry/bvh4_simd.h"
+#include "geometry/ray.h"
+#include "geometry/triangle.h"
+
+namespace prt {
+
+/// Everything per ray that traversal needs, computed once.
+struct Ray4 {
+  glm::vec3 origin;
+  float org[3];          // origin by axis
+  float inv[3];          // SafeInverse(dir)
+  int near[3], far[3];   // plane rows of Bvh4Node entered and left on each axis
+  ShearedRay sr;         // watertight test constants
+  float tmin;
+};
+
+/// From the direction's inverse and shear (as the fan precomputes them).
+inline Ray4 MakeRay4(const glm::vec3& origin, const glm::vec3& inv, const ShearedRay& sr, float tmin) {
+  Ray4 r;
+  r.origin = origin;
+  for (int a = 0; a < 3; ++a) {
+    r.org[a] = origin[a];
+    r.inv[a] = inv[a];
+    // Rounding is monotonic, so for inv >= 0 the lo plane gives the smaller slab distance.
+    r.near[a] = std::signbit(inv[a]) ? 3 + a : a;
+    r.far[a] = std::signbit(inv[a]) ? a : 3 + a;
+  }
+  r.sr = sr;
+  r.tmin = tmin;
+  return r;
+}
+
+namespace bvh4 {
+
+using lanes::V4;
+
+constexpr int kStackSize = 512;  // > 3 x the build's depth bound (128) + 4
+
+/// Lanes whose child box the ray enters within (tmin, tmax); their entry distances in tnear.
+PRT_LANES std::uint32_t BoxHits(const Bvh4Node& n, const Ray4& r, float tmax, V4& tnear) {
+  using namespace lanes;
+  const V4 nx = (Load(n.planes[r.near[0]]) - r.org[0]) * r.inv[0];
+  const V4 ny = (Load(n.planes[r.near[1]]) - r.org[1]) * r.inv[1];
+  const V4 nz = (Load(n.planes[r.near[2]]) - r.org[2]) * r.inv[2];
+  const V4 fx = (Load(n.planes[r.far[0]]) - r.org[0]) * r.inv[0];
+  const V4 fy = (Load(n.planes[r.far[1]]) - r.org[1]) * r.inv[1];
+  const V4 fz = (Load(n.planes[r.far[2]]) - r.org[2]) * r.inv[2];
+  tnear = Max(Max(nx, ny), Max(nz, Splat(r.tmin)));
+  const V4 tfar = Min(Min(fx, fy), Min(fz, Splat(tmax))) * kSlabFarScale;
+  return Bits(tnear <= tfar);
+}
+
+/// Watertight test of one ray against the four triangles of `b`: the lanes hit within
+/// (tmin, tmax), and when `closest`, their t, u, v.
+template <bool closest>
+PRT_LANES std::uint32_t BlockHits(const TriangleBlock& b, const Ray4& r, float tmax, V4& t, V4& u, V4& v) {
+  using namespace lanes;
+  const int kx = r.sr.kx, ky = r.sr.ky, kz = r.sr.kz;
+  // Corners relative to the origin, sheared so the ray is the +z axis.
+  const V4 Az = Load(b.p[0][kz]) - r.org[kz], Bz = Load(b.p[1][kz]) - r.org[kz], Cz = Load(b.p[2][kz]) - r.org[kz];
+  const V4 ax = (Load(b.p[0][kx]) - r.org[kx]) - r.sr.sx * Az, ay = (Load(b.p[0][ky]) - r.org[ky]) - r.sr.sy * Az;
+  const V4 bx = (Load(b.p[1][kx]) - r.org[kx]) - r.sr.sx * Bz, by = (Load(b.p[1][ky]) - r.org[ky]) - r.sr.sy * Bz;
+  const V4 cx = (Load(b.p[2][kx]) - r.org[kx]) - r.sr.sx * Cz, cy = (Load(b.p[2][ky]) - r.org[ky]) - r.sr.sy * Cz;
+  const V4 e0 = cx * by - cy * bx;
+  const V4 e1 = ax * cy - ay * cx;
+  const V4 e2 = bx * ay - by * ax;
+  const V4 zero = Splat(0.0f);
+  const auto outside = ((e0 < zero) | (e1 < zero) | (e2 < zero)) & ((e0 > zero) | (e1 > zero) | (e2 > zero));
+  std::uint32_t inside = Bits(~outside) & 0xFu;
+  const std::uint32_t exact = Bits((e0 == zero) | (e1 == zero) | (e2 == zero));
+  if ((inside | exact) == 0) return 0;  // the common case: the ray passes beside all four
+  const V4 det = e0 + e1 + e2;
+  const V4 T = e0 * (r.sr.sz * Az) + e1 * (r.sr.sz * Bz) + e2 * (r.sr.sz * Cz);
+  const V4 lo = r.tmin * det, hi = tmax * det;
+  const auto out_pos = (T <= lo) | (T >= hi), out_neg = (T >= lo) | (T <= hi);
+  const auto out_of_range = (det > zero) ? out_pos : out_neg;
+  std::uint32_t hit = inside & Bits((det != zero) & ~out_of_range) & ~exact;
+  if constexpr (closest) {
+    const V4 inv_det = 1.0f / det;
+    t = T * inv_det;
+    u = e1 * inv_det;
+    v = e2 * inv_det;
+  }
+  // Lanes with an edge function of exactly 0: the scalar test, refined in double.
+  for (std::uint32_t m = exact; m != 0; m &= m - 1) {
+    const int l = __builtin_ctz(m);
+    const glm::vec3 p0(b.p[0][0][l], b.p[0][1][l], b.p[0][2][l]);
+    const glm::vec3 p1(b.p[1][0][l], b.p[1][1][l], b.p[1][2][l]);
+    const glm::vec3 p2(b.p[2][0][l], b.p[2][1][l], b.p[2][2][l]);
+    float tl, ul, vl;
+    if (!IntersectTriangle(r.origin, r.sr, p0, p1, p2, r.tmin, tmax, tl, ul, vl)) continue;
+    hit |= 1u << l;
+    if constexpr (closest) t[l] = tl, u[l] = ul, v[l] = vl;
+  }
+  return hit;
+}
+
+struct Entry {
+  Bvh4Ref ref;
+  float tnear;
+};
+
+/// Traces one ray through `bvh` (non-empty). Any hit: returns whether the ray hits a triangle
+/// in (tmin, tmax). Closest: also writes the nearest hit to `best`.
+template <bool closest>
+PRT_LANES bool Trace(const Bvh4& bvh, const Ray4& r, float tmax, Hit& best) {
+  Entry stack[kStackSize];
+  int top = 0;
+  Bvh4Ref cur = 0;
+  bool found = false;
+  const Bvh4Node* nodes = bvh.nodes.data();
+  for (;;) {
+    // Down the tree: nearest entered child next, the others on the stack (farthest deepest).
+    while (!IsLeaf(cur)) {
+      V4 tn;
+      std::uint32_t mask = BoxHits(nodes[cur], r, tmax, tn);
+      const Bvh4Ref* child = nodes[cur].child;
+      if (mask == 0) goto pop;
+      int first = __builtin_ctz(mask);
+      mask &= mask - 1;
+      if (mask == 0) {
+        cur = child[first];
+        continue;
+      }
+      // Two or more: insertion sort by entry distance, descending, onto the stack.
+      Entry hits[4];
+      int n = 0;
+      for (std::uint32_t m = mask | (1u << first); m != 0; m &= m - 1) {
+        const int l = __builtin_ctz(m);
+        Entry e{child[l], tn[l]};
+        int j = n++;
+        for (; j > 0 && hits[j - 1].tnear < e.tnear; --j) hits[j] = hits[j - 1];
+        hits[j] = e;
+      }
+      for (int i = 0; i < n - 1; ++i) stack[top++] = hits[i];
+      cur = hits[n - 1].ref;
+    }
+    // A leaf: its blocks.
+    {
+      const TriangleBlock* b = bvh.blocks.data() + LeafFirstBlock(cur);
+      const std::uint32_t count = LeafBlockCount(cur);
+      for (std::uint32_t k = 0; k < count; ++k) {
+        V4 t, u, v;
+        const std::uint32_t hit = BlockHits<closest>(b[k], r, tmax, t, u, v);
+        if (hit == 0) continue;
+        if constexpr (!closest) {
+          return true;
+        } else {
+          int lbest = __builtin_ctz(hit);
+          for (std::uint32_t m = hit & (hit - 1); m != 0; m &= m - 1) {
+            const int l = __builtin_ctz(m);
+            if (t[l] < t[lbest]) lbest = l;
+          }
+          tmax = t[lbest];
+          best = Hit{t[lbest], b[k].id[lbest], u[lbest], v[lbest]};
+          found = true;
+        }
+      }
+    }
+  pop:
+    for (;;) {
+      if (top == 0) return found;
+      const Entry e = stack[--top];
+      if (closest && e.tnear > tmax * kSlabFarScale) continue;
+      cur = e.ref;
+      break;
+    }
+  }
+}
+
+}  // namespace bvh4
+}  // namespace prt
