@@ -45,7 +45,7 @@ using Bvh4Ref = std::uint32_t;
 inline constexpr Bvh4Ref kBvh4LeafBit = 0x80000000u;
 inline constexpr int kBvh4CountShift = 28;            // bits 28..30: block count - 1
 inline constexpr std::uint32_t kBvh4MaxBlocks = 8;    // so leaves hold at most 32 triangles
-inline constexpr Bvh4Ref kBvh4Empty = kBvh4LeafBit;   // an unused slot (its box is never hit)
+inline constexpr Bvh4Ref kBvh4Empty = 0xFFFFFFFFu;  // an unused slot (its box is never hit)
 
 inline bool IsLeaf(Bvh4Ref r) { return (r & kBvh4LeafBit) != 0; }
 inline std::uint32_t LeafFirstBlock(Bvh4Ref r) { return r & ((1u << kBvh4CountShift) - 1u); }

@@ -117,6 +117,15 @@ PRT_LANES std::uint32_t BlockHits(const TriangleBlock& b, const Ray4& r, float t
   return hit;
 }
 
+/// Asks for the cache lines of child `ref` (a node's two, a leaf's first block's three).
+PRT_LANES void Prefetch(const Bvh4& bvh, Bvh4Ref ref) {
+  const char* p = IsLeaf(ref) ? reinterpret_cast<const char*>(bvh.blocks.data() + LeafFirstBlock(ref))
+                              : reinterpret_cast<const char*>(bvh.nodes.data() + ref);
+  __builtin_prefetch(p);
+  __builtin_prefetch(p + 64);
+  if (IsLeaf(ref)) __builtin_prefetch(p + 128);
+}
+
 struct Entry {
   Bvh4Ref ref;
   float tnear;
@@ -138,10 +147,26 @@ PRT_LANES bool Trace(const Bvh4& bvh, const Ray4& r, float tmax, Hit& best) {
       std::uint32_t mask = BoxHits(nodes[cur], r, tmax, tn);
       const Bvh4Ref* child = nodes[cur].child;
       if (mask == 0) goto pop;
+      // Start fetching every entered child now; the sort below hides part of the latency.
+      for (std::uint32_t m = mask; m != 0; m &= m - 1) Prefetch(bvh, child[__builtin_ctz(m)]);
       int first = __builtin_ctz(mask);
       mask &= mask - 1;
       if (mask == 0) {
         cur = child[first];
+        continue;
+      }
+      if constexpr (!closest) {
+        // Any hit: only the nearest comes next; the order of the rest hardly matters.
+        int nearest = first;
+        for (std::uint32_t m = mask; m != 0; m &= m - 1) {
+          const int l = __builtin_ctz(m);
+          if (tn[l] < tn[nearest]) nearest = l;
+        }
+        for (std::uint32_t m = mask | (1u << first); m != 0; m &= m - 1) {
+          const int l = __builtin_ctz(m);
+          if (l != nearest) stack[top++] = Entry{child[l], tn[l]};
+        }
+        cur = child[nearest];
         continue;
       }
       // Two or more: insertion sort by entry distance, descending, onto the stack.
