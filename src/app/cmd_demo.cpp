@@ -17,10 +17,7 @@ int RunDemo(const std::vector<std::string>& tokens) {
   scene_defaults.transport = "interreflection";
   scene_defaults.bounces = 1;
   scene_defaults.lmax = 4;
-  // 256 directions from one shared set: its error is smooth from vertex to vertex, where
-  // independent sets would show as grain at this sample count.
-  scene_defaults.samples = 256;
-  scene_defaults.direction_sets = 1;
+  scene_defaults.samples = 1024;
   RenderOptions render_defaults;
   render_defaults.out = "out/demo";
   // A three-quarter view of the knot with the horizon in frame, and a filmic tone curve for
