@@ -17,6 +17,7 @@
 #include "sh/basis.h"
 #include "sh/quadrature.h"
 #include "sh/rotation.h"
+#include "app/stability_inputs.h"
 #include "sh/window.h"
 #include "sh/zonal.h"
 
@@ -237,6 +238,9 @@ std::vector<StabilityCase> RunStabilityCases() {
   SceneScale(out);
   LongRotation(out);
   Accumulation(out);
+  ExtremeMeshes(out);
+  DeepConcavity(out);
+  BadTexels(out);
   return out;
 }
 

@@ -11,7 +11,9 @@
 ///   - 36000 frames of rotation: the last frame rebuilt from its absolute angle against the
 ///     directly rotated coefficients, and what accumulating per-frame steps in float gives;
 ///   - 10^6 terms of a Monte Carlo transfer estimate summed naively in float, naively in double
-///     and compensated (Neumaier), each against a long-double sum of the same terms [2].
+///     and compensated (Neumaier), each against a long-double sum of the same terms [2];
+///   - awkward inputs (stability_inputs.h): extreme meshes, albedo 0.99 with 64 bounces in a
+///     deep well, NaN/Inf/negative/1e30 texels.
 ///
 /// References
 /// [1] Atkinson, Han, "Spherical Harmonics and Approximations on the Unit Sphere", 2012, 5.2.
