@@ -1,3 +1,5 @@
+#include <sys/resource.h>
+
 #include <map>
 #include <set>
 
@@ -11,6 +13,7 @@ const char* const kBenchHelp =
     "usage: prt bench WHAT [options]\n"
     "  WHAT is one of: light, bvh, raster, transport, all.\n"
     "  Prints key=value lines; comparisons end with ratio_<what>=<x>. Times are medians.\n"
+    "  The last line, peak_memory_mib=, is the process's peak resident memory.\n"
     "  --runs N        timed runs per measurement, median reported (default 5; transport 3)\n"
     "  --threads N     threads for the multi-threaded measurements (default: all)\n"
     "  --mesh PATH     (bvh, transport) also measure this OBJ file\n"
@@ -36,6 +39,13 @@ const std::map<std::string, Bench>& Benches() {
   return benches;
 }
 
+/// Peak resident memory of this process so far, in MiB (Linux reports ru_maxrss in KiB).
+double PeakMemoryMiB() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.0;
+}
+
 }  // namespace
 
 int RunBench(const std::vector<std::string>& tokens) {
@@ -50,7 +60,9 @@ int RunBench(const std::vector<std::string>& tokens) {
     Args args("bench", tokens);
     args.TakePositionals();
     args.Allow(it->second.options);
-    return it->second.run(args);
+    const int rc = it->second.run(args);
+    bench::Print("peak_memory_mib", PeakMemoryMiB());
+    return rc;
   }
   // all: every option must mean something to at least one benchmark; each gets what it reads.
   std::set<std::string> any;
@@ -63,6 +75,7 @@ int RunBench(const std::vector<std::string>& tokens) {
     args.Allow(any);
     rc |= Benches().at(name).run(args);
   }
+  bench::Print("peak_memory_mib", PeakMemoryMiB());
   return rc;
 }
 
