@@ -120,7 +120,7 @@ void BenchMesh(const std::string& tag, const Mesh& mesh, int runs, int threads) 
   const std::vector<glm::vec3> dirs = Fibonacci(kDirections);
   const RayFan fan = MakeRayFan(dirs);
   const Workload w = MakeWorkload(mesh, dirs, bvh.SceneScale());
-  Print(tag + "_bvh4_nodes", static_cast<double>(bvh.wide().nodes.size()));
+  Print(tag + "_wide_nodes", static_cast<double>(bvh.wide().nodes.size()));
   Print(tag + "_rays", static_cast<double>(w.rays));
   const double mrays = static_cast<double>(w.rays) * 1e-6;
   const float inf = std::numeric_limits<float>::infinity();

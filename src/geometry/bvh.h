@@ -12,10 +12,10 @@
 /// Below a depth of 96 a node that SAH cannot split is halved at the median centroid of its
 /// longest axis, so leaves never exceed max_leaf_size and the depth stays below 128.
 ///
-/// Traversal runs on a 4-wide tree collapsed from the binary one (`bvh4.h`, `bvh4_traverse.h`):
-/// ordered (nearer children first), with the robust slab test of [3] (the far distance is
-/// enlarged by 2 gamma(3) so rounding never culls a box the ray truly touches), and the
-/// watertight triangle test of `triangle.h` on four triangles at once. The fans (`ray_fan.h`)
+/// Traversal runs on an 8-wide tree collapsed from the binary one (`bvh_wide.h`,
+/// `bvh_wide_traverse.h`): ordered (nearer children first), with the robust slab test of [3]
+/// (the far distance is enlarged by 2 gamma(3) so rounding never culls a box the ray truly
+/// touches), and the watertight triangle test of `triangle.h` on eight triangles at once. The fans (`ray_fan.h`)
 /// trace each of their directions with the per-direction constants computed once.
 ///
 /// References
@@ -32,7 +32,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "geometry/bvh4.h"
+#include "geometry/bvh_wide.h"
 #include "geometry/mesh.h"
 #include "geometry/ray.h"
 
@@ -43,11 +43,12 @@ struct RayFan;
 /// Options of the BVH build; the defaults suit meshes of 1e3-1e6 triangles.
 struct BvhOptions {
   int bins = 16;                  ///< SAH candidate planes per axis are bin borders
-  int max_leaf_size = 8;          ///< a larger node is always split (clamped to 1..32)
+  int max_leaf_size = 8;          ///< a larger node is always split (clamped to 1..64)
   float traversal_cost = 1.0f;    ///< C_trav: cost of visiting a node
-  /// C_isect: cost of one ray-triangle test. Traversal tests four triangles with one SIMD
-  /// block test that costs about one node visit, hence 1/4 (measured best of 1, 1/2, 1/4 with
-  /// leaves of 4 and 8 on the PRT workload: knot and mary, 10-30 % fewer node visits).
+  /// C_isect: cost of one ray-triangle test. Traversal tests a block of triangles with one SIMD
+  /// test that costs about one node visit, hence well below 1. Measured on the PRT workload
+  /// (knot, 1 thread, occlusion): 1/4 with leaves of 8 (one block) is the fastest of
+  /// 1/8, 1/4, 1/2 with leaves of 4, 8 and 16, by 3-20 %.
   float intersection_cost = 0.25f;
 };
 
@@ -87,15 +88,15 @@ class Bvh {
 
   const std::vector<BvhNode>& nodes() const { return nodes_; }
   const std::vector<std::uint32_t>& prim_indices() const { return prim_indices_; }
-  /// The 4-wide tree collapsed from nodes(), which every traversal runs on.
-  const Bvh4& wide() const { return wide_; }
+  /// The 8-wide tree collapsed from nodes(), which every traversal runs on.
+  const WideBvh& wide() const { return wide_; }
   /// Largest side of the root box (0 if empty): the `scene_scale` of OffsetRayOrigin.
   float SceneScale() const;
 
  private:
   std::vector<BvhNode> nodes_;                         // nodes_[0] is the root
   std::vector<std::uint32_t> prim_indices_;            // triangle ids in leaf order
-  Bvh4 wide_;                                          // what traversal runs on (bvh4.h)
+  WideBvh wide_;                                       // what traversal runs on (bvh_wide.h)
 };
 
 /// Surface area of a box, 0 for an empty one.

@@ -146,7 +146,7 @@ Bvh Bvh::Build(const Mesh& mesh, const BvhOptions& options) {
   if (n == 0) return bvh;
   BvhOptions opt = options;
   opt.bins = std::max(2, opt.bins);
-  opt.max_leaf_size = std::clamp(opt.max_leaf_size, 1, static_cast<int>(4 * kBvh4MaxBlocks));
+  opt.max_leaf_size = std::clamp(opt.max_leaf_size, 1, static_cast<int>(kBlockWidth * kWideMaxBlocks));
   Builder b{opt, {}, {}, bvh.prim_indices_, bvh.nodes_};
   b.boxes.resize(n);
   b.centroids.resize(n);
@@ -159,13 +159,13 @@ Bvh Bvh::Build(const Mesh& mesh, const BvhOptions& options) {
   bvh.nodes_.reserve(2 * n);
   bvh.nodes_.push_back(BvhNode{});
   b.Split(0, 0, static_cast<std::uint32_t>(n), 0);
-  // Corners in leaf order, then the 4-wide tree that stores them in blocks of four.
+  // Corners in leaf order, then the wide tree that stores them in blocks (bvh_wide.h).
   std::vector<std::array<glm::vec3, 3>> corners(n);
   for (std::size_t i = 0; i < n; ++i) {
     const auto& tri = mesh.triangles[bvh.prim_indices_[i]];
     corners[i] = {mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]};
   }
-  bvh.wide_ = CollapseToBvh4(bvh.nodes_, bvh.prim_indices_, corners);
+  bvh.wide_ = CollapseToWide(bvh.nodes_, bvh.prim_indices_, corners);
   return bvh;
 }
 

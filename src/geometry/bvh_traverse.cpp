@@ -1,22 +1,29 @@
 // Single-ray traversal of Bvh: any hit (Occluded) and closest hit (Intersect), both on the
-// 4-wide tree (bvh4_traverse.h).
+// 8-wide tree (bvh_wide_traverse.h), compiled for AVX2 and for the baseline (core/simd.h).
+#include "core/simd.h"
 #include "geometry/bvh.h"
-#include "geometry/bvh4_traverse.h"
+#include "geometry/bvh_wide_traverse.h"
 
 namespace prt {
+namespace {
+
+PRT_VECTORIZED bool TraceOne(const WideBvh& bvh, const Ray& ray, bool closest, Hit& best) {
+  const WideRay r = MakeWideRay(ray.origin, SafeInverse(ray.dir), MakeShearedRay(ray.dir), ray.tmin);
+  return closest ? wide::Trace<true>(bvh, r, ray.tmax, best) : wide::Trace<false>(bvh, r, ray.tmax, best);
+}
+
+}  // namespace
 
 bool Bvh::Occluded(const Ray& ray) const {
   if (wide_.nodes.empty()) return false;
-  const Ray4 r = MakeRay4(ray.origin, SafeInverse(ray.dir), MakeShearedRay(ray.dir), ray.tmin);
   Hit unused;
-  return bvh4::Trace<false>(wide_, r, ray.tmax, unused);
+  return TraceOne(wide_, ray, false, unused);
 }
 
 std::optional<Hit> Bvh::Intersect(const Ray& ray) const {
   if (wide_.nodes.empty()) return std::nullopt;
-  const Ray4 r = MakeRay4(ray.origin, SafeInverse(ray.dir), MakeShearedRay(ray.dir), ray.tmin);
   Hit best;
-  if (!bvh4::Trace<true>(wide_, r, ray.tmax, best)) return std::nullopt;
+  if (!TraceOne(wide_, ray, true, best)) return std::nullopt;
   return best;
 }
 

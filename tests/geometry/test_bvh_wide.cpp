@@ -1,6 +1,7 @@
-// The 4-wide tree that traversal runs on: its structure, and agreement with brute force for
-// every leaf size (1, 2 and 8 blocks per leaf) and for a pile of coincident triangles, which
-// SAH cannot split (the median fallback below depth 96 must keep the leaves small).
+// The 8-wide tree that traversal runs on: its structure, and agreement with brute force for
+// leaves of one block (1 and 8 triangles), three blocks (20) and the most blocks (64), and for
+// a pile of coincident triangles, which SAH cannot split (the median fallback below depth 96
+// must keep the leaves small).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -17,20 +18,20 @@ namespace prt {
 constexpr double kTieTolerance = 1e-6;
 
 TEST_SUITE("geometry") {
-  TEST_CASE("bvh4: every triangle in a leaf block, child boxes inside their binary parents' root") {
+  TEST_CASE("wide bvh: every triangle in a leaf block, child boxes inside their binary parents' root") {
     const Mesh m = MakeTorusKnot(2, 3, 0.16f, 128, 16);
-    for (const int leaf : {1, 4, 8, 32}) {
+    for (const int leaf : {1, 8, 20, 64}) {
       CAPTURE(leaf);
       BvhOptions opt;
       opt.max_leaf_size = leaf;
       const Bvh bvh = Bvh::Build(m, opt);
-      const Bvh4& w = bvh.wide();
+      const WideBvh& w = bvh.wide();
       std::vector<int> seen(m.triangle_count(), 0);
       int outside_root = 0;
       const BvhNode& root = bvh.nodes()[0];
-      for (const Bvh4Node& n : w.nodes) {
-        for (int c = 0; c < 4; ++c) {
-          if (n.child[c] == kBvh4Empty) continue;
+      for (const WideNode& n : w.nodes) {
+        for (int c = 0; c < kBvhWidth; ++c) {
+          if (n.child[c] == kWideEmpty) continue;
           for (int a = 0; a < 3; ++a)
             outside_root += (n.planes[a][c] < root.lo[a] || n.planes[3 + a][c] > root.hi[a]) ? 1 : 0;
           if (!IsLeaf(n.child[c])) continue;
@@ -49,12 +50,13 @@ TEST_SUITE("geometry") {
     }
   }
 
-  TEST_CASE("bvh4: leaf sizes 1, 8 and a pile of coincident triangles agree with brute force") {
+  TEST_CASE("wide bvh: leaf sizes 1, 20, 64 and a pile of coincident triangles agree with brute force") {
     Mesh pile = MakeSphere(6, 1.0f);
     const Mesh one = pile;
     for (int k = 0; k < 60; ++k) AppendMesh(pile, one);  // 61 copies of every triangle
     std::vector<std::pair<Mesh, int>> cases = {{MakeTorusKnot(2, 3, 0.16f, 96, 12), 1},
-                                               {MakeTorusKnot(2, 3, 0.16f, 96, 12), 8},
+                                               {MakeTorusKnot(2, 3, 0.16f, 96, 12), 20},
+                                               {MakeTorusKnot(2, 3, 0.16f, 96, 12), 64},
                                                {pile, 4}};
     for (const auto& [mesh, leaf] : cases) {
       CAPTURE(leaf);

@@ -1,9 +1,9 @@
 #pragma once
 /// \file
-/// Single-ray traversal of the 4-wide BVH (internal to src/geometry; used by Bvh::Occluded,
-/// Bvh::Intersect and the fans). Per node, one SIMD slab test of the four child boxes [1]; the
+/// Single-ray traversal of the 8-wide BVH (internal to src/geometry; used by Bvh::Occluded,
+/// Bvh::Intersect and the fans). Per node, one SIMD slab test of the eight child boxes [1]; the
 /// children the ray enters are visited nearest first, the others pushed with their entry
-/// distance [2]. Per leaf block, the watertight test of `triangle.h` runs on four triangles at
+/// distance [2]. Per leaf block, the watertight test of `triangle.h` runs on eight triangles at
 /// once with the same operations in the same order as the scalar test, so every hit, miss,
 /// distance and barycentric is bit-identical to IntersectTriangle; lanes with an edge function
 /// of exactly 0 are redone by the scalar test, which refines them in double [3].
@@ -19,26 +19,26 @@
 ///  [3] S. Woop, C. Benthin, I. Wald, "Watertight Ray/Triangle Intersection", JCGT 2(1), 2013.
 
 #include "geometry/box_test.h"
-#include "geometry/bvh4.h"
-#include "geometry/bvh4_simd.h"
+#include "geometry/bvh_wide.h"
+#include "geometry/lanes.h"
 #include "geometry/ray.h"
 #include "geometry/triangle.h"
 
 namespace prt {
 
 /// Everything per ray that traversal needs, computed once.
-struct Ray4 {
+struct WideRay {
   glm::vec3 origin;
   float org[3];          // origin by axis
   float inv[3];          // SafeInverse(dir)
-  int near[3], far[3];   // plane rows of Bvh4Node entered and left on each axis
+  int near[3], far[3];   // plane rows of WideNode entered and left on each axis
   ShearedRay sr;         // watertight test constants
   float tmin;
 };
 
 /// From the direction's inverse and shear (as the fan precomputes them).
-inline Ray4 MakeRay4(const glm::vec3& origin, const glm::vec3& inv, const ShearedRay& sr, float tmin) {
-  Ray4 r;
+inline WideRay MakeWideRay(const glm::vec3& origin, const glm::vec3& inv, const ShearedRay& sr, float tmin) {
+  WideRay r;
   r.origin = origin;
   for (int a = 0; a < 3; ++a) {
     r.org[a] = origin[a];
@@ -52,53 +52,54 @@ inline Ray4 MakeRay4(const glm::vec3& origin, const glm::vec3& inv, const Sheare
   return r;
 }
 
-namespace bvh4 {
+namespace wide {
 
-using lanes::V4;
+using lanes::V8;
+static_assert(lanes::kLanes == kBvhWidth && lanes::kLanes == kBlockWidth, "one lane per child and per triangle");
 
-constexpr int kStackSize = 512;  // > 3 x the build's depth bound (128) + 4
+constexpr int kStackSize = 1024;  // > 7 x the build's depth bound (128) + 8
 
 /// Lanes whose child box the ray enters within (tmin, tmax); their entry distances in tnear.
-PRT_LANES std::uint32_t BoxHits(const Bvh4Node& n, const Ray4& r, float tmax, V4& tnear) {
+PRT_LANES std::uint32_t BoxHits(const WideNode& n, const WideRay& r, float tmax, V8& tnear) {
   using namespace lanes;
-  const V4 nx = (Load(n.planes[r.near[0]]) - r.org[0]) * r.inv[0];
-  const V4 ny = (Load(n.planes[r.near[1]]) - r.org[1]) * r.inv[1];
-  const V4 nz = (Load(n.planes[r.near[2]]) - r.org[2]) * r.inv[2];
-  const V4 fx = (Load(n.planes[r.far[0]]) - r.org[0]) * r.inv[0];
-  const V4 fy = (Load(n.planes[r.far[1]]) - r.org[1]) * r.inv[1];
-  const V4 fz = (Load(n.planes[r.far[2]]) - r.org[2]) * r.inv[2];
+  const V8 nx = (Load(n.planes[r.near[0]]) - r.org[0]) * r.inv[0];
+  const V8 ny = (Load(n.planes[r.near[1]]) - r.org[1]) * r.inv[1];
+  const V8 nz = (Load(n.planes[r.near[2]]) - r.org[2]) * r.inv[2];
+  const V8 fx = (Load(n.planes[r.far[0]]) - r.org[0]) * r.inv[0];
+  const V8 fy = (Load(n.planes[r.far[1]]) - r.org[1]) * r.inv[1];
+  const V8 fz = (Load(n.planes[r.far[2]]) - r.org[2]) * r.inv[2];
   tnear = Max(Max(nx, ny), Max(nz, Splat(r.tmin)));
-  const V4 tfar = Min(Min(fx, fy), Min(fz, Splat(tmax))) * kSlabFarScale;
+  const V8 tfar = Min(Min(fx, fy), Min(fz, Splat(tmax))) * kSlabFarScale;
   return Bits(tnear <= tfar);
 }
 
-/// Watertight test of one ray against the four triangles of `b`: the lanes hit within
+/// Watertight test of one ray against the eight triangles of `b`: the lanes hit within
 /// (tmin, tmax), and when `closest`, their t, u, v.
 template <bool closest>
-PRT_LANES std::uint32_t BlockHits(const TriangleBlock& b, const Ray4& r, float tmax, V4& t, V4& u, V4& v) {
+PRT_LANES std::uint32_t BlockHits(const TriangleBlock& b, const WideRay& r, float tmax, V8& t, V8& u, V8& v) {
   using namespace lanes;
   const int kx = r.sr.kx, ky = r.sr.ky, kz = r.sr.kz;
   // Corners relative to the origin, sheared so the ray is the +z axis.
-  const V4 Az = Load(b.p[0][kz]) - r.org[kz], Bz = Load(b.p[1][kz]) - r.org[kz], Cz = Load(b.p[2][kz]) - r.org[kz];
-  const V4 ax = (Load(b.p[0][kx]) - r.org[kx]) - r.sr.sx * Az, ay = (Load(b.p[0][ky]) - r.org[ky]) - r.sr.sy * Az;
-  const V4 bx = (Load(b.p[1][kx]) - r.org[kx]) - r.sr.sx * Bz, by = (Load(b.p[1][ky]) - r.org[ky]) - r.sr.sy * Bz;
-  const V4 cx = (Load(b.p[2][kx]) - r.org[kx]) - r.sr.sx * Cz, cy = (Load(b.p[2][ky]) - r.org[ky]) - r.sr.sy * Cz;
-  const V4 e0 = cx * by - cy * bx;
-  const V4 e1 = ax * cy - ay * cx;
-  const V4 e2 = bx * ay - by * ax;
-  const V4 zero = Splat(0.0f);
+  const V8 Az = Load(b.p[0][kz]) - r.org[kz], Bz = Load(b.p[1][kz]) - r.org[kz], Cz = Load(b.p[2][kz]) - r.org[kz];
+  const V8 ax = (Load(b.p[0][kx]) - r.org[kx]) - r.sr.sx * Az, ay = (Load(b.p[0][ky]) - r.org[ky]) - r.sr.sy * Az;
+  const V8 bx = (Load(b.p[1][kx]) - r.org[kx]) - r.sr.sx * Bz, by = (Load(b.p[1][ky]) - r.org[ky]) - r.sr.sy * Bz;
+  const V8 cx = (Load(b.p[2][kx]) - r.org[kx]) - r.sr.sx * Cz, cy = (Load(b.p[2][ky]) - r.org[ky]) - r.sr.sy * Cz;
+  const V8 e0 = cx * by - cy * bx;
+  const V8 e1 = ax * cy - ay * cx;
+  const V8 e2 = bx * ay - by * ax;
+  const V8 zero = Splat(0.0f);
   const auto outside = ((e0 < zero) | (e1 < zero) | (e2 < zero)) & ((e0 > zero) | (e1 > zero) | (e2 > zero));
-  std::uint32_t inside = Bits(~outside) & 0xFu;
+  std::uint32_t inside = Bits(~outside);
   const std::uint32_t exact = Bits((e0 == zero) | (e1 == zero) | (e2 == zero));
-  if ((inside | exact) == 0) return 0;  // the common case: the ray passes beside all four
-  const V4 det = e0 + e1 + e2;
-  const V4 T = e0 * (r.sr.sz * Az) + e1 * (r.sr.sz * Bz) + e2 * (r.sr.sz * Cz);
-  const V4 lo = r.tmin * det, hi = tmax * det;
+  if ((inside | exact) == 0) return 0;  // the common case: the ray passes beside all eight
+  const V8 det = e0 + e1 + e2;
+  const V8 T = e0 * (r.sr.sz * Az) + e1 * (r.sr.sz * Bz) + e2 * (r.sr.sz * Cz);
+  const V8 lo = r.tmin * det, hi = tmax * det;
   const auto out_pos = (T <= lo) | (T >= hi), out_neg = (T >= lo) | (T <= hi);
   const auto out_of_range = (det > zero) ? out_pos : out_neg;
   std::uint32_t hit = inside & Bits((det != zero) & ~out_of_range) & ~exact;
   if constexpr (closest) {
-    const V4 inv_det = 1.0f / det;
+    const V8 inv_det = 1.0f / det;
     t = T * inv_det;
     u = e1 * inv_det;
     v = e2 * inv_det;
@@ -118,34 +119,36 @@ PRT_LANES std::uint32_t BlockHits(const TriangleBlock& b, const Ray4& r, float t
 }
 
 /// Asks for the cache lines of child `ref` (a node's two, a leaf's first block's three).
-PRT_LANES void Prefetch(const Bvh4& bvh, Bvh4Ref ref) {
+PRT_LANES void Prefetch(const WideBvh& bvh, WideRef ref) {
   const char* p = IsLeaf(ref) ? reinterpret_cast<const char*>(bvh.blocks.data() + LeafFirstBlock(ref))
                               : reinterpret_cast<const char*>(bvh.nodes.data() + ref);
   __builtin_prefetch(p);
   __builtin_prefetch(p + 64);
-  if (IsLeaf(ref)) __builtin_prefetch(p + 128);
+  __builtin_prefetch(p + 128);
+  __builtin_prefetch(p + 192);
+  if (IsLeaf(ref)) __builtin_prefetch(p + 256);
 }
 
 struct Entry {
-  Bvh4Ref ref;
+  WideRef ref;
   float tnear;
 };
 
 /// Traces one ray through `bvh` (non-empty). Any hit: returns whether the ray hits a triangle
 /// in (tmin, tmax). Closest: also writes the nearest hit to `best`.
 template <bool closest>
-PRT_LANES bool Trace(const Bvh4& bvh, const Ray4& r, float tmax, Hit& best) {
+PRT_LANES bool Trace(const WideBvh& bvh, const WideRay& r, float tmax, Hit& best) {
   Entry stack[kStackSize];
   int top = 0;
-  Bvh4Ref cur = 0;
+  WideRef cur = 0;
   bool found = false;
-  const Bvh4Node* nodes = bvh.nodes.data();
+  const WideNode* nodes = bvh.nodes.data();
   for (;;) {
     // Down the tree: nearest entered child next, the others on the stack (farthest deepest).
     while (!IsLeaf(cur)) {
-      V4 tn;
+      V8 tn;
       std::uint32_t mask = BoxHits(nodes[cur], r, tmax, tn);
-      const Bvh4Ref* child = nodes[cur].child;
+      const WideRef* child = nodes[cur].child;
       if (mask == 0) goto pop;
       // Start fetching every entered child now; the sort below hides part of the latency.
       for (std::uint32_t m = mask; m != 0; m &= m - 1) Prefetch(bvh, child[__builtin_ctz(m)]);
@@ -170,7 +173,7 @@ PRT_LANES bool Trace(const Bvh4& bvh, const Ray4& r, float tmax, Hit& best) {
         continue;
       }
       // Two or more: insertion sort by entry distance, descending, onto the stack.
-      Entry hits[4];
+      Entry hits[kBvhWidth];
       int n = 0;
       for (std::uint32_t m = mask | (1u << first); m != 0; m &= m - 1) {
         const int l = __builtin_ctz(m);
@@ -187,7 +190,7 @@ PRT_LANES bool Trace(const Bvh4& bvh, const Ray4& r, float tmax, Hit& best) {
       const TriangleBlock* b = bvh.blocks.data() + LeafFirstBlock(cur);
       const std::uint32_t count = LeafBlockCount(cur);
       for (std::uint32_t k = 0; k < count; ++k) {
-        V4 t, u, v;
+        V8 t, u, v;
         const std::uint32_t hit = BlockHits<closest>(b[k], r, tmax, t, u, v);
         if (hit == 0) continue;
         if constexpr (!closest) {
@@ -215,5 +218,5 @@ PRT_LANES bool Trace(const Bvh4& bvh, const Ray4& r, float tmax, Hit& best) {
   }
 }
 
-}  // namespace bvh4
+}  // namespace wide
 }  // namespace prt
