@@ -6,6 +6,11 @@
 /// the traversal needs. Min and Max keep std::min/std::max's answer lane by lane, so the vector
 /// slab test decides exactly as the scalar one of `box_test.h` [1].
 ///
+/// Known cost: without AVX (the baseline clone on a CPU older than 2013, and the sanitizer
+/// builds, which compile no clones) GCC lowers eight-lane comparisons and selects lane by lane.
+/// Measured on the PRT workload: 0.7 million occlusion rays per second per core there against
+/// 4.1 with AVX2 (the earlier 4-wide tree reached 2.0 on either path).
+///
 /// References
 ///  [1] T. Ize, "Robust BVH Ray Traversal", Journal of Computer Graphics Techniques 2(2), 2013.
 
