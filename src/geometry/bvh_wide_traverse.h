@@ -1,9 +1,9 @@
 #pragma once
 /// \file
 /// Single-ray traversal of the 8-wide BVH (internal to src/geometry; used by Bvh::Occluded,
-/// Bvh::Intersect and the fans). Per node, one SIMD slab test of the eight child boxes [1]; the
-/// children the ray enters are visited nearest first, the others pushed with their entry
-/// distance [2]. Per leaf block, the watertight test of `triangle.h` runs on eight triangles at
+/// Bvh::Intersect and the fans). Per node, one SIMD slab test of the eight child boxes [1]; of
+/// the children the ray enters, closest hit visits the nearest first and pushes the others with
+/// their entry distance [2], any hit takes them in lane order (see Trace). Per leaf block, the watertight test of `triangle.h` runs on eight triangles at
 /// once with the same operations in the same order as the scalar test, so every hit, miss,
 /// distance and barycentric is bit-identical to IntersectTriangle; lanes with an edge function
 /// of exactly 0 are redone by the scalar test, which refines them in double [3].
@@ -144,13 +144,13 @@ PRT_LANES bool Trace(const WideBvh& bvh, const WideRay& r, float tmax, Hit& best
   bool found = false;
   const WideNode* nodes = bvh.nodes.data();
   for (;;) {
-    // Down the tree: nearest entered child next, the others on the stack (farthest deepest).
+    // Down the tree: one entered child next, the others on the stack.
     while (!IsLeaf(cur)) {
       V8 tn;
       std::uint32_t mask = BoxHits(nodes[cur], r, tmax, tn);
       const WideRef* child = nodes[cur].child;
       if (mask == 0) goto pop;
-      // Start fetching every entered child now; the sort below hides part of the latency.
+      // Start fetching every entered child now; the choice below hides part of the latency.
       for (std::uint32_t m = mask; m != 0; m &= m - 1) Prefetch(bvh, child[__builtin_ctz(m)]);
       int first = __builtin_ctz(mask);
       mask &= mask - 1;
@@ -159,20 +159,20 @@ PRT_LANES bool Trace(const WideBvh& bvh, const WideRay& r, float tmax, Hit& best
         continue;
       }
       if constexpr (!closest) {
-        // Any hit: only the nearest comes next; the order of the rest hardly matters.
-        int nearest = first;
+        // Any hit: the first entered child next, the others on the stack, in lane order. The
+        // order decides only how soon an occluder is found. Nearest first, the natural choice,
+        // was measured 20 % slower on the PRT workload (knot, 1 thread: 4.1-4.5 against
+        // 5.1-5.3 million rays per second): the nearest box is the one around the ray's own
+        // origin, whose surface lies below the horizon the ray leaves by and rarely blocks it.
         for (std::uint32_t m = mask; m != 0; m &= m - 1) {
           const int l = __builtin_ctz(m);
-          if (tn[l] < tn[nearest]) nearest = l;
+          stack[top++] = Entry{child[l], tn[l]};
         }
-        for (std::uint32_t m = mask | (1u << first); m != 0; m &= m - 1) {
-          const int l = __builtin_ctz(m);
-          if (l != nearest) stack[top++] = Entry{child[l], tn[l]};
-        }
-        cur = child[nearest];
+        cur = child[first];
         continue;
       }
-      // Two or more: insertion sort by entry distance, descending, onto the stack.
+      // Closest hit, two or more: insertion sort by entry distance, descending, onto the stack,
+      // so the nearest comes next and the farthest deepest.
       Entry hits[kBvhWidth];
       int n = 0;
       for (std::uint32_t m = mask | (1u << first); m != 0; m &= m - 1) {
