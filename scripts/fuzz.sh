@@ -22,11 +22,11 @@ CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo 
 cmake --build build-fuzz --parallel "${PRT_JOBS:-$(nproc)}" --target "${targets[@]}"
 
 # Seed corpora from the fixtures.
-seed() {  # seed TARGET FILE [PREFIX_BYTE]
-  local dir=build-fuzz/corpus/$1
+seed() {  # seed TARGET FILE [PREFIX_BYTE]; the seed is named after the whole path (faces of
+  local dir=build-fuzz/corpus/$1 name=${2//\//_}  # different cubemaps share a file name)
   mkdir -p "$dir"
-  if [ $# -ge 3 ]; then { printf "\\$(printf %03o "$3")"; cat "$2"; } >"$dir/seed_$(basename "$2")"
-  else cp "$2" "$dir/seed_$(basename "$2")"; fi
+  if [ $# -ge 3 ]; then { printf "\\$(printf %03o "$3")"; cat "$2"; } >"$dir/seed_$name"
+  else cp "$2" "$dir/seed_$name"; fi
 }
 for f in tests/data/obj/*.obj tests/data/obj/*.mtl; do seed fuzz_obj "$f"; done
 for f in tests/data/images/*; do

@@ -19,7 +19,6 @@
 #include "raster/rasterizer.h"
 #include "sh/basis.h"
 #include "raster/tonemap.h"
-#include "sh/axis_rotation.h"
 
 namespace prt {
 namespace fs = std::filesystem;
@@ -103,7 +102,8 @@ std::vector<glm::vec3> ViewColors(const Mesh& mesh, const Transport& transport, 
 }  // namespace
 
 ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                     const Environment& env, const Camera& camera, const RenderOptions& o, double angle) {
+                     const AxisRotation& rotation, const Environment& env, const Camera& camera,
+                     const RenderOptions& o, double angle) {
   if (o.view == "transport" && o.transport_index >= CoeffCount(transport.lmax))
     throw UsageError("--view: transport:" + std::to_string(o.transport_index) + " is out of range (expected 0 to " +
                          std::to_string(CoeffCount(transport.lmax) - 1) + " for lmax " + std::to_string(transport.lmax) + ")",
@@ -111,7 +111,7 @@ ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& 
   // The light, and the environment behind the mesh, turned by R: L'(d) = L(R^T d). Only the
   // bands the transport has are turned.
   const ShRgb used(light.begin(), light.begin() + std::min(light.size(), std::size_t(CoeffCount(transport.lmax))));
-  const ShRgb lit = AxisRotation(o.axis, transport.lmax).Rotate(used, angle);
+  const ShRgb lit = rotation.Rotate(used, angle);
   double scale = 0.0;
   const std::vector<glm::vec3> colors = ViewColors(mesh, transport, lit, o, scale);
   RasterOptions ro;
@@ -142,13 +142,14 @@ FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRg
   FrameStats stats;
   stats.frames = o.frames;
   Rasterizer rasterizer;
+  const AxisRotation rotation(o.axis, transport.lmax);
   std::future<void> writing;  // the previous frame's encode-and-write
   Progress progress("rendering", static_cast<std::size_t>(o.frames));
   for (int i = 0; i < o.frames; ++i) {
     // Each frame from its absolute angle: no accumulated drift.
     const double angle = 2.0 * kPi * o.turns * double(i) / double(o.frames);
     const auto t0 = std::chrono::steady_clock::now();
-    ToneMapped mapped = DrawFrame(rasterizer, mesh, transport, light, env, camera, o, angle);
+    ToneMapped mapped = DrawFrame(rasterizer, mesh, transport, light, rotation, env, camera, o, angle);
     stats.draw_seconds += Since(t0);
     stats.negative_pixels += mapped.negative_pixels;
     stats.nan_pixels += mapped.nan_pixels;

@@ -17,6 +17,7 @@
 #include "raster/camera.h"
 #include "raster/rasterizer.h"
 #include "raster/tonemap.h"
+#include "sh/axis_rotation.h"
 #include "sh/coeffs.h"
 
 namespace prt {
@@ -33,10 +34,12 @@ struct FrameStats {
 /// options give, with clip planes fitted to the mesh.
 Camera ChooseCamera(const Mesh& mesh, const RenderOptions& options);
 
-/// Draws one frame with the light turned by `angle` radians about the options' axis: shading,
-/// rasterizing over the turned environment, tone mapping. `rasterizer` keeps its buffers.
+/// Draws one frame with the light turned by `angle` radians by `rotation` (about the options'
+/// axis, built once per run for the transport's lmax): shading, rasterizing over the turned
+/// environment, tone mapping. `rasterizer` keeps its buffers.
 ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                     const Environment& env, const Camera& camera, const RenderOptions& options, double angle);
+                     const AxisRotation& rotation, const Environment& env, const Camera& camera,
+                     const RenderOptions& options, double angle);
 
 /// Renders all frames into options.out (created if missing).
 FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light,

@@ -21,19 +21,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double Since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-/// Bands 0..lmax of `t` (a prefix of each vector).
-Transport Truncate(const Transport& t, int lmax) {
-  Transport out;
-  out.lmax = lmax;
-  out.channels = t.channels;
-  out.vertices = t.vertices;
-  const int from = CoeffCount(t.lmax), to = CoeffCount(lmax);
-  out.coeffs.resize(t.vertices * t.channels * to);
-  for (std::size_t i = 0; i < t.vertices * t.channels; ++i)
-    std::copy(t.coeffs.begin() + i * from, t.coeffs.begin() + i * from + to, out.coeffs.begin() + i * to);
-  return out;
-}
-
 ShRgb Prefix(const ShRgb& light, int lmax) { return ShRgb(light.begin(), light.begin() + CoeffCount(lmax)); }
 
 std::vector<glm::dvec3> ToDouble(const std::vector<glm::vec3>& v) { return {v.begin(), v.end()}; }
@@ -61,11 +48,11 @@ struct Scorer {
   void Score(const Transport& t, const Transport* converged, SweepRow row, int max_lmax,
              std::vector<SweepRow>& rows) const {
     for (int l = 1; l <= max_lmax; ++l) {
-      const Transport tl = Truncate(t, l);
-      const std::vector<glm::vec3> colors = ShadeVertices(mesh, tl, Prefix(light, l));
+      // ShadeVertices uses as many bands as the light has: the transport's first l bands.
+      const std::vector<glm::vec3> colors = ShadeVertices(mesh, t, Prefix(light, l));
       row.lmax = l;
       if (converged)
-        row.sampling = CompareVertices(colors, ToDouble(ShadeVertices(mesh, Truncate(*converged, l), Prefix(light, l))));
+        row.sampling = CompareVertices(colors, ToDouble(ShadeVertices(mesh, *converged, Prefix(light, l))));
       row.total = CompareVertices(colors, reference.radiance);
       row.psnr = CompareImages(DrawVertexColors(mesh, colors, env, camera, picture), reference_image).psnr;
       rows.push_back(row);

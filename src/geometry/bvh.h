@@ -13,10 +13,10 @@
 /// longest axis, so leaves never exceed max_leaf_size and the depth stays below 128.
 ///
 /// Traversal runs on an 8-wide tree collapsed from the binary one (`bvh_wide.h`,
-/// `bvh_wide_traverse.h`): ordered (nearer children first), with the robust slab test of [3]
-/// (the far distance is enlarged by 2 gamma(3) so rounding never culls a box the ray truly
-/// touches), and the watertight triangle test of `triangle.h` on eight triangles at once. The fans (`ray_fan.h`)
-/// trace each of their directions with the per-direction constants computed once.
+/// `bvh_wide_traverse.h`), with the robust slab test of [3] (the far distance is enlarged by
+/// 2 gamma(3) so rounding never culls a box the ray truly touches) and the watertight triangle
+/// test of `triangle.h` on eight triangles at once. The fans (`ray_fan.h`) trace each of their
+/// directions with the per-direction constants computed once.
 ///
 /// References
 ///  [1] J. D. MacDonald, K. S. Booth, "Heuristics for ray tracing using space subdivision",

@@ -29,7 +29,7 @@ namespace prt {
 /// Everything per ray that traversal needs, computed once.
 struct WideRay {
   glm::vec3 origin;
-  float org[3];          // origin by axis
+  float org[3];          // origin by axis, indexable without glm's per-index branch
   float inv[3];          // SafeInverse(dir)
   int near[3], far[3];   // plane rows of WideNode entered and left on each axis
   ShearedRay sr;         // watertight test constants

@@ -46,29 +46,9 @@ RayFan MakeRayFan(const std::vector<glm::vec3>& directions) {
   }
   std::sort(keyed.begin(), keyed.end(),
             [](const Keyed& a, const Keyed& b) { return a.key < b.key || (a.key == b.key && a.index < b.index); });
-
-  // Cut the sorted list into packets, never mixing two faces in one packet.
-  for (std::size_t i = 0; i < keyed.size();) {
-    const std::uint64_t face = keyed[i].key >> 32;
-    FanPacket p;
-    const ShearedRay r0 = MakeShearedRay(directions[keyed[i].index]);
-    p.kx = r0.kx, p.ky = r0.ky, p.kz = r0.kz;
-    while (i < keyed.size() && p.count < kFanWidth && (keyed[i].key >> 32) == face)
-      p.index[p.count++] = keyed[i++].index;
-    for (std::uint32_t lane = 0; lane < kFanWidth; ++lane) {
-      const std::uint32_t src = lane < p.count ? p.index[lane] : p.index[0];
-      const glm::vec3& d = directions[src];
-      const ShearedRay r = MakeShearedRay(d);
-      const glm::vec3 inv = SafeInverse(d);
-      for (int a = 0; a < 3; ++a) {
-        p.inv[a][lane] = inv[a];
-        p.dir[a][lane] = d[a];
-      }
-      p.shear[0][lane] = r.sx;
-      p.shear[1][lane] = r.sy;
-      p.shear[2][lane] = r.sz;
-    }
-    fan.packets.push_back(p);
+  for (const Keyed& k : keyed) {
+    const glm::vec3& d = directions[k.index];
+    fan.rays.push_back(FanRay{d, SafeInverse(d), MakeShearedRay(d), k.index});
   }
   return fan;
 }

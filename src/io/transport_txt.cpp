@@ -7,9 +7,9 @@ namespace prt {
 std::string FormatTransportTxt(const Mesh& mesh, const Transport& transport, int channel) {
   const int count = CoeffCount(transport.lmax);
   std::string out = std::to_string(mesh.vertex_count()) + "\n";
-  out.reserve(out.size() + (mesh.file_triangles.size() + mesh.triangle_count()) * 3 * count * 14);
-  char number[32];
   const auto& faces = mesh.file_triangles.empty() ? mesh.triangles : mesh.file_triangles;
+  out.reserve(out.size() + faces.size() * 3 * count * 14);
+  char number[32];
   for (const auto& tri : faces) {
     for (std::uint32_t v : tri) {
       const float* t = transport.at(v, channel);

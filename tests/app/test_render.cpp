@@ -65,7 +65,9 @@ Scene MakeScene(TransportMode mode, int lmax) {
 
 Image8 Draw(const Scene& s, const RenderOptions& o, double angle) {
   Rasterizer r;
-  return DrawFrame(r, s.mesh, s.transport, s.light, *s.env, ChooseCamera(s.mesh, o), o, angle).image;
+  return DrawFrame(r, s.mesh, s.transport, s.light, AxisRotation(o.axis, s.transport.lmax), *s.env,
+                   ChooseCamera(s.mesh, o), o, angle)
+      .image;
 }
 
 }  // namespace
