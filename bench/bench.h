@@ -15,6 +15,15 @@ namespace prt::bench {
 /// Median wall-clock seconds of `runs` calls of `fn` (after one warm-up call).
 double MedianSeconds(int runs, const std::function<void()>& fn);
 
+/// Two workloads timed in alternation, `runs` pairs after one warm-up of each: the median
+/// seconds of each, and the median over pairs of theirs / ours. A slow spell of the shared
+/// machine then slows both halves of a pair, and the ratio stays steady where two medians
+/// taken a minute apart would not.
+struct SideBySide {
+  double ours = 0.0, theirs = 0.0, ratio = 0.0;
+};
+SideBySide TimeSideBySide(int runs, const std::function<void()>& ours, const std::function<void()>& theirs);
+
 /// Prints `key=value` with enough digits for a spreadsheet.
 void Print(const std::string& key, double value);
 void Print(const std::string& key, const std::string& value);

@@ -3,8 +3,10 @@
 // Workload: every vertex of the mesh casts the directions of a 1024-point spherical Fibonacci set
 // that lie above its horizon (dot(n, d) > 0), from its position offset off the surface
 // (OffsetRayOrigin). Measured with one thread and with all threads; medians of --runs runs.
+// Ratios against Embree are medians of per-run ratios, ours and Embree's runs alternating.
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -15,6 +17,7 @@
 #include "core/parallel.h"
 #include "geometry/brute_force.h"
 #include "geometry/bvh.h"
+#include "geometry/bvh_kernels.h"
 #include "geometry/procedural.h"
 #include "geometry/ray_fan.h"
 #include "io/obj_loader.h"
@@ -59,20 +62,20 @@ Workload MakeWorkload(const Mesh& mesh, const std::vector<glm::vec3>& dirs, floa
   return w;
 }
 
-// Runs `per_vertex(v, hits)` over all vertices; returns the median seconds and the total count.
+// A run over all vertices: `per_vertex(v)` traces vertex v's rays and returns how many were
+// blocked or hit; the run leaves the total in `total`.
 template <class F>
-double Time(int runs, std::size_t vertices, std::size_t& count, const F& per_vertex) {
-  std::vector<std::size_t> chunk_counts(ChunkCount(vertices, kGrain));
-  const double s = MedianSeconds(runs, [&] {
+std::function<void()> OverVertices(std::size_t vertices, std::size_t& total, const F& per_vertex) {
+  return [vertices, &total, per_vertex] {
+    std::vector<std::size_t> chunk_counts(ChunkCount(vertices, kGrain));
     ParallelFor(vertices, kGrain, [&](std::size_t b, std::size_t e) {
       std::size_t c = 0;
       for (std::size_t v = b; v < e; ++v) c += per_vertex(v);
       chunk_counts[b / kGrain] = c;
     });
-  });
-  count = 0;
-  for (std::size_t c : chunk_counts) count += c;
-  return s;
+    total = 0;
+    for (std::size_t c : chunk_counts) total += c;
+  };
 }
 
 #ifdef PRT_BENCH_EMBREE
@@ -112,6 +115,7 @@ struct EmbreeScene {
 // Benchmarks one mesh under the name `tag` with `threads` threads.
 void BenchMesh(const std::string& tag, const Mesh& mesh, int runs, int threads) {
   Print(tag + "_triangles", static_cast<double>(mesh.triangle_count()));
+  Print(tag + "_traversal_isa", IsaName(ActiveKernels().isa));
   Print(tag + "_vertices", static_cast<double>(mesh.vertex_count()));
   SetThreadCount(1);
   Bvh bvh;
@@ -131,34 +135,30 @@ void BenchMesh(const std::string& tag, const Mesh& mesh, int runs, int threads) 
     SetThreadCount(t);
     const std::string key = tag + "_t" + std::to_string(ThreadCount());
     std::size_t occluded = 0, hits = 0, single = 0;
-    const double occ = Time(runs, mesh.vertex_count(), occluded, [&](std::size_t v) {
+    const auto ours_occluded = OverVertices(mesh.vertex_count(), occluded, [&](std::size_t v) {
       thread_local std::vector<std::uint8_t> mask;
       bvh.OccludedFan(fan, w.origins[v], w.normals[v], inf, mask);
       std::size_t c = 0;
       for (auto m : mask) c += m;
       return c;
     });
-    const double isect = Time(runs, mesh.vertex_count(), hits, [&](std::size_t v) {
+    const auto ours_intersect = OverVertices(mesh.vertex_count(), hits, [&](std::size_t v) {
       thread_local std::vector<std::optional<Hit>> out;
       bvh.IntersectFan(fan, w.origins[v], w.normals[v], inf, out);
       std::size_t c = 0;
       for (const auto& h : out) c += h ? 1 : 0;
       return c;
     });
-    const double one = Time(runs, mesh.vertex_count(), single, [&](std::size_t v) {
+    const auto ours_single = OverVertices(mesh.vertex_count(), single, [&](std::size_t v) {
       std::size_t c = 0;
       for (const glm::vec3& d : dirs)
         if (glm::dot(w.normals[v], d) > 0.0f) c += bvh.Occluded(Ray{w.origins[v], d}) ? 1 : 0;
       return c;
     });
-    Print(key + "_occluded_fraction", static_cast<double>(occluded) / static_cast<double>(w.rays));
-    Print(key + "_fan_occluded_mrays_per_s", mrays / occ);
-    Print(key + "_fan_intersect_mrays_per_s", mrays / isect);
-    Print(key + "_single_ray_occluded_mrays_per_s", mrays / one);
-    Print(key + "_fan_agrees_with_single_ray", occluded == single && occluded == hits ? "yes" : "no");
 #ifdef PRT_BENCH_EMBREE
+    // Embree traces exactly the same rays, alternating with ours run by run (TimeSideBySide).
     std::size_t e_occ = 0, e_hits = 0;
-    const double eo = Time(runs, mesh.vertex_count(), e_occ, [&](std::size_t v) {
+    const auto embree_occluded = OverVertices(mesh.vertex_count(), e_occ, [&](std::size_t v) {
       RTCIntersectContext ctx;
       rtcInitIntersectContext(&ctx);
       std::size_t c = 0;
@@ -170,7 +170,7 @@ void BenchMesh(const std::string& tag, const Mesh& mesh, int runs, int threads) 
       }
       return c;
     });
-    const double ei = Time(runs, mesh.vertex_count(), e_hits, [&](std::size_t v) {
+    const auto embree_intersect = OverVertices(mesh.vertex_count(), e_hits, [&](std::size_t v) {
       RTCIntersectContext ctx;
       rtcInitIntersectContext(&ctx);
       std::size_t c = 0;
@@ -184,14 +184,27 @@ void BenchMesh(const std::string& tag, const Mesh& mesh, int runs, int threads) 
       }
       return c;
     });
-    Print(key + "_embree_occluded_mrays_per_s", mrays / eo);
-    Print(key + "_embree_intersect_mrays_per_s", mrays / ei);
+    const SideBySide occ = TimeSideBySide(runs, ours_occluded, embree_occluded);
+    const SideBySide isect = TimeSideBySide(runs, ours_intersect, embree_intersect);
+#else
+    const SideBySide occ{MedianSeconds(runs, ours_occluded), 0.0, 0.0};
+    const SideBySide isect{MedianSeconds(runs, ours_intersect), 0.0, 0.0};
+#endif
+    const double one = MedianSeconds(runs, ours_single);
+    Print(key + "_occluded_fraction", static_cast<double>(occluded) / static_cast<double>(w.rays));
+    Print(key + "_fan_occluded_mrays_per_s", mrays / occ.ours);
+    Print(key + "_fan_intersect_mrays_per_s", mrays / isect.ours);
+    Print(key + "_single_ray_occluded_mrays_per_s", mrays / one);
+    Print(key + "_fan_agrees_with_single_ray", occluded == single && occluded == hits ? "yes" : "no");
+#ifdef PRT_BENCH_EMBREE
+    Print(key + "_embree_occluded_mrays_per_s", mrays / occ.theirs);
+    Print(key + "_embree_intersect_mrays_per_s", mrays / isect.theirs);
     Print(key + "_embree_occluded_fraction", static_cast<double>(e_occ) / static_cast<double>(w.rays));
-    Print(key + "_ratio_occluded_vs_embree", eo / occ);
-    Print(key + "_ratio_intersect_vs_embree", ei / isect);
+    Print(key + "_ratio_occluded_vs_embree", occ.ratio);
+    Print(key + "_ratio_intersect_vs_embree", isect.ratio);
     if (t == 1 && tag == "knot") {  // the headline numbers: procedural mesh, one thread
-      Print("ratio_occluded_vs_embree", eo / occ);
-      Print("ratio_intersect_vs_embree", ei / isect);
+      Print("ratio_occluded_vs_embree", occ.ratio);
+      Print("ratio_intersect_vs_embree", isect.ratio);
     }
 #endif
   }
@@ -205,12 +218,12 @@ void BenchBruteForce(int runs) {
   const Workload w = MakeWorkload(small, dirs, 2.0f);
   SetThreadCount(1);
   std::size_t count = 0;
-  const double s = Time(runs, small.vertex_count(), count, [&](std::size_t v) {
+  const double s = MedianSeconds(runs, OverVertices(small.vertex_count(), count, [&](std::size_t v) {
     std::size_t c = 0;
     for (const glm::vec3& d : dirs)
       if (glm::dot(w.normals[v], d) > 0.0f) c += bf.Intersect(Ray{w.origins[v], d}) ? 1 : 0;
     return c;
-  });
+  }));
   Print("brute_force_triangles", static_cast<double>(small.triangle_count()));
   Print("brute_force_t1_intersect_mrays_per_s", static_cast<double>(w.rays) * 1e-6 / s);
 }

@@ -1,21 +1,45 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <vector>
 
 #include "bench/bench.h"
 
 namespace prt::bench {
 
+namespace {
+double Seconds(const std::function<void()>& fn) {
+  const auto t0 = std::chrono::steady_clock::now();
+  fn();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+double Median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+}  // namespace
+
 double MedianSeconds(int runs, const std::function<void()>& fn) {
   fn();  // warm-up: page faults, caches, lazy initialisation
   std::vector<double> seconds;
+  for (int i = 0; i < std::max(1, runs); ++i) seconds.push_back(Seconds(fn));
+  return Median(seconds);
+}
+
+SideBySide TimeSideBySide(int runs, const std::function<void()>& ours, const std::function<void()>& theirs) {
+  ours();  // warm-up of both
+  theirs();
+  std::vector<double> o, t, r;
   for (int i = 0; i < std::max(1, runs); ++i) {
-    const auto t0 = std::chrono::steady_clock::now();
-    fn();
-    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+    // Alternate which goes first, so neither always runs right after the other's cache use.
+    const bool ours_first = i % 2 == 0;
+    const double a = ours_first ? Seconds(ours) : Seconds(theirs);
+    const double b = ours_first ? Seconds(theirs) : Seconds(ours);
+    o.push_back(ours_first ? a : b);
+    t.push_back(ours_first ? b : a);
+    r.push_back(t.back() / o.back());
   }
-  std::sort(seconds.begin(), seconds.end());
-  return seconds[seconds.size() / 2];
+  return SideBySide{Median(o), Median(t), Median(r)};
 }
 
 void Print(const std::string& key, double value) { std::printf("%s=%.6g\n", key.c_str(), value); }

@@ -2,8 +2,8 @@
 /// \file
 /// PRT_VECTORIZED: compiles a hot loop twice, for AVX2 and for the baseline x86-64, and picks
 /// one at run time (GCC function multiversioning). The build stays portable, and because the
-/// project compiles in ISO C++ mode (no floating-point contraction into FMA) both versions
-/// round identically: outputs do not depend on the machine's vector width.
+/// project compiles with -ffp-contract=off (no fusing of a * b + c, CMakeLists.txt) both
+/// versions round identically: outputs do not depend on the machine's vector width.
 ///
 /// Sanitized builds compile one version only: the run-time choice is an ifunc resolver that the
 /// dynamic loader calls before a sanitizer's runtime is initialised, which crashes ThreadSanitizer

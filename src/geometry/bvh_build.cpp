@@ -14,6 +14,12 @@ namespace {
 // within 32 more levels: the depth stays below 128 and leaves within max_leaf_size.
 constexpr int kSahDepth = 96;
 
+// Triangles rounded up to whole blocks: traversal tests a block of kBlockWidth triangles at
+// the cost of one, so SAH counts a leaf's blocks, not its triangles.
+float BlockSlots(std::uint32_t n) {
+  return static_cast<float>((n + kBlockWidth - 1) / kBlockWidth * kBlockWidth);
+}
+
 struct Builder {
   const BvhOptions& opt;
   std::vector<Bounds3> boxes;        // per triangle
@@ -70,7 +76,7 @@ struct Builder {
       for (int b = nb - 1; b > 0; --b) {
         if (bin_count[b] > 0) acc.Extend(bin_box[b].lo), acc.Extend(bin_box[b].hi);
         count += bin_count[b];
-        right_cost[b] = count == 0 ? 0.0f : BoxArea(acc.lo, acc.hi) * static_cast<float>(count);
+        right_cost[b] = count == 0 ? 0.0f : BoxArea(acc.lo, acc.hi) * BlockSlots(count);
       }
       // Sweep from the left; border b puts bins [0, b) left.
       acc = Bounds3();
@@ -80,7 +86,7 @@ struct Builder {
         count += bin_count[b - 1];
         if (count == 0 || count == n) continue;
         const float cost = opt.traversal_cost + opt.intersection_cost *
-                               (BoxArea(acc.lo, acc.hi) * static_cast<float>(count) + right_cost[b]) /
+                               (BoxArea(acc.lo, acc.hi) * BlockSlots(count) + right_cost[b]) /
                                node_area;
         if (cost < best_cost) best_cost = cost, best_axis = axis, best_border = b;
       }
@@ -89,7 +95,7 @@ struct Builder {
     // Partition by the best border, or by the median index when binning cannot separate.
     std::uint32_t mid = begin;
     if (best_axis >= 0) {
-      if (best_cost >= opt.intersection_cost * static_cast<float>(n) &&
+      if (best_cost >= opt.intersection_cost * BlockSlots(n) &&
           n <= static_cast<std::uint32_t>(opt.max_leaf_size))
         return MakeLeaf(node, begin, end);
       const float scale = static_cast<float>(nb) / (cbox.hi[best_axis] - cbox.lo[best_axis]);
@@ -165,7 +171,8 @@ Bvh Bvh::Build(const Mesh& mesh, const BvhOptions& options) {
     const auto& tri = mesh.triangles[bvh.prim_indices_[i]];
     corners[i] = {mesh.positions[tri[0]], mesh.positions[tri[1]], mesh.positions[tri[2]]};
   }
-  bvh.wide_ = CollapseToWide(bvh.nodes_, bvh.prim_indices_, corners);
+  const CollapseCosts costs{opt.traversal_cost, opt.intersection_cost * static_cast<float>(kBlockWidth)};
+  bvh.wide_ = CollapseToWide(bvh.nodes_, bvh.prim_indices_, corners, costs);
   return bvh;
 }
 

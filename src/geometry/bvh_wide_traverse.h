@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// Single-ray traversal of the 8-wide BVH (internal to src/geometry; used by Bvh::Occluded,
-/// Bvh::Intersect and the fans). Per node, one SIMD slab test of the eight child boxes [1]; of
+/// Single-ray traversal of the 8-wide BVH (internal to src/geometry; instantiated per
+/// instruction set by bvh_kernels.cpp for Bvh::Occluded, Bvh::Intersect and the fans). Per
+/// node, one SIMD slab test of the eight child boxes [1], fused on AVX2 (bvh_wide.h); of
 /// the children the ray enters, closest hit visits the nearest first and pushes the others with
 /// their entry distance [2], any hit takes them in lane order (see Trace). Per leaf block, the watertight test of `triangle.h` runs on eight triangles at
 /// once with the same operations in the same order as the scalar test, so every hit, miss,
@@ -18,6 +19,9 @@
 ///  [2] T. Ize, "Robust BVH Ray Traversal", Journal of Computer Graphics Techniques 2(2), 2013.
 ///  [3] S. Woop, C. Benthin, I. Wald, "Watertight Ray/Triangle Intersection", JCGT 2(1), 2013.
 
+#include <cmath>
+#include <limits>
+
 #include "geometry/box_test.h"
 #include "geometry/bvh_wide.h"
 #include "geometry/lanes.h"
@@ -31,18 +35,28 @@ struct WideRay {
   glm::vec3 origin;
   float org[3];          // origin by axis, indexable without glm's per-index branch
   float inv[3];          // SafeInverse(dir)
+  float org_inv[3];      // org * inv rounded, for the fused slab test
   int near[3], far[3];   // plane rows of WideNode entered and left on each axis
   ShearedRay sr;         // watertight test constants
   float tmin;
+  bool fused_ok;         // the fused slab test is conservative for this ray (bvh_wide.h)
 };
 
-/// From the direction's inverse and shear (as the fan precomputes them).
-inline WideRay MakeWideRay(const glm::vec3& origin, const glm::vec3& inv, const ShearedRay& sr, float tmin) {
+/// From the direction's inverse and shear (as the fan precomputes them), for tracing `bvh`.
+inline WideRay MakeWideRay(const WideBvh& bvh, const glm::vec3& origin, const glm::vec3& inv,
+                           const ShearedRay& sr, float tmin) {
   WideRay r;
   r.origin = origin;
+  r.fused_ok = true;
   for (int a = 0; a < 3; ++a) {
     r.org[a] = origin[a];
     r.inv[a] = inv[a];
+    r.org_inv[a] = origin[a] * inv[a];
+    // The padding covers a relative rounding error of org * inv for |org| within the bound;
+    // an overflowing or subnormal product (an almost axis-parallel direction) is not covered.
+    const float m = std::abs(r.org_inv[a]);
+    r.fused_ok = r.fused_ok && std::abs(origin[a]) <= bvh.fused_origin_bound &&
+                 m <= std::numeric_limits<float>::max() && (origin[a] == 0.0f || m >= std::numeric_limits<float>::min());
     // Rounding is monotonic, so for inv >= 0 the lo plane gives the smaller slab distance.
     r.near[a] = std::signbit(inv[a]) ? 3 + a : a;
     r.far[a] = std::signbit(inv[a]) ? a : 3 + a;
@@ -54,28 +68,38 @@ inline WideRay MakeWideRay(const glm::vec3& origin, const glm::vec3& inv, const 
 
 namespace wide {
 
+using lanes::Isa;
 using lanes::V8;
 static_assert(lanes::kLanes == kBvhWidth && lanes::kLanes == kBlockWidth, "one lane per child and per triangle");
 
 constexpr int kStackSize = 1024;  // > 7 x the build's depth bound (128) + 8
 
+/// Distance along the ray to plane row `row` of `n` on `axis`: fused (one multiply-add on the
+/// padded boxes, bvh_wide.h) or exact ((plane - origin) * inverse, [2]).
+template <Isa isa, bool fused>
+PRT_LANES V8 PlaneDistance(const WideNode& n, int row, int axis, const WideRay& r) {
+  if constexpr (fused) return lanes::MulSub<isa>(lanes::Load(n.planes[row]), r.inv[axis], r.org_inv[axis]);
+  else return (lanes::Load(n.planes[row]) - r.org[axis]) * r.inv[axis];
+}
+
 /// Lanes whose child box the ray enters within (tmin, tmax); their entry distances in tnear.
+template <Isa isa, bool fused>
 PRT_LANES std::uint32_t BoxHits(const WideNode& n, const WideRay& r, float tmax, V8& tnear) {
   using namespace lanes;
-  const V8 nx = (Load(n.planes[r.near[0]]) - r.org[0]) * r.inv[0];
-  const V8 ny = (Load(n.planes[r.near[1]]) - r.org[1]) * r.inv[1];
-  const V8 nz = (Load(n.planes[r.near[2]]) - r.org[2]) * r.inv[2];
-  const V8 fx = (Load(n.planes[r.far[0]]) - r.org[0]) * r.inv[0];
-  const V8 fy = (Load(n.planes[r.far[1]]) - r.org[1]) * r.inv[1];
-  const V8 fz = (Load(n.planes[r.far[2]]) - r.org[2]) * r.inv[2];
+  const V8 nx = PlaneDistance<isa, fused>(n, r.near[0], 0, r);
+  const V8 ny = PlaneDistance<isa, fused>(n, r.near[1], 1, r);
+  const V8 nz = PlaneDistance<isa, fused>(n, r.near[2], 2, r);
+  const V8 fx = PlaneDistance<isa, fused>(n, r.far[0], 0, r);
+  const V8 fy = PlaneDistance<isa, fused>(n, r.far[1], 1, r);
+  const V8 fz = PlaneDistance<isa, fused>(n, r.far[2], 2, r);
   tnear = Max(Max(nx, ny), Max(nz, Splat(r.tmin)));
   const V8 tfar = Min(Min(fx, fy), Min(fz, Splat(tmax))) * kSlabFarScale;
-  return Bits(tnear <= tfar);
+  return Bits<isa>(tnear <= tfar);
 }
 
 /// Watertight test of one ray against the eight triangles of `b`: the lanes hit within
 /// (tmin, tmax), and when `closest`, their t, u, v.
-template <bool closest>
+template <Isa isa, bool closest>
 PRT_LANES std::uint32_t BlockHits(const TriangleBlock& b, const WideRay& r, float tmax, V8& t, V8& u, V8& v) {
   using namespace lanes;
   const int kx = r.sr.kx, ky = r.sr.ky, kz = r.sr.kz;
@@ -89,15 +113,15 @@ PRT_LANES std::uint32_t BlockHits(const TriangleBlock& b, const WideRay& r, floa
   const V8 e2 = bx * ay - by * ax;
   const V8 zero = Splat(0.0f);
   const auto outside = ((e0 < zero) | (e1 < zero) | (e2 < zero)) & ((e0 > zero) | (e1 > zero) | (e2 > zero));
-  std::uint32_t inside = Bits(~outside);
-  const std::uint32_t exact = Bits((e0 == zero) | (e1 == zero) | (e2 == zero));
+  std::uint32_t inside = Bits<isa>(~outside);
+  const std::uint32_t exact = Bits<isa>((e0 == zero) | (e1 == zero) | (e2 == zero));
   if ((inside | exact) == 0) return 0;  // the common case: the ray passes beside all eight
   const V8 det = e0 + e1 + e2;
   const V8 T = e0 * (r.sr.sz * Az) + e1 * (r.sr.sz * Bz) + e2 * (r.sr.sz * Cz);
   const V8 lo = r.tmin * det, hi = tmax * det;
   const auto out_pos = (T <= lo) | (T >= hi), out_neg = (T >= lo) | (T <= hi);
   const auto out_of_range = (det > zero) ? out_pos : out_neg;
-  std::uint32_t hit = inside & Bits((det != zero) & ~out_of_range) & ~exact;
+  std::uint32_t hit = inside & Bits<isa>((det != zero) & ~out_of_range) & ~exact;
   if constexpr (closest) {
     const V8 inv_det = 1.0f / det;
     t = T * inv_det;
@@ -134,10 +158,11 @@ struct Entry {
   float tnear;
 };
 
-/// Traces one ray through `bvh` (non-empty). Any hit: returns whether the ray hits a triangle
-/// in (tmin, tmax). Closest: also writes the nearest hit to `best`.
-template <bool closest>
-PRT_LANES bool Trace(const WideBvh& bvh, const WideRay& r, float tmax, Hit& best) {
+/// Traces one ray through `bvh` (non-empty) with the slab test `fused` or exact. Any hit:
+/// returns whether the ray hits a triangle in (tmin, tmax). Closest: also writes the nearest
+/// hit to `best`.
+template <Isa isa, bool closest, bool fused>
+PRT_LANES bool TraceWith(const WideBvh& bvh, const WideRay& r, float tmax, Hit& best) {
   Entry stack[kStackSize];
   int top = 0;
   WideRef cur = 0;
@@ -147,7 +172,7 @@ PRT_LANES bool Trace(const WideBvh& bvh, const WideRay& r, float tmax, Hit& best
     // Down the tree: one entered child next, the others on the stack.
     while (!IsLeaf(cur)) {
       V8 tn;
-      std::uint32_t mask = BoxHits(nodes[cur], r, tmax, tn);
+      std::uint32_t mask = BoxHits<isa, fused>(nodes[cur], r, tmax, tn);
       const WideRef* child = nodes[cur].child;
       if (mask == 0) goto pop;
       // Start fetching every entered child now; the choice below hides part of the latency.
@@ -191,7 +216,7 @@ PRT_LANES bool Trace(const WideBvh& bvh, const WideRay& r, float tmax, Hit& best
       const std::uint32_t count = LeafBlockCount(cur);
       for (std::uint32_t k = 0; k < count; ++k) {
         V8 t, u, v;
-        const std::uint32_t hit = BlockHits<closest>(b[k], r, tmax, t, u, v);
+        const std::uint32_t hit = BlockHits<isa, closest>(b[k], r, tmax, t, u, v);
         if (hit == 0) continue;
         if constexpr (!closest) {
           return true;
@@ -216,6 +241,16 @@ PRT_LANES bool Trace(const WideBvh& bvh, const WideRay& r, float tmax, Hit& best
       break;
     }
   }
+}
+
+/// Traces one ray: the fused slab test where the instruction set has it and it is conservative
+/// for this ray, else the exact one (the answers are the same; see bvh_wide.h).
+template <Isa isa, bool closest>
+PRT_LANES bool Trace(const WideBvh& bvh, const WideRay& r, float tmax, Hit& best) {
+  if constexpr (lanes::IsWide(isa)) {
+    if (r.fused_ok) return TraceWith<isa, closest, true>(bvh, r, tmax, best);
+  }
+  return TraceWith<isa, closest, false>(bvh, r, tmax, best);
 }
 
 }  // namespace wide

@@ -1,15 +1,23 @@
 #pragma once
 /// \file
-/// Eight float lanes for the wide BVH (internal to src/geometry): GCC/Clang vector types, which
-/// compile to one AVX register where the function is compiled for AVX2 (core/simd.h), to two
-/// SSE registers on the baseline x86-64 and to NEON pairs elsewhere, with the few operations
-/// the traversal needs. Min and Max keep std::min/std::max's answer lane by lane, so the vector
-/// slab test decides exactly as the scalar one of `box_test.h` [1].
+/// Eight float lanes for the wide BVH (internal to src/geometry): GCC/Clang vector types with
+/// the few operations the traversal needs. Min and Max keep std::min/std::max's answer lane by
+/// lane, so the vector slab test decides exactly as the scalar one of `box_test.h` [1].
 ///
-/// Known cost: without AVX (the baseline clone on a CPU older than 2013, and the sanitizer
-/// builds, which compile no clones) GCC lowers eight-lane comparisons and selects lane by lane.
-/// Measured on the PRT workload: 0.7 million occlusion rays per second per core there against
-/// 4.1 with AVX2 (the earlier 4-wide tree reached 2.0 on either path).
+/// The same code is compiled once per instruction set (bvh_kernels.cpp): inside a function
+/// compiled for x86-64-v3 (AVX2, FMA) or x86-64-v4 (AVX-512) a V8 is one register; on the
+/// baseline x86-64 it is two SSE registers, on ARM two NEON registers. Two operations differ by
+/// instruction set and take it as a template argument, because the instruction that does them
+/// in one step only exists in the wider sets:
+///  - Bits: one `vmovmskps` on AVX, two SSE movemasks and a shift on the baseline (measured on
+///    the PRT workload: the single instruction is worth 4-5 % of the occlusion rate);
+///  - MulSub (a b - c): one fused multiply-add on AVX2, used only by the slab test, whose boxes
+///    are padded for it (bvh_wide.h); the triangle test never fuses, so hits stay bit-identical
+///    on every instruction set.
+///
+/// Known cost: the baseline lowers eight-lane comparisons and selects lane by lane (measured:
+/// 0.7 million occlusion rays per second per core against 5-6 with AVX2). Every x86 CPU since
+/// 2013 runs the AVX2 code; the baseline serves older ones and other architectures.
 ///
 /// References
 ///  [1] T. Ize, "Robust BVH Ray Traversal", Journal of Computer Graphics Techniques 2(2), 2013.
@@ -21,7 +29,10 @@
 #include <immintrin.h>
 #endif
 
-// Lane helpers are internal and forced inline so lanes stay in registers.
+#include "geometry/isa.h"
+
+// Lane helpers are internal and forced inline, so lanes stay in registers and the code takes
+// the instruction set of the kernel that inlines it.
 #define PRT_LANES inline __attribute__((always_inline))
 
 namespace prt::lanes {
@@ -43,17 +54,34 @@ PRT_LANES V8 Min(V8 a, V8 b) { return b < a ? b : a; }
 PRT_LANES V8 Max(V8 a, V8 b) { return a < b ? b : a; }
 
 /// Bit l set iff lane l of the mask is set.
+template <Isa isa>
 PRT_LANES std::uint32_t Bits(M8 m) {
-#if defined(__SSE2__)
-  __m128 lo, hi;  // movemask per half: one instruction each, also on the baseline target
-  std::memcpy(&lo, &m, sizeof lo);
-  std::memcpy(&hi, reinterpret_cast<const char*>(&m) + sizeof lo, sizeof hi);
-  return static_cast<std::uint32_t>(_mm_movemask_ps(lo)) | (static_cast<std::uint32_t>(_mm_movemask_ps(hi)) << 4);
+#if defined(__x86_64__)
+  if constexpr (IsWide(isa)) {
+    V8 f;
+    std::memcpy(&f, &m, sizeof f);
+    return static_cast<std::uint32_t>(__builtin_ia32_movmskps256(f));
+  } else {
+    __m128 lo, hi;  // movemask per half: one instruction each on the baseline
+    std::memcpy(&lo, &m, sizeof lo);
+    std::memcpy(&hi, reinterpret_cast<const char*>(&m) + sizeof lo, sizeof hi);
+    return static_cast<std::uint32_t>(_mm_movemask_ps(lo)) | (static_cast<std::uint32_t>(_mm_movemask_ps(hi)) << 4);
+  }
 #else
   std::uint32_t b = 0;
   for (int l = 0; l < kLanes; ++l) b |= (m[l] != 0 ? 1u : 0u) << l;
   return b;
 #endif
+}
+
+/// a * b - c per lane with one rounding (fused multiply-add). Only for wide kernels, which
+/// compile it to one `vfmsub` (the baseline would call the C library's fmaf per lane).
+template <Isa isa>
+PRT_LANES V8 MulSub(V8 a, float b, float c) {
+  static_assert(IsWide(isa), "fused multiply-add is only used where the hardware has it");
+  V8 r;
+  for (int l = 0; l < kLanes; ++l) r[l] = __builtin_fmaf(a[l], b, -c);
+  return r;
 }
 
 }  // namespace prt::lanes

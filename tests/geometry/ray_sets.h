@@ -1,6 +1,7 @@
 #pragma once
 // Seeded ray sets shared by the geometry tests: meshes to test on, random rays, rays aimed
-// exactly at vertices and along edges, and a spherical Fibonacci direction set.
+// exactly at vertices and along edges, a spherical Fibonacci direction set, and a loop over
+// the instruction sets traversal is compiled for.
 #include <cmath>
 #include <string>
 #include <vector>
@@ -8,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/rng.h"
+#include "geometry/bvh_kernels.h"
 #include "geometry/mesh.h"
 #include "geometry/mesh_ops.h"
 #include "geometry/procedural.h"
@@ -95,6 +97,18 @@ inline std::vector<glm::vec3> FibonacciDirections(int n) {
                    static_cast<float>(z));
   }
   return d;
+}
+
+// Runs body(name) once with each instruction set this CPU can traverse with (bvh_kernels.h),
+// best first, then returns traversal to the best one. Every set must give the same answers.
+template <class F>
+void ForEachIsa(const F& body) {
+  const std::vector<lanes::Isa> isas = SupportedIsas();
+  for (const lanes::Isa isa : isas) {
+    UseIsa(isa);
+    body(std::string(IsaName(isa)));
+  }
+  UseIsa(isas.front());
 }
 
 }  // namespace prt::test

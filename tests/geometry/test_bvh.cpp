@@ -50,109 +50,118 @@ void Compare(const std::optional<Hit>& got, const std::optional<Hit>& want, Tall
 }  // namespace
 
 TEST_SUITE("geometry") {
-  TEST_CASE("bvh agrees with brute force on 104k seeded rays, edges and vertices included") {
-    int total = 0;
-    for (const auto& [name, mesh] : test::TestMeshes()) {
-      CAPTURE(name);
-      const Bvh bvh = Bvh::Build(mesh);
-      const BruteForceCaster reference(mesh);
-      Tally tally;
-      int occluded_disagreements = 0;
-      for (const Ray& ray : test::DifferentialRays(mesh, 26000, 1234)) {
-        const auto want = reference.Intersect(ray);
-        Compare(bvh.Intersect(ray), want, tally);
-        if (bvh.Occluded(ray) != want.has_value()) ++occluded_disagreements;
-        if (reference.Occluded(ray) != want.has_value()) ++occluded_disagreements;
-      }
-      total += tally.rays;
-      MESSAGE(name << ": " << tally.rays << " rays, " << tally.hits << " hits, " << tally.ties << " ties");
-      CHECK(tally.hits > tally.rays / 10);  // the rays do exercise the mesh
-      CHECK(occluded_disagreements == 0);
-      CHECK(tally.hit_miss_disagreements == 0);
-      CHECK(tally.id_disagreements == 0);
-      CHECK(tally.distance_disagreements == 0);
-    }
-    CHECK(total >= 100000);
-  }
-
-  TEST_CASE("fan traversal agrees with brute force ray by ray") {
-    const RayFan fan = MakeRayFan(test::FibonacciDirections(256));
-    for (const auto& [name, mesh] : test::TestMeshes()) {
-      CAPTURE(name);
-      const Bvh bvh = Bvh::Build(mesh);
-      const BruteForceCaster reference(mesh);
-      Pcg32 rng(99, 1);
-      Tally tally;
-      int occluded_disagreements = 0;
-      std::vector<std::uint8_t> occluded;
-      std::vector<std::optional<Hit>> hits;
-      for (int k = 0; k < 40; ++k) {
-        // Half the origins sit just off a vertex (the PRT case), half anywhere near the mesh.
-        const std::size_t vi = rng.NextU32() % mesh.vertex_count();
-        const glm::vec3 normal = k % 2 == 0 ? mesh.normals[vi] : test::UniformSphere(rng);
-        const glm::vec3 origin = k % 2 == 0 ? OffsetRayOrigin(mesh.positions[vi], normal, bvh.SceneScale())
-                                            : mesh.positions[vi] + 0.3f * test::UniformSphere(rng);
-        const float tmax = k % 3 == 0 ? 0.7f : std::numeric_limits<float>::infinity();
-        bvh.OccludedFan(fan, origin, normal, tmax, occluded);
-        bvh.IntersectFan(fan, origin, normal, tmax, hits);
-        for (std::size_t i = 0; i < fan.directions.size(); ++i) {
-          const glm::vec3 d = fan.directions[i];
-          const bool above = normal.x * d.x + normal.y * d.y + normal.z * d.z > 0.0f;
-          const Ray ray{origin, d, 0.0f, tmax};
-          const auto want = above ? reference.Intersect(ray) : std::nullopt;
-          Compare(hits[i], want, tally);
-          if ((occluded[i] != 0) != want.has_value()) ++occluded_disagreements;
+  TEST_CASE("bvh agrees with brute force on 104k seeded rays, edges and vertices included, on every instruction set") {
+    test::ForEachIsa([](const std::string& isa) {
+      CAPTURE(isa);
+      int total = 0;
+      for (const auto& [name, mesh] : test::TestMeshes()) {
+        CAPTURE(name);
+        const Bvh bvh = Bvh::Build(mesh);
+        const BruteForceCaster reference(mesh);
+        Tally tally;
+        int occluded_disagreements = 0;
+        for (const Ray& ray : test::DifferentialRays(mesh, 26000, 1234)) {
+          const auto want = reference.Intersect(ray);
+          Compare(bvh.Intersect(ray), want, tally);
+          if (bvh.Occluded(ray) != want.has_value()) ++occluded_disagreements;
+          if (reference.Occluded(ray) != want.has_value()) ++occluded_disagreements;
         }
+        total += tally.rays;
+        MESSAGE(isa << ", " << name << ": " << tally.rays << " rays, " << tally.hits << " hits, " << tally.ties << " ties");
+        CHECK(tally.hits > tally.rays / 10);  // the rays do exercise the mesh
+        CHECK(occluded_disagreements == 0);
+        CHECK(tally.hit_miss_disagreements == 0);
+        CHECK(tally.id_disagreements == 0);
+        CHECK(tally.distance_disagreements == 0);
       }
-      CHECK(tally.hits > 0);
-      CHECK(occluded_disagreements == 0);
-      CHECK(tally.hit_miss_disagreements == 0);
-      CHECK(tally.id_disagreements == 0);
-      CHECK(tally.distance_disagreements == 0);
-    }
+      CHECK(total >= 100000);
+    });
   }
 
-  TEST_CASE("watertight: rays from inside closed meshes through vertices and edges never leak") {
-    const RayFan fan = MakeRayFan(test::FibonacciDirections(512));
-    struct Case {
-      Mesh mesh;
-      glm::vec3 inside;
-    };
-    const std::vector<Case> cases = {
-        {MakeSphere(40, 1.0f), glm::vec3(0.0f)},
-        {MakeSphere(40, 1.0f), glm::vec3(0.3f, 0.2f, -0.1f)},
-        {MakeBox(glm::vec3(-1.0f), glm::vec3(1.0f), BoxFacing::kOutward, 4), glm::vec3(0.0f)},
-        {MakeTorusKnot(2, 3, 0.16f, 96, 12), glm::vec3(2.0f / 3.0f + 1.0f / 3.0f, 0.0f, 0.0f)}};
-    for (std::size_t k = 0; k < cases.size(); ++k) {
-      CAPTURE(k);
-      const Mesh& m = cases[k].mesh;
-      const Bvh bvh = Bvh::Build(m);
-      const BruteForceCaster reference(m);
-      int leaks = 0, rays = 0;
-      // Exactly at every vertex, and at points of every edge (midpoint and a random fraction).
-      Pcg32 rng(5, k);
-      for (const auto& t : m.triangles) {
-        for (int c = 0; c < 3; ++c) {
-          const glm::vec3 a = m.positions[t[c]], b = m.positions[t[(c + 1) % 3]];
-          for (const glm::vec3 target : {a, 0.5f * (a + b), a + static_cast<float>(rng.NextDouble()) * (b - a)}) {
-            const Ray ray{cases[k].inside, target - cases[k].inside};
-            leaks += bvh.Occluded(ray) ? 0 : 1;
-            leaks += bvh.Intersect(ray) ? 0 : 1;
-            leaks += reference.Occluded(ray) ? 0 : 1;
-            rays += 3;
+  TEST_CASE("fan traversal agrees with brute force ray by ray, on every instruction set") {
+    const RayFan fan = MakeRayFan(test::FibonacciDirections(256));
+    test::ForEachIsa([&](const std::string& isa) {
+      CAPTURE(isa);
+      for (const auto& [name, mesh] : test::TestMeshes()) {
+        CAPTURE(name);
+        const Bvh bvh = Bvh::Build(mesh);
+        const BruteForceCaster reference(mesh);
+        Pcg32 rng(99, 1);
+        Tally tally;
+        int occluded_disagreements = 0;
+        std::vector<std::uint8_t> occluded;
+        std::vector<std::optional<Hit>> hits;
+        for (int k = 0; k < 40; ++k) {
+          // Half the origins sit just off a vertex (the PRT case), half anywhere near the mesh.
+          const std::size_t vi = rng.NextU32() % mesh.vertex_count();
+          const glm::vec3 normal = k % 2 == 0 ? mesh.normals[vi] : test::UniformSphere(rng);
+          const glm::vec3 origin = k % 2 == 0 ? OffsetRayOrigin(mesh.positions[vi], normal, bvh.SceneScale())
+                                              : mesh.positions[vi] + 0.3f * test::UniformSphere(rng);
+          const float tmax = k % 3 == 0 ? 0.7f : std::numeric_limits<float>::infinity();
+          bvh.OccludedFan(fan, origin, normal, tmax, occluded);
+          bvh.IntersectFan(fan, origin, normal, tmax, hits);
+          for (std::size_t i = 0; i < fan.directions.size(); ++i) {
+            const glm::vec3 d = fan.directions[i];
+            const bool above = normal.x * d.x + normal.y * d.y + normal.z * d.z > 0.0f;
+            const Ray ray{origin, d, 0.0f, tmax};
+            const auto want = above ? reference.Intersect(ray) : std::nullopt;
+            Compare(hits[i], want, tally);
+            if ((occluded[i] != 0) != want.has_value()) ++occluded_disagreements;
           }
         }
+        CHECK(tally.hits > 0);
+        CHECK(occluded_disagreements == 0);
+        CHECK(tally.hit_miss_disagreements == 0);
+        CHECK(tally.id_disagreements == 0);
+        CHECK(tally.distance_disagreements == 0);
       }
-      // And a full fan from the inside point.
-      std::vector<std::uint8_t> occluded;
-      for (const glm::vec3 n : {glm::vec3(0, 1, 0), glm::vec3(0, -1, 0)}) {
-        bvh.OccludedFan(fan, cases[k].inside, n, std::numeric_limits<float>::infinity(), occluded);
-        for (std::size_t i = 0; i < occluded.size(); ++i)
-          if (glm::dot(n, fan.directions[i]) > 0.0f) leaks += occluded[i] ? 0 : 1, ++rays;
+    });
+  }
+
+  TEST_CASE("watertight: rays from inside closed meshes through vertices and edges never leak, on every instruction set") {
+    const RayFan fan = MakeRayFan(test::FibonacciDirections(512));
+    test::ForEachIsa([&](const std::string& isa) {
+      CAPTURE(isa);
+      struct Case {
+        Mesh mesh;
+        glm::vec3 inside;
+      };
+      const std::vector<Case> cases = {
+          {MakeSphere(40, 1.0f), glm::vec3(0.0f)},
+          {MakeSphere(40, 1.0f), glm::vec3(0.3f, 0.2f, -0.1f)},
+          {MakeBox(glm::vec3(-1.0f), glm::vec3(1.0f), BoxFacing::kOutward, 4), glm::vec3(0.0f)},
+          {MakeTorusKnot(2, 3, 0.16f, 96, 12), glm::vec3(2.0f / 3.0f + 1.0f / 3.0f, 0.0f, 0.0f)}};
+      for (std::size_t k = 0; k < cases.size(); ++k) {
+        CAPTURE(k);
+        const Mesh& m = cases[k].mesh;
+        const Bvh bvh = Bvh::Build(m);
+        const BruteForceCaster reference(m);
+        int leaks = 0, rays = 0;
+        // Exactly at every vertex, and at points of every edge (midpoint and a random fraction).
+        Pcg32 rng(5, k);
+        for (const auto& t : m.triangles) {
+          for (int c = 0; c < 3; ++c) {
+            const glm::vec3 a = m.positions[t[c]], b = m.positions[t[(c + 1) % 3]];
+            for (const glm::vec3 target : {a, 0.5f * (a + b), a + static_cast<float>(rng.NextDouble()) * (b - a)}) {
+              const Ray ray{cases[k].inside, target - cases[k].inside};
+              leaks += bvh.Occluded(ray) ? 0 : 1;
+              leaks += bvh.Intersect(ray) ? 0 : 1;
+              leaks += reference.Occluded(ray) ? 0 : 1;
+              rays += 3;
+            }
+          }
+        }
+        // And a full fan from the inside point.
+        std::vector<std::uint8_t> occluded;
+        for (const glm::vec3 n : {glm::vec3(0, 1, 0), glm::vec3(0, -1, 0)}) {
+          bvh.OccludedFan(fan, cases[k].inside, n, std::numeric_limits<float>::infinity(), occluded);
+          for (std::size_t i = 0; i < occluded.size(); ++i)
+            if (glm::dot(n, fan.directions[i]) > 0.0f) leaks += occluded[i] ? 0 : 1, ++rays;
+        }
+        CHECK(rays > 1000);
+        CHECK(leaks == 0);
       }
-      CHECK(rays > 1000);
-      CHECK(leaks == 0);
-    }
+    });
   }
 
   TEST_CASE("no self-shadowing on a lone convex mesh at scales 1e-4, 1 and 1e4") {
