@@ -82,10 +82,12 @@ struct alignas(64) WideNode {
 static_assert(sizeof(WideNode) == 256, "WideNode must stay four cache lines");
 
 /// Eight triangles, corner c, axis a, lane l at p[c][a][l]; `id` is the mesh's triangle index.
-struct alignas(32) TriangleBlock {
+/// Aligned to cache lines, so a block test touches exactly its five lines.
+struct alignas(64) TriangleBlock {
   float p[3][3][kBlockWidth];
   std::uint32_t id[kBlockWidth];
 };
+static_assert(sizeof(TriangleBlock) == 320, "TriangleBlock must stay five cache lines");
 
 /// The collapsed tree: nodes[0] is the root (always interior, even for a one-leaf tree).
 struct WideBvh {

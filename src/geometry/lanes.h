@@ -10,14 +10,15 @@
 /// instruction set and take it as a template argument, because the instruction that does them
 /// in one step only exists in the wider sets:
 ///  - Bits: one `vmovmskps` on AVX, two SSE movemasks and a shift on the baseline (measured on
-///    the PRT workload: the single instruction is worth 4-5 % of the occlusion rate);
+///    the PRT workload: the single instruction is worth 3-5 % of the occlusion rate);
 ///  - MulSub (a b - c): one fused multiply-add on AVX2, used only by the slab test, whose boxes
 ///    are padded for it (bvh_wide.h); the triangle test never fuses, so hits stay bit-identical
 ///    on every instruction set.
 ///
-/// Known cost: the baseline lowers eight-lane comparisons and selects lane by lane (measured:
-/// 0.7 million occlusion rays per second per core against 5-6 with AVX2). Every x86 CPU since
-/// 2013 runs the AVX2 code; the baseline serves older ones and other architectures.
+/// Known cost: the baseline lowers eight-lane comparisons and selects lane by lane, at about a
+/// fifth of the AVX2 rate (measured one after the other on the knot: 0.8 against 4.4 million
+/// occlusion rays per second per core). Every x86 CPU since 2013 runs the AVX2 code; the
+/// baseline serves older ones and other architectures.
 ///
 /// References
 ///  [1] T. Ize, "Robust BVH Ray Traversal", Journal of Computer Graphics Techniques 2(2), 2013.
