@@ -5,10 +5,10 @@
 ///
 /// Everything per direction that traversal needs (the inverse for the slab test, the axis
 /// permutation and shear of the watertight triangle test [1]) is computed here once instead of
-/// once per ray. The rays are traced one at a time (`bvh_kernels.cpp`) in an order that keeps
-/// successive directions close: by the cube face the direction goes through, then in Morton
-/// order of its position on that face, so consecutive rays from one vertex revisit the nodes
-/// the previous ray brought into the cache.
+/// once per ray. The rays are kept in an order that keeps successive directions close: by the
+/// cube face the direction goes through, then in Morton order of its position on that face, so
+/// eight consecutive directions make a coherent packet for occlusion (bvh_packet_traverse.h)
+/// and consecutive single rays revisit the nodes the previous one brought into the cache.
 ///
 /// References
 ///  [1] S. Woop, C. Benthin, I. Wald, "Watertight Ray/Triangle Intersection", JCGT 2(1), 2013.

@@ -8,11 +8,13 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 #include "geometry/brute_force.h"
 #include "geometry/bvh.h"
 #include "geometry/mesh_ops.h"
 #include "geometry/procedural.h"
+#include "geometry/ray_fan.h"
 #include "tests/geometry/ray_sets.h"
 
 namespace prt {
@@ -130,7 +132,7 @@ TEST_SUITE("geometry") {
     });
   }
 
-  TEST_CASE("wide bvh: rays the fused slab test does not cover (far origins, almost axis-parallel directions) agree with brute force") {
+  TEST_CASE("wide bvh: rays and fans the fused slab test does not cover (far origins, almost axis-parallel directions) agree with brute force") {
     const Mesh mesh = MakeTorusKnot(2, 3, 0.16f, 96, 12);
     const Bvh bvh = Bvh::Build(mesh);
     const BruteForceCaster reference(mesh);
@@ -161,6 +163,20 @@ TEST_SUITE("geometry") {
       }
       CHECK(hits > static_cast<int>(rays.size()) / 2);
       CHECK(disagreements == 0);
+      // A fan from beyond the bound: its packets take the exact test too.
+      const RayFan fan = MakeRayFan(test::FibonacciDirections(4096));
+      const glm::vec3 origin(3.0f * bound, 0.5f, 0.25f), towards(-1.0f, 0.0f, 0.0f);
+      std::vector<std::uint8_t> occluded;
+      bvh.OccludedFan(fan, origin, towards, std::numeric_limits<float>::infinity(), occluded);
+      int fan_disagreements = 0, fan_hits = 0;
+      for (std::size_t i = 0; i < fan.directions.size(); ++i) {
+        const bool above = glm::dot(towards, fan.directions[i]) > 0.0f;
+        const bool want = above && reference.Occluded(Ray{origin, fan.directions[i]});
+        fan_hits += want ? 1 : 0;
+        fan_disagreements += (occluded[i] != 0) != want ? 1 : 0;
+      }
+      CHECK(fan_hits > 0);
+      CHECK(fan_disagreements == 0);
     });
   }
 }
