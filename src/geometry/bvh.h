@@ -15,12 +15,12 @@
 /// longest axis, so leaves never exceed max_leaf_size and the depth stays below 128.
 ///
 /// Traversal runs on an 8-wide tree collapsed from the binary one (`bvh_wide.h`,
-/// `bvh_wide_traverse.h`; fans of occlusion rays in packets of eight, `bvh_packet_traverse.h`), with the robust slab test of [3] (the far distance is enlarged by
+/// `bvh_wide_traverse.h`), with the robust slab test of [3] (the far distance is enlarged by
 /// 2 gamma(3) so rounding never culls a box the ray truly touches; on AVX2 a fused test on
 /// padded boxes) and the watertight triangle test of `triangle.h` on eight triangles at once.
 /// Each traversal is compiled for AVX-512, AVX2 and the baseline, chosen per CPU
-/// (`bvh_kernels.h`). The fans (`ray_fan.h`) trace each of their directions with the
-/// per-direction constants computed once.
+/// (`bvh_kernels.h`). The fans (`ray_fan.h`) use per-direction constants computed once, and
+/// trace occlusion in packets of eight neighbouring directions (`bvh_packet_traverse.h`).
 ///
 /// References
 ///  [1] J. D. MacDonald, K. S. Booth, "Heuristics for ray tracing using space subdivision",
