@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <memory>
 
 #include <stb_image.h>
@@ -51,8 +52,7 @@ bool IsExr(const std::string& path) { return Lower(fs::path(path).extension().st
 // forever. So the payload is walked here first, exactly as stb will read it, and a file that
 // ends early or has a zero-length run is an error. Other faults (a scanline of the wrong
 // length, a run past the end of the line) stb reports itself.
-void CheckHdrPayload(const std::string& path, long long width, long long height) {
-  const std::string bytes = ReadFile(path);
+void CheckHdrPayload(const std::string& path, const std::string& bytes, long long width, long long height) {
   auto fail = [&](const std::string& problem) {
     throw Error(path + ": truncated or corrupt HDR image (" + problem + "; expected " +
                 std::to_string(width) + "x" + std::to_string(height) + " RGBE pixels)");
@@ -96,13 +96,11 @@ void CheckHdrPayload(const std::string& path, long long width, long long height)
 }
 
 // stb's info call gives "unknown image type" for a PNG larger than it decodes; read the size
-// from the IHDR chunk then, so the message says what is wrong.
-void CheckPngHeaderSize(const std::string& path) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) return;
+// from the IHDR chunk of the file's first bytes then, so the message says what is wrong.
+void CheckPngHeaderSize(const std::string& path, const std::string& head) {
   unsigned char h[24] = {};
-  const std::size_t n = std::fread(h, 1, sizeof h, f);
-  std::fclose(f);
+  const std::size_t n = std::min(head.size(), sizeof h);
+  std::memcpy(h, head.data(), n);
   static const unsigned char kSignature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
   if (n < sizeof h || std::memcmp(h, kSignature, 8) != 0 || std::memcmp(h + 12, "IHDR", 4) != 0) return;
   auto be32 = [&](int i) {
@@ -137,27 +135,43 @@ ImageF LoadExr(const std::string& path) {
   }
 }
 
+// The first `count` bytes of the file (fewer if it is shorter).
+std::string ReadHead(const std::string& path, std::size_t count) {
+  std::string head(count, '\0');
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return {};
+  head.resize(std::fread(head.data(), 1, count, f));
+  std::fclose(f);
+  return head;
+}
+
+// The file read once, then decoded from memory.
 ImageF LoadStb(const std::string& path, LdrDecode ldr) {
+  const std::string file = ReadFile(path);
+  if (file.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw Error(path + ": file of " + std::to_string(file.size()) + " bytes is too large for an image");
+  const auto* bytes = reinterpret_cast<const stbi_uc*>(file.data());
+  const int size = static_cast<int>(file.size());
   int w = 0, h = 0, n = 0;
-  if (!stbi_info(path.c_str(), &w, &h, &n)) {
+  if (!stbi_info_from_memory(bytes, size, &w, &h, &n)) {
     const std::string reason = stbi_failure_reason();
-    CheckPngHeaderSize(path);
+    CheckPngHeaderSize(path, file);
     throw Error(path + ": not a readable image (" + reason + "; expected jpg, png, hdr or exr)");
   }
   CheckSize(path, w, h);
-  const bool hdr = stbi_is_hdr(path.c_str());
-  if (hdr) CheckHdrPayload(path, w, h);
+  const bool hdr = stbi_is_hdr_from_memory(bytes, size);
+  if (hdr) CheckHdrPayload(path, file, w, h);
   ImageF image(w, h);
   const std::size_t count = static_cast<std::size_t>(w) * h;
   if (hdr) {
-    std::unique_ptr<float, void (*)(void*)> data(stbi_loadf(path.c_str(), &w, &h, &n, 3), stbi_image_free);
+    std::unique_ptr<float, void (*)(void*)> data(stbi_loadf_from_memory(bytes, size, &w, &h, &n, 3), stbi_image_free);
     if (!data) throw Error(path + ": truncated or corrupt HDR image (" + stbi_failure_reason() + ")");
     for (std::size_t i = 0; i < count; ++i)
       image.pixels[i] = {data.get()[3 * i], data.get()[3 * i + 1], data.get()[3 * i + 2]};
     return image;
   }
   // LDR: decode through a lookup table of the transfer curve.
-  const bool sixteen = stbi_is_16_bit(path.c_str());
+  const bool sixteen = stbi_is_16_bit_from_memory(bytes, size);
   const int levels = sixteen ? 65536 : 256;
   std::vector<float> lut(levels);
   for (int i = 0; i < levels; ++i) {
@@ -165,12 +179,12 @@ ImageF LoadStb(const std::string& path, LdrDecode ldr) {
     lut[i] = float(ldr == LdrDecode::kSrgb ? SrgbToLinear(c) : std::pow(c, 2.2));
   }
   if (sixteen) {
-    std::unique_ptr<stbi_us, void (*)(void*)> data(stbi_load_16(path.c_str(), &w, &h, &n, 3), stbi_image_free);
+    std::unique_ptr<stbi_us, void (*)(void*)> data(stbi_load_16_from_memory(bytes, size, &w, &h, &n, 3), stbi_image_free);
     if (!data) throw Error(path + ": truncated or corrupt image (" + stbi_failure_reason() + ")");
     for (std::size_t i = 0; i < count; ++i)
       image.pixels[i] = {lut[data.get()[3 * i]], lut[data.get()[3 * i + 1]], lut[data.get()[3 * i + 2]]};
   } else {
-    std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load(path.c_str(), &w, &h, &n, 3), stbi_image_free);
+    std::unique_ptr<stbi_uc, void (*)(void*)> data(stbi_load_from_memory(bytes, size, &w, &h, &n, 3), stbi_image_free);
     if (!data) throw Error(path + ": truncated or corrupt image (" + stbi_failure_reason() + ")");
     for (std::size_t i = 0; i < count; ++i)
       image.pixels[i] = {lut[data.get()[3 * i]], lut[data.get()[3 * i + 1]], lut[data.get()[3 * i + 2]]};
@@ -199,7 +213,7 @@ void ImageSize(const std::string& path, int& width, int& height) {
   }
   int n = 0;
   if (!stbi_info(path.c_str(), &width, &height, &n)) {
-    CheckPngHeaderSize(path);
+    CheckPngHeaderSize(path, ReadHead(path, 24));
     throw Error(path + ": not a readable image (expected jpg, png, hdr or exr)");
   }
 }
