@@ -27,27 +27,29 @@ using lanes::Isa;
 
 // The bodies, inlined into each instruction set's kernel below. Directions at or below the
 // horizon of `normal` cast no ray.
+// Traces the packet rays[0, n) and writes each ray's answer to occluded[index[r]].
+template <Isa isa>
+PRT_LANES void TracePacket(const WideBvh& bvh, const WideRay* rays, const std::uint32_t* index, int n, float tmax,
+                           std::uint8_t* occluded) {
+  const std::uint32_t hit = wide::OccludedPacket<isa>(bvh, rays, n, tmax);
+  for (int r = 0; r < n; ++r) occluded[index[r]] = static_cast<std::uint8_t>((hit >> r) & 1u);
+}
+
 template <Isa isa>
 PRT_LANES void OccludedFanBody(const WideBvh& bvh, const RayFan& fan, const glm::vec3& origin, const glm::vec3& normal,
                                float tmax, std::uint8_t* occluded) {
   WideRay rays[wide::kPacketSize];
   std::uint32_t index[wide::kPacketSize];
   int n = 0;
-  // (No lambda for the packet's tracing: a lambda is a function of its own, compiled for the
-  // baseline, and would not take the kernel's instruction set.)
-  for (std::size_t i = 0; i <= fan.rays.size(); ++i) {
-    if (i < fan.rays.size()) {
-      const FanRay& f = fan.rays[i];
-      if (!(glm::dot(normal, f.dir) > 0.0f)) continue;
-      rays[n] = MakeWideRay(bvh, origin, f.inv, f.shear, 0.0f);
-      index[n++] = f.index;
-      if (n < wide::kPacketSize) continue;  // a full packet, or the fan's last rays
-    }
-    if (n == 0) break;
-    const std::uint32_t hit = wide::OccludedPacket<isa>(bvh, rays, n, tmax);
-    for (int r = 0; r < n; ++r) occluded[index[r]] = static_cast<std::uint8_t>((hit >> r) & 1u);
+  for (const FanRay& f : fan.rays) {
+    if (!(glm::dot(normal, f.dir) > 0.0f)) continue;
+    rays[n] = MakeWideRay(bvh, origin, f.inv, f.shear, 0.0f);
+    index[n++] = f.index;
+    if (n < wide::kPacketSize) continue;
+    TracePacket<isa>(bvh, rays, index, n, tmax, occluded);
     n = 0;
   }
+  if (n > 0) TracePacket<isa>(bvh, rays, index, n, tmax, occluded);  // the fan's last rays
 }
 
 template <Isa isa>

@@ -12,9 +12,10 @@
 /// A ray therefore tests exactly the boxes and triangles it would alone, in the same order of
 /// leaves up to its first hit, and gets the same answer; what the rays share is the node
 /// fetch, the stack and the branches. Measured on the PRT workload (knot, 1 thread): packets of
-/// eight trace 1.2-1.4x as many occlusion rays per second as single rays; packets of four and
-/// two are slower than single rays (the per-node loop over the set then costs more than it
-/// shares).
+/// eight trace 1.2-1.4x as many occlusion rays per second as single rays. Side by side against
+/// Embree in one process, packets of eight reached 1.44x Embree's rate, packets of four 1.23x
+/// and packets of two 1.00x, about what single rays reach: the fewer rays share a node, the
+/// less the per-node loop over the set saves.
 ///
 /// References
 ///  [1] I. Wald, P. Slusallek, C. Benthin, M. Wagner, "Interactive Rendering with Coherent Ray

@@ -4,10 +4,11 @@
 /// instruction set by bvh_kernels.cpp for Bvh::Occluded, Bvh::Intersect and the fans). Per
 /// node, one SIMD slab test of the eight child boxes [1], fused on AVX2 (bvh_wide.h); of
 /// the children the ray enters, closest hit visits the nearest first and pushes the others with
-/// their entry distance [2], any hit takes them in lane order (see Trace). Per leaf block, the watertight test of `triangle.h` runs on eight triangles at
-/// once with the same operations in the same order as the scalar test, so every hit, miss,
-/// distance and barycentric is bit-identical to IntersectTriangle; lanes with an edge function
-/// of exactly 0 are redone by the scalar test, which refines them in double [3].
+/// their entry distance [2], any hit takes them in lane order (see TraceWith). Per leaf block,
+/// the watertight test of `triangle.h` runs on eight triangles at once with the same
+/// operations in the same order as the scalar test, so every hit, miss, distance and
+/// barycentric is bit-identical to IntersectTriangle; lanes with an edge function of exactly 0
+/// are redone by the scalar test, which refines them in double [3].
 ///
 /// Any hit stops at the first hit. Closest hit shrinks tmax at each hit and skips popped
 /// entries that start beyond it; among triangles of one block at the same distance the first
@@ -142,7 +143,7 @@ PRT_LANES std::uint32_t BlockHits(const TriangleBlock& b, const WideRay& r, floa
   return hit;
 }
 
-/// Asks for the cache lines of child `ref` (a node's two, a leaf's first block's three).
+/// Asks for the cache lines of child `ref`: a node's four, or the five of a leaf's first block.
 PRT_LANES void Prefetch(const WideBvh& bvh, WideRef ref) {
   const char* p = IsLeaf(ref) ? reinterpret_cast<const char*>(bvh.blocks.data() + LeafFirstBlock(ref))
                               : reinterpret_cast<const char*>(bvh.nodes.data() + ref);

@@ -101,14 +101,18 @@ inline std::vector<glm::vec3> FibonacciDirections(int n) {
 
 // Runs body(name) once with each instruction set this CPU can traverse with (bvh_kernels.h),
 // best first, then returns traversal to the best one. Every set must give the same answers.
+// (Also when the body throws: later tests must not run on a slower set by accident.)
 template <class F>
 void ForEachIsa(const F& body) {
   const std::vector<lanes::Isa> isas = SupportedIsas();
+  struct Restore {
+    lanes::Isa best;
+    ~Restore() { UseIsa(best); }
+  } restore{isas.front()};
   for (const lanes::Isa isa : isas) {
     UseIsa(isa);
     body(std::string(IsaName(isa)));
   }
-  UseIsa(isas.front());
 }
 
 }  // namespace prt::test
