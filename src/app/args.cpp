@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/error.h"
 
@@ -16,9 +17,26 @@ std::optional<double> ParseNumber(const std::string& text) {
   return v;
 }
 
-Args::Args(std::string command, const std::vector<std::string>& tokens, std::set<std::string> flags)
-    : command_(std::move(command)), flags_(std::move(flags)) {
-  flags_.insert("--quiet");
+std::string NumberProblem(const std::string& text, bool integer, const std::string& expected) {
+  const auto v = ParseNumber(text);
+  std::string problem = "is out of range";
+  if (!v) problem = "is not a number";
+  else if (integer && std::floor(*v) != *v) problem = "is not an integer";
+  return "'" + text + "' " + problem + " (expected " + expected + ")";
+}
+
+namespace {
+
+std::string Range(double lo, double hi, bool integer) {
+  std::ostringstream ss;
+  ss << (integer ? "an integer" : "a number") << " from " << lo << " to " << hi;
+  return ss.str();
+}
+
+}  // namespace
+
+Args::Args(std::string command, const std::vector<std::string>& tokens, CommandSpec spec)
+    : command_(std::move(command)), spec_(std::move(spec)) {
   for (std::size_t i = 0; i < tokens.size(); ++i) {
     const std::string& t = tokens[i];
     if (t.size() < 3 || t.compare(0, 2, "--") != 0) {
@@ -27,15 +45,17 @@ Args::Args(std::string command, const std::vector<std::string>& tokens, std::set
     }
     std::string name = t;
     std::optional<std::string> value;
-    if (const auto eq = t.find('='); eq != std::string::npos) {
-      name = t.substr(0, eq);
-      value = t.substr(eq + 1);
-    } else if (!flags_.count(name)) {
+    const auto eq = t.find('=');
+    if (eq != std::string::npos) name = t.substr(0, eq), value = t.substr(eq + 1);
+    const OptionSpec* option = spec_.Find(name);
+    if (!option) Fail(UnknownMessage(name, "option", spec_.Names()));
+    const bool flag = option->value.empty();
+    if (flag && value) Fail(name + ": takes no value");
+    if (!flag && !value) {
       if (i + 1 >= tokens.size() || tokens[i + 1].compare(0, 2, "--") == 0)
-        Fail(name + ": missing value");
+        Fail(name + ": missing value (expected " + name + " " + option->value + ")");
       value = tokens[++i];
     }
-    if (flags_.count(name) && value) Fail(name + ": takes no value");
     for (const auto& o : options_)
       if (o.first == name) Fail(name + ": given twice");
     options_.emplace_back(name, value);
@@ -51,6 +71,8 @@ bool Args::Has(const std::string& name) const {
 }
 
 std::optional<std::string> Args::Take(const std::string& name) {
+  if (!Accepts(name))
+    throw std::logic_error("prt " + command_ + " reads " + name + ", which its option table does not list");
   used_.insert(name);
   for (const auto& o : options_)
     if (o.first == name) return o.second ? o.second : std::optional<std::string>("");
@@ -73,12 +95,8 @@ int Args::Int(const std::string& name, int fallback, int lo, int hi) {
   const auto text = String(name);
   if (!text) return fallback;
   const auto v = ParseNumber(*text);
-  if (!v || std::floor(*v) != *v || *v < lo || *v > hi) {
-    std::ostringstream ss;
-    ss << name << ": '" << *text << "' is out of range (expected an integer from " << lo << " to "
-       << hi << ")";
-    Fail(ss.str());
-  }
+  if (!v || std::floor(*v) != *v || *v < lo || *v > hi)
+    Fail(name + ": " + NumberProblem(*text, true, Range(lo, hi, true)));
   return static_cast<int>(*v);
 }
 
@@ -86,12 +104,7 @@ double Args::Double(const std::string& name, double fallback, double lo, double 
   const auto text = String(name);
   if (!text) return fallback;
   const auto v = ParseNumber(*text);
-  if (!v || *v < lo || *v > hi) {
-    std::ostringstream ss;
-    ss << name << ": '" << *text << "' is out of range (expected a number from " << lo << " to "
-       << hi << ")";
-    Fail(ss.str());
-  }
+  if (!v || *v < lo || *v > hi) Fail(name + ": " + NumberProblem(*text, false, Range(lo, hi, false)));
   return *v;
 }
 
@@ -108,7 +121,7 @@ std::optional<glm::dvec3> Args::Vec3(const std::string& name) {
     if (n < 3) out[n] = *v;
     ++n;
   }
-  if (n != 3) Fail(name + ": '" + *text + "' is not three numbers (expected X,Y,Z)");
+  if (n != 3 || text->back() == ',') Fail(name + ": '" + *text + "' is not three numbers (expected X,Y,Z)");
   return out;
 }
 
@@ -119,7 +132,9 @@ std::string Args::Choice(const std::string& name, const std::string& fallback,
     if (c == v) return v;
   std::string list;
   for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
-  Fail(name + ": unknown value '" + v + "' (expected one of " + list + ")");
+  const std::string near = NearestName(v, choices);
+  Fail(name + ": unknown value '" + v + "' (" + (near.empty() ? "" : "did you mean " + near + "? ") +
+       "expected one of " + list + ")");
 }
 
 std::vector<std::string> Args::TakePositionals() {
@@ -129,14 +144,14 @@ std::vector<std::string> Args::TakePositionals() {
 
 void Args::Finish() const {
   for (const auto& o : options_)
-    if (!used_.count(o.first)) Fail(o.first + ": unknown option");
+    if (!used_.count(o.first)) Fail(o.first + ": not used by prt " + command_ + " with these options");
   if (!positionals_taken_ && !positionals_.empty())
-    Fail("'" + positionals_.front() + "': unexpected argument");
+    Fail("'" + positionals_.front() + "': unexpected argument (options start with --)");
 }
 
-void Args::RejectUnknown(const std::set<std::string>& known) const {
+void Args::RejectOutside(const std::set<std::string>& used, const std::string& why) const {
   for (const auto& o : options_)
-    if (!known.count(o.first)) Fail(o.first + ": unknown option");
+    if (!used.count(o.first)) Fail(o.first + ": " + why);
 }
 
 void Args::Allow(const std::set<std::string>& names) { used_.insert(names.begin(), names.end()); }

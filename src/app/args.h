@@ -1,11 +1,13 @@
 #pragma once
 /// \file
-/// The command-line reader shared by every command. A command asks for the options it knows;
-/// anything left over is a usage error, so a typo never passes silently.
+/// The command-line reader shared by every command. It accepts exactly the options of the
+/// command's table (option_table.h), the same table `prt help COMMAND` prints: an option not in
+/// it is a usage error that names the nearest valid one, and reading an option the table does
+/// not list is a programming error (std::logic_error), so the help cannot miss an option.
 ///
-///   Args args("light", tokens, {"--games202-faces"});   // the command's value-less flags
+///   Args args("light", tokens, LightSpec());
 ///   int lmax = args.Int("--lmax", 2, 0, kMaxLmax);
-///   args.Finish();                                      // unknown options -> UsageError
+///   args.Finish();                       // unread options or positionals -> UsageError
 
 #include <optional>
 #include <set>
@@ -14,24 +16,33 @@
 
 #include <glm/vec3.hpp>
 
+#include "app/option_table.h"
+
 namespace prt {
 
 class Args {
  public:
-  /// Splits `tokens` into options (`--name value`, `--name=value`, or a flag named in `flags`)
-  /// and positionals. Throws UsageError for an option given twice or missing its value.
-  Args(std::string command, const std::vector<std::string>& tokens, std::set<std::string> flags = {});
+  /// Splits `tokens` into options (`--name value`, `--name=value`, or a flag: an option whose
+  /// table entry has no value) and positionals. Throws UsageError for an option not in `spec`
+  /// (naming the nearest one), given twice, or missing its value.
+  Args(std::string command, const std::vector<std::string>& tokens, CommandSpec spec);
 
   const std::string& command() const { return command_; }
+  const CommandSpec& spec() const { return spec_; }
 
-  /// True if the flag was given. Flags are the names passed to the constructor.
+  /// True if the command's table has the option `name` (readers of shared option groups ask
+  /// before reading, so each command accepts only what its table lists).
+  bool Accepts(const std::string& name) const { return spec_.Find(name) != nullptr; }
+
+  /// True if the flag was given.
   bool Flag(const std::string& name);
   /// True if the option was given (does not consume it).
   bool Has(const std::string& name) const;
 
   std::optional<std::string> String(const std::string& name);
   std::string String(const std::string& name, const std::string& fallback);
-  /// An integer in [lo, hi]; a UsageError names the option, the value and the range otherwise.
+  /// An integer in [lo, hi]; a UsageError says "not a number", "not an integer" or "out of
+  /// range", with the range.
   int Int(const std::string& name, int fallback, int lo, int hi);
   /// A finite number in [lo, hi].
   double Double(const std::string& name, double fallback, double lo, double hi);
@@ -44,22 +55,24 @@ class Args {
   /// Positional arguments, in order.
   std::vector<std::string> TakePositionals();
 
-  /// Throws UsageError for any option or positional not asked for.
+  /// Throws UsageError for any option given but not read, or positional not asked for.
   void Finish() const;
 
-  /// Throws UsageError for any option given that is not in `known` (checked before any is read,
-  /// for commands that hand the same options to several parts).
-  void RejectUnknown(const std::set<std::string>& known) const;
+  /// Throws UsageError for any option given that is not in `used` (for commands whose parts
+  /// read different subsets of the table, such as `bench WHAT`); `why` ends the message.
+  void RejectOutside(const std::set<std::string>& used, const std::string& why) const;
 
-  /// Marks the options in `names` as used, so Finish() accepts them even if nothing reads them.
+  /// Marks the options in `names` as read, so Finish() accepts them.
   void Allow(const std::set<std::string>& names);
+
+  /// Throws UsageError `message` for this command (pointing to its help).
+  [[noreturn]] void Fail(const std::string& message) const;
 
  private:
   std::optional<std::string> Take(const std::string& name);
-  [[noreturn]] void Fail(const std::string& message) const;
 
   std::string command_;
-  std::set<std::string> flags_;
+  CommandSpec spec_;
   std::vector<std::pair<std::string, std::optional<std::string>>> options_;
   std::set<std::string> used_;
   std::vector<std::string> positionals_;
@@ -68,5 +81,10 @@ class Args {
 
 /// Parses a finite number, or returns nullopt.
 std::optional<double> ParseNumber(const std::string& text);
+
+/// "'<text>' is not a number", "... is not an integer" or "... is out of range", followed by
+/// " (expected <expected>)": the message for a numeric value that was refused (not a finite
+/// number, not an integer when `integer`, else outside its range).
+std::string NumberProblem(const std::string& text, bool integer, const std::string& expected);
 
 }  // namespace prt

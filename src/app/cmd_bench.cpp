@@ -9,16 +9,19 @@
 
 namespace prt {
 
-const char* const kBenchHelp =
-    "usage: prt bench WHAT [options]\n"
-    "  WHAT is one of: light, bvh, raster, transport, all.\n"
-    "  Prints key=value lines; comparisons end with ratio_<what>=<x>. Times are medians.\n"
-    "  The last line, peak_memory_mib=, is the process's peak resident memory.\n"
-    "  --runs N        timed runs per measurement, median reported (default 5; transport 3)\n"
-    "  --threads N     threads for the multi-threaded measurements (default: all)\n"
-    "  --mesh PATH     (bvh, transport) also measure this OBJ file\n"
-    "  --size WxH      (raster) frame size (default 1920x1080)\n"
-    "  --samples N     (transport) directions per vertex (default 1024)\n";
+CommandSpec BenchSpec() {
+  return {"prt bench WHAT [options]",
+          "WHAT is one of: light, bvh, raster, transport, all. Prints key=value lines; comparisons end with "
+          "ratio_<what>=<x>. Times are medians. The last line, peak_memory_mib=, is the process's peak resident "
+          "memory.",
+          {{"options",
+            {{"--runs", "N", "timed runs per measurement, median reported", "5; bvh and transport 3"},
+             {"--threads", "N", "threads for the multi-threaded measurements", "all cores"},
+             {"--mesh", "PATH", "(bvh, transport) also measure this OBJ file", "none"},
+             {"--size", "WxH", "(raster) frame size", "1920x1080"},
+             {"--samples", "N", "(transport) directions per vertex", "1024"},
+             QuietOption()}}}};
+}
 
 namespace {
 
@@ -49,15 +52,20 @@ double PeakMemoryMiB() {
 }  // namespace
 
 int RunBench(const std::vector<std::string>& tokens) {
-  Args probe("bench", tokens);
+  Args probe("bench", tokens, BenchSpec());
   const auto what = probe.TakePositionals();
-  if (what.size() != 1) throw UsageError("expected one of light, bvh, raster, transport, all", "bench");
+  if (what.size() != 1) probe.Fail("expected one benchmark: light, bvh, raster, transport or all");
   if (what[0] != "all") {
     const auto it = Benches().find(what[0]);
     if (it == Benches().end())
-      throw UsageError("'" + what[0] + "': unknown benchmark (expected light, bvh, raster, transport or all)", "bench");
-    probe.RejectUnknown(it->second.options);
-    Args args("bench", tokens);
+    {
+      const std::string near = NearestName(what[0], {"light", "bvh", "raster", "transport", "all"});
+      probe.Fail("'" + what[0] + "': unknown benchmark (" +
+                 (near.empty() ? std::string("expected light, bvh, raster, transport or all") : "did you mean " + near + "?") +
+                 ")");
+    }
+    probe.RejectOutside(it->second.options, "not used by prt bench " + what[0]);
+    Args args("bench", tokens, BenchSpec());
     args.TakePositionals();
     args.Allow(it->second.options);
     const int rc = it->second.run(args);
@@ -67,10 +75,9 @@ int RunBench(const std::vector<std::string>& tokens) {
   // all: every option must mean something to at least one benchmark; each gets what it reads.
   std::set<std::string> any;
   for (const auto& [name, b] : Benches()) any.insert(b.options.begin(), b.options.end());
-  probe.RejectUnknown(any);
   int rc = 0;
   for (const char* name : {"light", "bvh", "raster", "transport"}) {
-    Args args("bench", tokens);
+    Args args("bench", tokens, BenchSpec());
     args.TakePositionals();
     args.Allow(any);
     rc |= Benches().at(name).run(args);

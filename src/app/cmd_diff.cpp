@@ -7,25 +7,30 @@
 
 #include "app/commands.h"
 #include "core/error.h"
+#include "core/output_folder.h"
 #include "io/png_io.h"
 #include "raster/image_diff.h"
 
 namespace prt {
 
-const char* const kDiffHelp =
-    "usage: prt diff A.png B.png [--max-abs N] [--mean-abs X] [--min-psnr P] [--out DIFF.png]\n"
-    "  Compares two PNG images of the same size channel by channel (0..255) and prints one line:\n"
-    "    max_abs=<0..255> mean_abs=<x> rmse=<x> psnr=<dB or inf> differing_pixels=<n>\n"
-    "  Exit code: 0 within the limits, 1 outside them, 2 on an error (missing or unreadable\n"
-    "  file, not a PNG, size mismatch, bad option).\n"
-    "  Without any limit option the images must be identical (like cmp); with limits, only the\n"
-    "  limits given apply.\n"
-    "  --max-abs N     largest allowed channel difference, 0..255 (default: 0 when no limit\n"
-    "                  option is given, else no limit)\n"
-    "  --mean-abs X    largest allowed mean channel difference (default: no limit)\n"
-    "  --min-psnr P    smallest allowed PSNR in dB (default: no limit)\n"
-    "  --out DIFF.png  also write an amplified difference image: identical pixels black, every\n"
-    "                  difference at least 64/255 bright, the largest at 255 (default: none)\n";
+CommandSpec DiffSpec() {
+  return {"prt diff A.png B.png [--max-abs N] [--mean-abs X] [--min-psnr P] [--out DIFF.png]",
+          "Compares two PNG images of the same size channel by channel (0..255) and prints one line on stdout:\n"
+          "max_abs=<0..255> mean_abs=<x> rmse=<x> psnr=<dB or inf> differing_pixels=<n>\n\n"
+          "Exits like cmp: 0 within the limits, 1 outside them (stderr then says which limit failed), 2 on an error "
+          "(missing or unreadable file, not a PNG, size mismatch, bad option). Without any limit option the images "
+          "must be identical; with limits, only the limits given apply.",
+          {{"options",
+            {{"--max-abs", "N", "largest allowed channel difference, 0..255", "0 when no limit option is given, else none"},
+             {"--mean-abs", "X", "largest allowed mean channel difference, 0..255", "none"},
+             {"--min-psnr", "P", "smallest allowed PSNR in dB", "none"},
+             {"--out", "DIFF.png",
+              "also write an amplified difference image (identical pixels black, every difference at least 64/255 "
+              "bright, the largest at 255), a .png; its folder is created if missing; the result line is printed "
+              "first, even if this write fails",
+              "none"},
+             QuietOption()}}}};
+}
 
 namespace {
 
@@ -35,13 +40,21 @@ struct DiffLimits {
   double min_psnr = -std::numeric_limits<double>::infinity();
 };
 
-bool Within(const DiffMetrics& m, const DiffLimits& limits) {
-  return m.max_abs <= limits.max_abs && m.mean_abs <= limits.mean_abs && m.psnr >= limits.min_psnr;
+/// The limits `m` exceeds, as "max_abs 12 > 2 (--max-abs)"; empty when within all of them.
+std::string Exceeded(const DiffMetrics& m, const DiffLimits& limits) {
+  std::string out;
+  char buf[128];
+  auto add = [&out](const char* text) { out += (out.empty() ? "" : ", ") + std::string(text); };
+  if (m.max_abs > limits.max_abs) std::snprintf(buf, sizeof buf, "max_abs %d > %d (--max-abs)", m.max_abs, limits.max_abs), add(buf);
+  if (m.mean_abs > limits.mean_abs)
+    std::snprintf(buf, sizeof buf, "mean_abs %.6g > %.6g (--mean-abs)", m.mean_abs, limits.mean_abs), add(buf);
+  if (m.psnr < limits.min_psnr) std::snprintf(buf, sizeof buf, "psnr %.6g < %.6g (--min-psnr)", m.psnr, limits.min_psnr), add(buf);
+  return out;
 }
 
 int Diff(const std::vector<std::string>& tokens) {
-  Args args("diff", tokens);
-  args.Flag("--quiet");  // accepted by every command; diff prints only its result line anyway
+  Args args("diff", tokens, DiffSpec());
+  const bool quiet = args.Flag("--quiet");
   const bool any_limit = args.Has("--max-abs") || args.Has("--mean-abs") || args.Has("--min-psnr");
   DiffLimits limits;
   limits.max_abs = args.Int("--max-abs", any_limit ? 255 : 0, 0, 255);
@@ -50,9 +63,9 @@ int Diff(const std::vector<std::string>& tokens) {
   const auto out = args.String("--out");
   const auto files = args.TakePositionals();
   args.Finish();
-  if (files.size() != 2)
-    throw UsageError("expected two images, A.png B.png (got " + std::to_string(files.size()) + ")",
-                     "diff");
+  if (files.size() != 2) args.Fail("expected two images, A.png B.png (got " + std::to_string(files.size()) + ")");
+  if (out && (out->size() < 5 || out->compare(out->size() - 4, 4, ".png") != 0))
+    args.Fail("--out: '" + *out + "' does not end in .png (expected a PNG file name: prt writes PNG only)");
 
   const Image8 a = ReadPng(files[0]);
   const Image8 b = ReadPng(files[1]);
@@ -61,9 +74,15 @@ int Diff(const std::vector<std::string>& tokens) {
                 " differs from " + files[0] + " (expected " + std::to_string(a.width) + "x" +
                 std::to_string(a.height) + ")");
   const DiffMetrics metrics = CompareImages(a, b);
-  if (out) WritePng(*out, AmplifiedDifference(a, b));
   std::printf("%s\n", FormatDiffMetrics(metrics).c_str());
-  return Within(metrics, limits) ? 0 : 1;
+  std::fflush(stdout);
+  if (out) {
+    CreateParentFolder(*out);
+    WritePng(*out, AmplifiedDifference(a, b));
+  }
+  const std::string exceeded = Exceeded(metrics, limits);
+  if (!exceeded.empty() && !quiet) std::fprintf(stderr, "prt: diff: outside the limits: %s\n", exceeded.c_str());
+  return exceeded.empty() ? 0 : 1;
 }
 
 }  // namespace

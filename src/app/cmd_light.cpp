@@ -6,22 +6,16 @@
 
 namespace prt {
 
-const char* const kLightHelp =
-    "usage: prt light [--env ENV] [--lmax L] [--window W] [--games202-faces]\n"
-    "  Prints the environment's SH coefficients to stdout: (L+1)^2 lines `R G B` (the course's\n"
-    "  light.txt format, 9 significant digits), nothing else. The run summary goes to stderr.\n"
-    "  --env ENV          cubemap folder, equirectangular .hdr/.exr/.png/.jpg, or furnace[:C],\n"
-    "                     sky[:sun=3,elevation=40,azimuth=35,radius=2] (default sky)\n"
-    "  --lmax L           highest band, 0..64 (default 2: 9 coefficients)\n"
-    "  --window W         none | hann | lanczos | auto (default none)\n"
-    "  --games202-faces   the course's cubemap face mapping and pow(x, 2.2) decoding\n"
-    "  --threads N        worker threads (default: all cores)\n"
-    "  --quiet            nothing on stderr but errors\n";
+CommandSpec LightSpec() {
+  return {"prt light [--env ENV] [--lmax L] [options]",
+          "Prints the environment's SH coefficients to stdout: (L+1)^2 lines `R G B` (the course's light.txt "
+          "format, 9 significant digits), nothing else. The run summary goes to stderr.",
+          {SceneOptionGroup(SceneOptions{}, LightOptionNames(), "light options"), {"other options", {QuietOption()}}}};
+}
 
 int RunLight(const std::vector<std::string>& tokens) {
-  Args args("light", tokens, SceneFlags());
-  SceneOptions defaults;
-  const SceneOptions options = ReadSceneOptions(args, defaults);
+  Args args("light", tokens, LightSpec());
+  const SceneOptions options = ReadSceneOptions(args);
   args.Finish();
   const auto env = LoadSceneEnvironment(options);
   const ShRgb light = ComputeLight(*env, options);

@@ -1,7 +1,6 @@
-#include <filesystem>
-
 #include "app/commands.h"
 #include "app/pipeline.h"
+#include "app/render_options.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -9,41 +8,92 @@
 #include "io/transport_txt.h"
 
 namespace prt {
+namespace {
 
-const char* const kPrecomputeHelp =
-    "usage: prt precompute [scene options] --out DIR\n"
-    "  Writes DIR/light.txt and DIR/transport.txt in the course's text format (GAMES202 hw2:\n"
-    "  loadable by its WebGL framework), and the binary cache DIR/transport.cache that `render`\n"
-    "  reuses. With coloured albedo and interreflection the transport differs per colour\n"
-    "  channel: DIR/transport_r.txt, transport_g.txt and transport_b.txt are written instead.\n"
-    "  --out DIR          output folder, created if missing (required)\n";
+/// The course's viewer reads exactly this many numbers per row of light.txt and transport.txt.
+constexpr int kCourseLmax = 2;
+
+/// Rec. 709 luminance weights: the one transfer vector that best stands for three coloured
+/// ones in the course's single-vector transport.txt, weighted as the eye weighs R, G and B.
+constexpr float kLuminance[3] = {0.2126f, 0.7152f, 0.0722f};
+
+Transport LuminanceMix(const Transport& t) {
+  Transport mix;
+  mix.lmax = t.lmax;
+  mix.channels = 1;
+  mix.vertices = t.vertices;
+  const std::size_t n = CoeffCount(t.lmax);
+  mix.coeffs.assign(t.vertices * n, 0.0f);
+  for (std::size_t v = 0; v < t.vertices; ++v)
+    for (int c = 0; c < 3; ++c)
+      for (std::size_t k = 0; k < n; ++k) mix.coeffs[v * n + k] += kLuminance[c] * t.at(v, c)[k];
+  return mix;
+}
+
+}  // namespace
+
+CommandSpec PrecomputeSpec() {
+  OptionGroup output{"output options",
+                     {RenderOptionGroup(RenderOptions{}, {"--out"}).options[0],
+                      RenderOptionGroup(RenderOptions{}, {"--cache"}).options[0], QuietOption()}};
+  output.options[0].default_text = "required";
+  output.options[0].help = "output folder, created if missing; one run at a time, and after a successful run it "
+                           "holds exactly that run's files";
+  OptionGroup scene = SceneOptionGroup(SceneOptions{}, AllSceneOptionNames());
+  for (auto& o : scene.options)
+    if (o.name == "--max-edge")
+      o.help = "refused here: the course's transport.txt has three rows per face of the OBJ file, and split "
+               "triangles are other faces (render and reference take it)",
+      o.default_text = "";
+  return {"prt precompute [scene options] --out DIR",
+          "Writes DIR/light.txt and DIR/transport.txt in the course's text format (GAMES202 homework 2: its WebGL "
+          "framework loads them), and the binary cache DIR/transport.cache that render reuses.\n\n"
+          "light.txt: (L+1)^2 lines `R G B`. transport.txt: the welded vertex count, then three rows per face of "
+          "the OBJ in file order, each the corner's (L+1)^2 transfer coefficients, 1/pi included, albedo not "
+          "(the course's viewer multiplies by no albedo, so it shows the mesh as white). The viewer reads exactly "
+          "9 numbers per row: use --lmax 2 (the default) for it.\n\n"
+          "With coloured albedo and interreflection the transport differs per colour channel: the exact "
+          "DIR/transport_r.txt, transport_g.txt and transport_b.txt are written too, and transport.txt holds "
+          "their luminance-weighted mix 0.2126 R + 0.7152 G + 0.0722 B, which the viewer loads.",
+          {scene, output}};
+}
 
 int RunPrecompute(const std::vector<std::string>& tokens) {
-  Args args("precompute", tokens, SceneFlags());
+  Args args("precompute", tokens, PrecomputeSpec());
   const SceneOptions options = ReadSceneOptions(args);
   const auto out = args.String("--out");
+  const std::string cache_option = args.String("--cache", "");
   args.Finish();
-  if (!out) throw UsageError("--out DIR is required", "precompute");
-  std::error_code ec;
-  std::filesystem::create_directories(*out, ec);
-  if (!std::filesystem::is_directory(*out)) throw Error(*out + ": cannot create the output folder");
+  if (!out) args.Fail("--out DIR is required");
+  if (options.max_edge > 0.0)
+    args.Fail("--max-edge: not with precompute (the course's transport.txt has three rows per face of the OBJ "
+              "file, and split triangles are other faces; render and reference take it)");
+  OutputFolder folder(*out);
+  const CachePlan cache = PlanCache(cache_option, &folder);
 
+  const Mesh mesh = LoadSceneMesh(options);
   const auto env = LoadSceneEnvironment(options);
   const ShRgb light = ComputeLight(*env, options);
-  const Mesh mesh = LoadSceneMesh(options);
-  const Transport transport = ComputeSceneTransport(mesh, options, *out + "/transport.cache");
+  const Transport transport = ComputeSceneTransport(mesh, options, cache);
 
-  WriteFileAtomic(*out + "/light.txt", FormatLightTxt(light));
+  WriteFileAtomic(folder.Output("light.txt"), FormatLightTxt(light));
   if (transport.channels == 1) {
-    WriteFileAtomic(*out + "/transport.txt", FormatTransportTxt(mesh, transport, 0));
+    WriteFileAtomic(folder.Output("transport.txt"), FormatTransportTxt(mesh, transport, 0));
     Summary("wrote " + *out + "/light.txt and " + *out + "/transport.txt");
   } else {
     const char* names[3] = {"r", "g", "b"};
     for (int c = 0; c < 3; ++c)
-      WriteFileAtomic(*out + "/transport_" + names[c] + ".txt", FormatTransportTxt(mesh, transport, c));
-    Summary("wrote " + *out + "/light.txt and transport_{r,g,b}.txt (coloured interreflection: the "
-            "course format holds one vector per row, so one file per channel)");
+      WriteFileAtomic(folder.Output(std::string("transport_") + names[c] + ".txt"), FormatTransportTxt(mesh, transport, c));
+    WriteFileAtomic(folder.Output("transport.txt"), FormatTransportTxt(mesh, LuminanceMix(transport), 0));
+    Summary("wrote " + *out + "/light.txt, transport_r.txt, transport_g.txt, transport_b.txt (coloured "
+            "interreflection: the exact transport of each channel) and transport.txt (their luminance-weighted "
+            "mix 0.2126 R + 0.7152 G + 0.0722 B, for the course's viewer, which reads one vector per row)");
   }
+  if (options.lmax != kCourseLmax)
+    Warn("lmax " + std::to_string(options.lmax) + ": these files have " + std::to_string(CoeffCount(options.lmax)) +
+         " numbers per row, but the course's WebGL viewer reads exactly 9 (lmax 2) and draws garbage, without an "
+         "error, from any other count");
+  FinishOutputs(folder);
   return 0;
 }
 

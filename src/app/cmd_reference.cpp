@@ -2,7 +2,6 @@
 // text and as a picture drawn like frame 0 of `render`.
 #include <chrono>
 #include <cstdio>
-#include <filesystem>
 
 #include "app/commands.h"
 #include "app/pipeline.h"
@@ -14,34 +13,50 @@
 #include "precompute/reference.h"
 
 namespace prt {
+namespace {
 
-const char* const kReferenceHelp =
-    "usage: prt reference [scene options] [render options] --out DIR\n"
-    "  Ground truth without SH truncation: each vertex's outgoing radiance, the environment\n"
-    "  integrated directly against max(0, n.w) V(w) albedo/pi by importance-sampled, randomly\n"
-    "  shifted lattice directions (plus per-vertex path tracing of --bounces bounces for\n"
-    "  --transport interreflection). Its own error is estimated from two independent halves.\n"
-    "  Writes DIR/reference.txt (vertex count, then one `R G B` line per vertex) and\n"
-    "  DIR/reference.png (the mesh drawn with these colours by the rasterizer, camera and tone\n"
-    "  mapping of `render`'s frame 0; --size, --eye, --tonemap ... apply, frame options do not).\n"
-    "  --out DIR                 output folder, created if missing (required)\n"
-    "  --reference-samples N     directions per vertex, 2..16777216 (default 8192)\n";
+const std::vector<std::string> kSceneNames = {"--mesh", "--env", "--transport", "--bounces", "--albedo", "--seed",
+                                              "--threads", "--games202-faces", "--max-edge"};
+const std::vector<std::string> kPictureNames = {"--out", "--size", "--background", "--tonemap", "--exposure",
+                                                "--ssaa", "--eye", "--target", "--up", "--fov"};
+
+RenderOptions PictureDefaults() {
+  RenderOptions o;
+  o.out.clear();  // required
+  return o;
+}
+
+}  // namespace
+
+CommandSpec ReferenceSpec() {
+  OptionGroup reference{"reference options",
+                        {{"--reference-samples", "N", "directions per vertex, 2..16777216", "8192"}, QuietOption()}};
+  return {"prt reference [scene options] [picture options] --out DIR",
+          "Ground truth without SH truncation: each vertex's outgoing radiance, the environment integrated directly "
+          "against max(0, n.w) V(w) albedo/pi by importance-sampled, randomly shifted lattice directions (plus "
+          "per-vertex path tracing of --bounces bounces for --transport interreflection). Its own error is "
+          "estimated from two independent halves.\n\nWrites DIR/reference.txt (the vertex count, then one `R G B` "
+          "line per vertex) and DIR/reference.png (the mesh drawn with these colours by the rasterizer, camera and "
+          "tone mapping of render's frame 0; with automatic exposure the EV is measured on this picture, so pass "
+          "render's printed --exposure to compare the two pixel by pixel).",
+          {SceneOptionGroup(SceneOptions{}, kSceneNames), RenderOptionGroup(PictureDefaults(), kPictureNames, "picture options"),
+           reference}};
+}
 
 int RunReference(const std::vector<std::string>& tokens) {
-  Args args("reference", tokens, SceneFlags());
+  Args args("reference", tokens, ReferenceSpec());
   const SceneOptions scene = ReadSceneOptions(args);
   const int samples = args.Int("--reference-samples", 8192, 2, 1 << 24);
-  RenderOptions defaults = ReportRenderOptions(640, 480);
-  defaults.out = "";
-  const RenderOptions render = ReadRenderOptions(args, defaults);
+  const RenderOptions render = CompleteRenderOptions(args, ReadRenderOptions(args, PictureDefaults()), scene);
   args.Finish();
-  if (render.out.empty()) throw UsageError("--out DIR is required", "reference");
-  std::error_code ec;
-  std::filesystem::create_directories(render.out, ec);
-  if (!std::filesystem::is_directory(render.out)) throw Error(render.out + ": cannot create the output folder");
+  if (render.out.empty()) args.Fail("--out DIR is required");
+  OutputFolder folder(render.out);
 
-  const auto env = LoadSceneEnvironment(scene);
   const Mesh mesh = LoadSceneMesh(scene);
+  std::string up_note;
+  const Camera camera = ChooseCamera(mesh, render, &up_note);
+  Summary("camera: " + CameraArgs(camera) + (up_note.empty() ? "" : " (" + up_note + ")"));
+  const auto env = LoadSceneEnvironment(scene);
   ReferenceOptions ro;
   ro.mode = TransportModeFromName(scene.transport);
   ro.samples = samples;
@@ -66,11 +81,16 @@ int RunReference(const std::vector<std::string>& tokens) {
     std::snprintf(buf, sizeof buf, "%.9g %.9g %.9g\n", c.x, c.y, c.z);
     text += buf;
   }
-  WriteFileAtomic(render.out + "/reference.txt", text);
-  const Camera camera = ChooseCamera(mesh, render);
-  Summary("camera: " + CameraArgs(camera));
-  WritePng(render.out + "/reference.png", DrawVertexColors(mesh, ToFloat(ref.radiance), *env, camera, render));
+  WriteFileAtomic(folder.Output("reference.txt"), text);
+  double exposure = 0.0;
+  WritePng(folder.Output("reference.png"), DrawVertexColors(mesh, ToFloat(ref.radiance), *env, camera, render, &exposure));
+  if (!render.exposure) {
+    std::snprintf(line, sizeof line, "exposure: auto -> %.1f EV, measured on this picture (--exposure %.1f repeats it)",
+                  exposure, exposure);
+    Summary(line);
+  }
   Summary("wrote " + render.out + "/reference.txt and " + render.out + "/reference.png");
+  FinishOutputs(folder);
   return 0;
 }
 

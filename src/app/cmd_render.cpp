@@ -1,25 +1,28 @@
-#include <string>
-
 #include "app/commands.h"
 #include "app/pipeline.h"
 
 namespace prt {
 
-const char* const kRenderHelp =
-    "usage: prt render [scene options] [render options] [--cache PATH]\n"
-    "  Precomputes the transport (or reuses the cache), then writes DIR/frame_0000.png ... of\n"
-    "  the mesh under the environment light turning about the axis.\n"
-    "  --cache PATH       transport cache to reuse and update (default DIR/transport.cache;\n"
-    "                     `none` disables it)\n";
+CommandSpec RenderSpec() {
+  return {"prt render [scene options] [render options]",
+          "Precomputes the transport (or reuses the cache), then writes DIR/frame_0000.png ... of the mesh under "
+          "the environment light turning about the axis. Without --mesh, the embedded demo scene is seen with the "
+          "demo's camera.\n\nThe run summary on stderr says what each stage did and left out, the camera in "
+          "option syntax and the exposure chosen, so a run can be repeated exactly.",
+          {SceneOptionGroup(SceneOptions{}, AllSceneOptionNames()),
+           RenderOptionGroup(RenderOptions{}, AllRenderOptionNames()),
+           {"other options", {QuietOption()}}}};
+}
 
 int RunRender(const std::vector<std::string>& tokens) {
-  Args args("render", tokens, SceneFlags());
+  Args args("render", tokens, RenderSpec());
   const SceneOptions scene = ReadSceneOptions(args);
-  const RenderOptions render = ReadRenderOptions(args, RenderOptions{});
-  std::string cache = args.String("--cache", render.out + "/transport.cache");
+  const RenderOptions render = CompleteRenderOptions(args, ReadRenderOptions(args, RenderOptions{}), scene);
   args.Finish();
-  if (cache == "none") cache.clear();
-  RenderJob(scene, render, cache);
+  OutputFolder folder(render.out);
+  RenderJob(scene, render, folder);
+  FinishOutputs(folder);
+  NoteForeignFrames(folder);
   return 0;
 }
 

@@ -1,7 +1,6 @@
 // prt report: error against run time (report_sweep.h, report_write.h), or with --stability the
 // stiff and extreme cases (stability.h).
 #include <cstdio>
-#include <filesystem>
 
 #include "app/commands.h"
 #include "app/pipeline.h"
@@ -22,34 +21,39 @@ std::string Fmt(double v) {
 }
 }  // namespace
 
-const char* const kReportHelp =
-    "usage: prt report [scene options] --out DIR [--quick] [--stability]\n"
-    "  Error against run time: sweeps sampler (uniform, stratified, fibonacci) x directions per\n"
-    "  vertex (16 .. 16384, doubling) x lmax (1..8) x transport mode (unshadowed closed form,\n"
-    "  shadowed, interreflection), scoring each against the converged transport (sampling error)\n"
-    "  and against `prt reference`'s ground truth (total error) and its picture (PSNR); then\n"
-    "  light projection against cubemap resolution. Writes DIR/report.csv, DIR/report.md and\n"
-    "  DIR/error_vs_time.png. Without --mesh the scene is a small knot on a plane (~2,700\n"
-    "  vertices). Scene options --lmax, --samples, --sampler, --transport are set by the sweep.\n"
-    "  --out DIR             output folder, created if missing (required)\n"
-    "  --quick               shadowed only, 16..256 directions, lmax 1..4, smaller references\n"
-    "                        (well under a minute)\n"
-    "  --max-samples N       largest directions per vertex of the sweep (default 16384)\n"
-    "  --stability           run the stiff and extreme cases instead: DIR/stability.csv and\n"
-    "                        DIR/report.md, pass/fail summary on stderr; exit 1 if any fails\n";
+CommandSpec ReportSpec() {
+  OptionGroup report{"report options",
+                     {{"--out", "DIR", "output folder, created if missing; one run at a time", "required"},
+                      {"--quick", "", "shadowed only, 16..256 directions, lmax 1..4, smaller references (well under a minute)", ""},
+                      {"--max-samples", "N", "largest directions per vertex of the sweep, 16..1048576", "16384; 256 with --quick"},
+                      {"--stability", "",
+                       "run the stiff and extreme cases instead: DIR/stability.csv and DIR/report.md, pass/fail on "
+                       "stderr; exit 1 if any fails",
+                       ""},
+                      QuietOption()}};
+  OptionGroup scene = SceneOptionGroup(SceneOptions{}, {"--mesh", "--env", "--bounces", "--albedo", "--seed",
+                                                         "--threads", "--games202-faces", "--max-edge"});
+  scene.options[0].default_text = "a small torus knot on a 12 x 12 plane, about 2,700 vertices";
+  return {"prt report [scene options] --out DIR [--quick] [--stability]",
+          "Error against run time: sweeps sampler (uniform, stratified, fibonacci) x directions per vertex (16 .. "
+          "16384, doubling) x lmax (1..8) x transport mode (unshadowed closed form, shadowed, interreflection), "
+          "scoring each against the converged transport (sampling error) and against prt reference's ground truth "
+          "(total error) and its picture (PSNR); then light projection against cubemap resolution. Writes "
+          "DIR/report.csv, DIR/report.md and DIR/error_vs_time.png. Without --mesh the scene is a small knot on a "
+          "plane (about 2,700 vertices). The sweep sets lmax, samples, sampler and transport itself.",
+          {scene, report}};
+}
 
 int RunReport(const std::vector<std::string>& tokens) {
-  Args args("report", tokens, SceneFlags({"--quick", "--stability"}));
+  Args args("report", tokens, ReportSpec());
   const SceneOptions scene = ReadSceneOptions(args);
   const auto out = args.String("--out");
   const bool quick = args.Flag("--quick");
   const bool stability = args.Flag("--stability");
   const int max_samples = args.Int("--max-samples", quick ? 256 : 16384, 16, 1 << 20);
   args.Finish();
-  if (!out) throw UsageError("--out DIR is required", "report");
-  std::error_code ec;
-  std::filesystem::create_directories(*out, ec);
-  if (!std::filesystem::is_directory(*out)) throw Error(*out + ": cannot create the output folder");
+  if (!out) args.Fail("--out DIR is required");
+  OutputFolder folder(*out);
 
   if (stability) {
     const std::vector<StabilityCase> cases = RunStabilityCases();
@@ -59,10 +63,11 @@ int RunReport(const std::vector<std::string>& tokens) {
               (c.note.empty() ? "" : " (" + c.note + ")"));
       failed += !c.pass;
     }
-    WriteFileAtomic(*out + "/stability.csv", StabilityCsv(cases));
-    WriteFileAtomic(*out + "/report.md", StabilityMarkdown(cases));
+    WriteFileAtomic(folder.Output("stability.csv"), StabilityCsv(cases));
+    WriteFileAtomic(folder.Output("report.md"), StabilityMarkdown(cases));
     Summary("stability: " + std::to_string(cases.size() - failed) + " of " + std::to_string(cases.size()) +
             " cases pass; wrote " + *out + "/stability.csv and report.md");
+    FinishOutputs(folder);
     return failed ? 1 : 0;
   }
 
@@ -71,6 +76,7 @@ int RunReport(const std::vector<std::string>& tokens) {
   std::string scene_name;
   if (scene.mesh.empty()) {
     mesh = MakeReportScene();
+    ApplySceneEdits(mesh, scene);
     scene_name = "report scene (torus knot 128x16 on a 24x24 plane)";
   } else {
     mesh = LoadSceneMesh(scene);
@@ -89,7 +95,8 @@ int RunReport(const std::vector<std::string>& tokens) {
   }
   ReportData data = RunReportSweep(mesh, *env, scene.env, config, ReportRenderOptions(config.image_width, config.image_height));
   data.scene = scene_name;
-  WriteReport(*out, data);
+  WriteReport(folder, data);
+  FinishOutputs(folder);
   return 0;
 }
 

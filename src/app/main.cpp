@@ -1,6 +1,7 @@
 /// \file
-/// Entry point: finds the command, runs it, and turns every error into one line on stderr and
-/// an exit code (0 success, 1 failure, 2 usage). Nothing below app/ prints usage or exits.
+/// Entry point: finds the command, prints its help for `--help` or `-h`, runs it, and turns
+/// every error into one line on stderr and an exit code (0 success, 1 failure, 2 usage).
+/// Nothing below app/ prints usage or exits.
 
 #include <cstdio>
 #include <exception>
@@ -25,10 +26,14 @@ int main(int argc, char** argv) {
   const std::string name = (all[0] == "--help" || all[0] == "-h") ? "help" : all[0];
   const Command* command = FindCommand(name);
   if (!command) {
-    std::fprintf(stderr, "prt: error: '%s': unknown command (see prt help)\n", name.c_str());
+    std::fprintf(stderr, "prt: error: %s (see prt help)\n", UnknownCommandMessage(name).c_str());
     return 2;
   }
   const std::vector<std::string> tokens(all.begin() + 1, all.end());
+  if (name != "help" && WantsHelp(tokens)) {
+    std::printf("%s", FormatHelp(command->spec()).c_str());
+    return 0;
+  }
   try {
     return command->run(tokens);
   } catch (const UsageError& e) {

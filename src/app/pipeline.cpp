@@ -4,15 +4,12 @@
 #include <cstdio>
 #include <filesystem>
 
+#include <unistd.h>
+
 #include "core/error.h"
 #include "core/log.h"
-#include "geometry/mesh_ops.h"
-#include "geometry/procedural.h"
-#include "io/obj_loader.h"
-#include "io/transport_cache.h"
-#include "raster/camera.h"
-#include "sh/axis_rotation.h"
 #include "env/load_environment.h"
+#include "io/transport_cache.h"
 #include "precompute/light.h"
 #include "sh/window.h"
 
@@ -27,6 +24,25 @@ std::string Format(const char* fmt, double a, double b = 0.0) {
   char buf[256];
   std::snprintf(buf, sizeof buf, fmt, a, b);
   return buf;
+}
+
+/// A vertex whose T_0 is below this share of the unoccluded T_0 sees (almost) no light: inside
+/// an inside-out mesh only what leaks through holes in it, a few percent.
+constexpr double kBlockedShare = 0.05;
+/// Warn when more than this share of the vertices is blocked: a closed, right-way-out mesh on
+/// its own has well under half of its vertices in full shadow.
+constexpr double kBlockedWarnShare = 0.5;
+
+void WarnIfMostlyBlocked(const Mesh& mesh, const Transport& transport, TransportMode mode) {
+  if (mode == TransportMode::kUnshadowed || mesh.vertex_count() == 0) return;
+  const double open_t0 = 0.28209479177387814;  // (A_0/pi) Y_00 = 1 * 1/(2 sqrt(pi))
+  std::size_t blocked = 0;
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) blocked += transport.at(v, 0)[0] < kBlockedShare * open_t0;
+  if (double(blocked) > kBlockedWarnShare * double(mesh.vertex_count()))
+    Warn(std::to_string(blocked) + " of " + std::to_string(mesh.vertex_count()) +
+         " vertices see almost no sky (less than 5% of an open one): is the mesh inside out (normals "
+         "pointing inward) or enclosed? Check that faces wind counter-clockwise seen from outside and that "
+         "normals point outward");
 }
 
 }  // namespace
@@ -59,29 +75,6 @@ ShRgb ComputeLight(const Environment& env, const SceneOptions& options) {
   return light;
 }
 
-Mesh LoadSceneMesh(const SceneOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
-  Mesh mesh;
-  std::string what;
-  if (options.mesh.empty()) {
-    mesh = MakeDemoScene();
-    what = "embedded demo scene (torus knot on a ground plane)";
-  } else {
-    LoadedMesh loaded = LoadObj(options.mesh);
-    for (const auto& w : loaded.report.warnings) Warn(w);
-    mesh = std::move(loaded.mesh);
-    what = options.mesh;
-    if (loaded.report.dropped_degenerate)
-      what += ", " + std::to_string(loaded.report.dropped_degenerate) + " zero-area triangles dropped";
-    if (loaded.report.recomputed_normals)
-      what += ", " + std::to_string(loaded.report.recomputed_normals) + " normals recomputed";
-  }
-  if (options.albedo) SetUniformAlbedo(mesh, glm::vec3(*options.albedo));
-  Summary("mesh: " + what + ": " + std::to_string(mesh.vertex_count()) + " vertices, " +
-          std::to_string(mesh.triangle_count()) + " triangles" + Format(" [%.3f s]", SecondsSince(t0)));
-  return mesh;
-}
-
 TransportOptions TransportOptionsOf(const SceneOptions& options) {
   TransportOptions t;
   t.mode = TransportModeFromName(options.transport);
@@ -94,13 +87,38 @@ TransportOptions TransportOptionsOf(const SceneOptions& options) {
   return t;
 }
 
-Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, const std::string& cache_path) {
+CachePlan PlanCache(const std::string& option, OutputFolder* folder) {
+  namespace fs = std::filesystem;
+  if (option == "none") return {"", false};
+  const bool given = !option.empty();
+  if (!given && !folder) return {"", false};
+  const std::string path = given ? option : folder->dir() + "/transport.cache";
+  const std::string what = (given ? "--cache: " : "cache: ") + path + ": ";
+  const auto skip = [&what](const std::string& why) {
+    Warn(what + why + "; going on without the cache");
+    return CachePlan{"", false};
+  };
+  std::error_code ec;
+  fs::path dir = fs::path(path).parent_path();
+  if (dir.empty()) dir = ".";
+  if (fs::is_directory(path, ec)) return skip("is a folder (expected a file name)");
+  if (!fs::exists(dir, ec)) return skip("folder '" + dir.string() + "' does not exist");
+  if (!fs::is_directory(dir, ec)) return skip("'" + dir.string() + "' is a file, not a folder");
+  if (::access(dir.c_str(), W_OK) != 0) {
+    Warn(what + "folder '" + dir.string() + "' is not writable: the cache is read if it matches, but not updated");
+    return {path, false};
+  }
+  return {given ? path : folder->Output("transport.cache"), true};
+}
+
+Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, const CachePlan& cache) {
   const TransportOptions topts = TransportOptionsOf(options);
   const std::uint64_t key = TransportKey(mesh, topts);
   std::string why;
-  if (!cache_path.empty()) {
-    if (auto cached = ReadTransportCache(cache_path, key, why)) {
-      Summary("transport: taken from the cache " + cache_path + " (same mesh and options)");
+  if (!cache.path.empty()) {
+    if (auto cached = ReadTransportCache(cache.path, key, why)) {
+      Summary("transport: taken from the cache " + cache.path + " (same mesh and options)");
+      WarnIfMostlyBlocked(mesh, *cached, topts.mode);
       return std::move(*cached);
     }
   }
@@ -128,39 +146,24 @@ Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, c
     if (transport.channels == 3) bounces += "; coloured albedo: one transport vector per colour channel";
     Summary(bounces);
   }
-  if (!cache_path.empty()) {
-    if (why != "no cache yet") Summary("cache: " + cache_path + " ignored (" + why + "), recomputed");
-    WriteTransportCache(cache_path, transport, key);
+  WarnIfMostlyBlocked(mesh, transport, topts.mode);
+  if (!cache.path.empty() && cache.write) {
+    if (why != "no cache yet") Summary("cache: " + cache.path + " ignored (" + why + "), recomputed");
+    try {
+      WriteTransportCache(cache.path, transport, key);
+    } catch (const Error& e) {
+      Warn(std::string(e.what()) + "; the transport was computed but not cached");
+    }
   }
   return transport;
 }
 
-void RenderJob(const SceneOptions& scene, const RenderOptions& render, const std::string& cache_path) {
-  std::error_code ec;
-  std::filesystem::create_directories(render.out, ec);
-  if (!std::filesystem::is_directory(render.out)) throw Error(render.out + ": cannot create the output folder");
-  const auto env = LoadSceneEnvironment(scene);
-  const ShRgb light = ComputeLight(*env, scene);
-  const Mesh mesh = LoadSceneMesh(scene);
-  const Transport transport = ComputeSceneTransport(mesh, scene, cache_path);
-  const Camera camera = ChooseCamera(mesh, render);
-  Summary("camera: " + CameraArgs(camera));
-  const AxisRotation rotation(render.axis, transport.lmax);
-  Summary("rotation: " + rotation.Describe() + "; only the " + std::to_string(CoeffCount(transport.lmax)) +
-          " coefficients the transport has are turned");
-
-  const FrameStats stats = RenderFrames(mesh, transport, light, *env, camera, render);
-  std::string line = "frames: " + std::to_string(stats.frames) + " of " + std::to_string(render.width) + "x" +
-                     std::to_string(render.height) + " in " + render.out + "/" +
-                     Format(" [draw %.3f s, waiting for PNG encoding %.3f s]", stats.draw_seconds, stats.encode_seconds);
-  Summary(line);
-  if (stats.negative_pixels > 0)
-    Summary("ringing: " + std::to_string(stats.negative_pixels) +
-            " pixels over all frames had negative radiance (SH ringing), clamped to 0; --window auto reduces it");
-  if (stats.nan_pixels > 0) Summary("warning: " + std::to_string(stats.nan_pixels) + " NaN pixels set to 0");
-  if (stats.stale_frames > 0)
-    Summary("note: " + std::to_string(stats.stale_frames) + " older frame files numbered from " +
-            FrameName(stats.frames) + " on were left untouched (not written by this run)");
+void FinishOutputs(OutputFolder& folder) {
+  const std::vector<std::string> removed = folder.Finish();
+  if (removed.empty()) return;
+  Summary("outputs: removed " + std::to_string(removed.size()) + " file" + (removed.size() > 1 ? "s" : "") +
+          " an earlier run wrote in " + folder.dir() + " and this one did not (" + removed.front() +
+          (removed.size() > 1 ? " ... " + removed.back() : "") + ")");
 }
 
 }  // namespace prt

@@ -2,16 +2,22 @@
 /// \file
 /// The stages of prt as the commands chain them (docs/ARCHITECTURE.md):
 ///
-///   args -> SceneOptions -> LoadEnvironment -> Environment -> ProjectLight(lmax) -> light SH
-///                           LoadSceneMesh -> Mesh -> ComputeTransport (or the cache) -> Transport
+///   args -> SceneOptions, RenderOptions            (checked before any work)
+///        -> OutputFolder (created, locked)
+///        -> LoadSceneMesh -> Mesh (oriented, split)  -> ChooseCamera
+///        -> LoadSceneEnvironment -> ComputeLight -> light SH
+///        -> ComputeSceneTransport (or the cache) -> Transport
+///        -> RenderFrames -> frame_0000.png ...     -> OutputFolder::Finish
 ///
 /// Each stage is a function from const inputs to a returned value and reports what it did (and
 /// what it left out, and why) on the run summary.
 
 #include <memory>
+#include <string>
 
 #include "app/render_frames.h"
 #include "app/scene_options.h"
+#include "core/output_folder.h"
 #include "env/environment.h"
 #include "geometry/mesh.h"
 #include "precompute/transport.h"
@@ -26,18 +32,44 @@ std::unique_ptr<Environment> LoadSceneEnvironment(const SceneOptions& options);
 /// (`auto` picks the mildest window that keeps the reconstruction non-negative and says why).
 ShRgb ComputeLight(const Environment& env, const SceneOptions& options);
 
-/// The mesh of `--mesh` (or the embedded demo scene), with `--albedo` applied.
+/// The mesh of `--mesh` (or the embedded demo scene): an inside-out mesh turned right way out
+/// where that is unambiguous (geometry/orientation.h), `--albedo` applied, triangles split by
+/// `--max-edge`; each repair and anything suspicious reported on the run summary.
 Mesh LoadSceneMesh(const SceneOptions& options);
+
+/// What the scene options change in any mesh: `--albedo`, then the `--max-edge` split (refused
+/// with an Error before splitting when it would make an unreasonable number of triangles).
+void ApplySceneEdits(Mesh& mesh, const SceneOptions& options);
 
 /// The transport options the scene options ask for.
 TransportOptions TransportOptionsOf(const SceneOptions& options);
 
-/// The transport of `mesh`: read from `cache_path` when that file was made from the same mesh
-/// and options, else computed (and written there, unless `cache_path` is empty).
-Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, const std::string& cache_path);
+/// Where the transport cache is read and written. The cache is an optimisation: a path that
+/// cannot be used is a warning (naming the cause) and the run goes on without it.
+struct CachePlan {
+  std::string path;     ///< empty: no cache
+  bool write = true;    ///< false: read if present, never written (folder not writable)
+};
 
-/// The whole main job: light, mesh, transport (cached in `cache_path` unless empty), camera, frames;
-/// each stage reports on the run summary. Used by `render` and `demo`.
-void RenderJob(const SceneOptions& scene, const RenderOptions& render, const std::string& cache_path);
+/// The plan for the `--cache` value `option` ("" = `transport.cache` in `folder`, "none" = no
+/// cache), checked before any work.
+CachePlan PlanCache(const std::string& option, OutputFolder* folder);
+
+/// The transport of `mesh`: read from the cache when that file was made from the same mesh
+/// and options, else computed (and written there when the plan allows; a failed write is a
+/// warning). Warns when most vertices see no light at all (an inside-out or enclosed mesh).
+Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, const CachePlan& cache);
+
+/// Ends a successful run's use of `folder` (OutputFolder::Finish): removes what an earlier run
+/// wrote there and this one did not, and says so on the run summary.
+void FinishOutputs(OutputFolder& folder);
+
+/// Says how many frame files in `folder` this run did not write and prt has no record of
+/// (after FinishOutputs, which removes those it has): they are left as they are.
+void NoteForeignFrames(OutputFolder& folder);
+
+/// The whole main job: mesh, camera, light, transport, frames into `folder`; each stage
+/// reports on the run summary. Used by `render` and `demo`.
+void RenderJob(const SceneOptions& scene, const RenderOptions& render, OutputFolder& folder);
 
 }  // namespace prt

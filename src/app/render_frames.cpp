@@ -3,25 +3,22 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <future>
-#include <regex>
 
+#include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
 #include "core/error.h"
 #include "core/progress.h"
 #include "geometry/mesh_ops.h"
+#include "io/image_load.h"
 #include "io/png_io.h"
 #include "precompute/shade.h"
-#include "io/image_load.h"
 #include "raster/annotate.h"
-#include "raster/rasterizer.h"
+#include "raster/exposure.h"
 #include "sh/basis.h"
-#include "raster/tonemap.h"
 
 namespace prt {
-namespace fs = std::filesystem;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
@@ -29,41 +26,6 @@ constexpr double kPi = 3.14159265358979323846;
 double Since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
-
-/// Frame files in `dir` numbered `first` or higher (left from an earlier, longer run).
-std::size_t CountStaleFrames(const std::string& dir, int first) {
-  static const std::regex pattern("frame_([0-9]+)\\.png");
-  std::size_t n = 0;
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(dir, ec)) {
-    std::smatch m;
-    const std::string name = entry.path().filename().string();
-    if (std::regex_match(name, m, pattern) && std::stoll(m[1].str()) >= first) ++n;
-  }
-  return n;
-}
-
-}  // namespace
-
-std::string FrameName(int i) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "frame_%04d.png", i);
-  return buf;
-}
-
-Camera ChooseCamera(const Mesh& mesh, const RenderOptions& o) {
-  const Bounds3 b = MeshBounds(mesh);
-  Camera c = FrameBounds(b.lo, b.hi, float(o.width) / float(o.height));
-  if (o.eye) c.eye = glm::vec3(*o.eye);
-  if (o.target) c.target = glm::vec3(*o.target);
-  if (o.up) c.up = glm::vec3(*o.up);
-  if (o.fov) c.fov_deg = float(*o.fov);
-  c = FitClipPlanes(c, b.lo, b.hi);
-  CheckCamera(c);
-  return c;
-}
-
-namespace {
 
 /// Radiance of the SH reconstruction sum_k L_k Y_k(d).
 glm::vec3 Reconstruct(const ShRgb& light, const glm::dvec3& d) {
@@ -99,15 +61,49 @@ std::vector<glm::vec3> ViewColors(const Mesh& mesh, const Transport& transport, 
   return ShadeVertices(mesh, transport, lit);
 }
 
+/// A perpendicular up for a view along world up: looking down, the image's top shows -Z (the
+/// far side of a scene facing +Z); looking up, +Z.
+glm::vec3 UpAcross(const glm::vec3& view) { return view.y < 0.f ? glm::vec3(0, 0, -1) : glm::vec3(0, 0, 1); }
+
 }  // namespace
 
-ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                     const AxisRotation& rotation, const Environment& env, const Camera& camera,
-                     const RenderOptions& o, double angle) {
-  if (o.view == "transport" && o.transport_index >= CoeffCount(transport.lmax))
-    throw UsageError("--view: transport:" + std::to_string(o.transport_index) + " is out of range (expected 0 to " +
-                         std::to_string(CoeffCount(transport.lmax) - 1) + " for lmax " + std::to_string(transport.lmax) + ")",
-                     "render");
+std::string FrameName(int i, int count) {
+  int digits = 4;
+  for (long long limit = 10000; limit < count; limit *= 10) ++digits;
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "frame_%0*d.png", digits, i);
+  return buf;
+}
+
+Camera ChooseCamera(const Mesh& mesh, const RenderOptions& o, std::string* note) {
+  const Bounds3 b = MeshBounds(mesh);
+  const float aspect = float(o.width) / float(o.height);
+  Camera c = FramePoints(mesh.positions, aspect, o.fov ? float(*o.fov) : Camera{}.fov_deg);
+  if (o.eye) c.eye = glm::vec3(*o.eye);
+  if (o.target) c.target = glm::vec3(*o.target);
+  else if (o.eye) c.target = 0.5f * (b.lo + b.hi);
+  if (o.up) c.up = glm::vec3(*o.up);
+  if (o.fov) c.fov_deg = float(*o.fov);
+  const glm::vec3 view = c.target - c.eye;
+  if (!o.up && glm::length(view) > 0.f &&
+      glm::length(glm::cross(glm::normalize(view), glm::normalize(c.up))) < 1e-6f) {
+    const glm::vec3 world_up = c.up;
+    c.up = UpAcross(view);
+    if (note) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "up %g,%g,%g is parallel to the view, so up %g,%g,%g is used", double(world_up.x),
+                    double(world_up.y), double(world_up.z), double(c.up.x), double(c.up.y), double(c.up.z));
+      *note = buf;
+    }
+  }
+  c = FitClipPlanes(c, b.lo, b.hi);
+  CheckCamera(c);
+  return c;
+}
+
+const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport,
+                                  const ShRgb& light, const AxisRotation& rotation, const Environment& env,
+                                  const Camera& camera, const RenderOptions& o, double angle) {
   // The light, and the environment behind the mesh, turned by R: L'(d) = L(R^T d). Only the
   // bands the transport has are turned.
   const ShRgb used(light.begin(), light.begin() + std::min(light.size(), std::size_t(CoeffCount(transport.lmax))));
@@ -117,39 +113,57 @@ ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& 
   RasterOptions ro;
   ro.ssaa = o.ssaa;
   ro.background.color = o.background_color;
-  if (o.view == "light") {
-    ro.background.radiance = [&lit](const glm::vec3& d) { return Reconstruct(lit, glm::dvec3(d)); };
+  if (o.view == "transport") {
+    ro.background.color = glm::vec3(static_cast<float>(SrgbToLinear(0.5f)));  // neutral grey: no colour to confuse with T
+  } else if (o.view == "light") {
+    ro.background.radiance = [lit](const glm::vec3& d) { return Reconstruct(lit, glm::dvec3(d)); };
   } else if (o.env_background) {
     const glm::mat3 inverse(glm::transpose(AxisAngle(glm::normalize(o.axis), angle)));
     ro.background.radiance = [&env, inverse](const glm::vec3& d) { return glm::vec3(env.Radiance(glm::dvec3(inverse * d))); };
   }
-  const RasterImage& frame = rasterizer.Draw(camera, o.width, o.height, mesh.positions, mesh.triangles, colors, ro);
+  return rasterizer.Draw(camera, o.width, o.height, mesh.positions, mesh.triangles, colors, ro);
+}
+
+ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
+                     const AxisRotation& rotation, const Environment& env, const Camera& camera,
+                     const RenderOptions& o, double angle, double exposure_ev) {
+  const RasterImage& frame = RasterizeFrame(rasterizer, mesh, transport, light, rotation, env, camera, o, angle);
   ToneMapOptions tone;
   tone.curve = o.tonemap;
-  tone.exposure_ev = float(o.exposure);
+  tone.exposure_ev = float(exposure_ev);
   if (o.view == "transport") tone = ToneMapOptions{};  // false colours pass through unchanged
   ToneMapped mapped = ToneMap(frame.image, tone);
-  if (o.view == "transport") DrawDivergingLegend(mapped.image, scale, "T" + std::to_string(o.transport_index));
+  if (o.view == "transport") {
+    double scale = 0.0;
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
+      scale = std::max(scale, double(std::abs(transport.at(v, 0)[o.transport_index])));
+    DrawDivergingLegend(mapped.image, scale, "T" + std::to_string(o.transport_index));
+  }
   return mapped;
 }
 
-FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                        const Environment& env, const Camera& camera, const RenderOptions& o) {
-  std::error_code ec;
-  fs::create_directories(o.out, ec);
-  if (!fs::is_directory(o.out)) throw Error(o.out + ": cannot create the output folder");
+double ResolveExposure(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
+                       const AxisRotation& rotation, const Environment& env, const Camera& camera,
+                       const RenderOptions& o) {
+  if (o.exposure) return *o.exposure;
+  if (o.view == "transport") return 0.0;
+  return AutoExposureEv(RasterizeFrame(rasterizer, mesh, transport, light, rotation, env, camera, o, 0.0), o.tonemap);
+}
 
+FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Environment& env,
+                        const Camera& camera, const RenderOptions& o, OutputFolder& folder) {
   FrameStats stats;
   stats.frames = o.frames;
   Rasterizer rasterizer;
   const AxisRotation rotation(o.axis, transport.lmax);
+  stats.exposure = ResolveExposure(rasterizer, mesh, transport, light, rotation, env, camera, o);
   std::future<void> writing;  // the previous frame's encode-and-write
   Progress progress("rendering", static_cast<std::size_t>(o.frames));
   for (int i = 0; i < o.frames; ++i) {
     // Each frame from its absolute angle: no accumulated drift.
     const double angle = 2.0 * kPi * o.turns * double(i) / double(o.frames);
     const auto t0 = std::chrono::steady_clock::now();
-    ToneMapped mapped = DrawFrame(rasterizer, mesh, transport, light, rotation, env, camera, o, angle);
+    ToneMapped mapped = DrawFrame(rasterizer, mesh, transport, light, rotation, env, camera, o, angle, stats.exposure);
     stats.draw_seconds += Since(t0);
     stats.negative_pixels += mapped.negative_pixels;
     stats.nan_pixels += mapped.nan_pixels;
@@ -157,14 +171,13 @@ FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRg
     const auto t1 = std::chrono::steady_clock::now();
     if (writing.valid()) writing.get();  // rethrows a write error
     stats.encode_seconds += Since(t1);
-    const std::string path = o.out + "/" + FrameName(i);
+    const std::string path = folder.Output(FrameName(i, o.frames));
     writing = std::async(std::launch::async, [path, image = std::move(mapped.image)] { WritePng(path, image); });
     progress.Advance(1);
   }
   const auto t1 = std::chrono::steady_clock::now();
   if (writing.valid()) writing.get();
   stats.encode_seconds += Since(t1);
-  stats.stale_frames = CountStaleFrames(o.out, o.frames);
   return stats;
 }
 

@@ -4,13 +4,14 @@
 ///     a_i = 2 pi * turns * i / N
 /// about the axis (sh/axis_rotation.h, built from the absolute angle: no drift), the vertices are
 /// shaded by their transport (precompute/shade.h), the mesh is rasterized over the environment
-/// turned by the same rotation, tone-mapped, and written as DIR/frame_NNNN.png. Encoding frame
-/// i overlaps drawing frame i+1.
+/// turned by the same rotation, tone-mapped, and written as DIR/frame_NNNN.png (four digits, more
+/// when N needs them, so names sort in frame order). Encoding frame i overlaps drawing i+1.
 
 #include <cstddef>
 #include <string>
 
 #include "app/render_options.h"
+#include "core/output_folder.h"
 #include "env/environment.h"
 #include "geometry/mesh.h"
 #include "precompute/transport.h"
@@ -24,28 +25,42 @@ namespace prt {
 
 struct FrameStats {
   int frames = 0;
+  double exposure = 0.0;            ///< the EV used (measured when --exposure auto)
   std::size_t negative_pixels = 0;  ///< summed over frames: pixels whose radiance was < 0 (ringing)
   std::size_t nan_pixels = 0;
   double draw_seconds = 0, encode_seconds = 0;
-  std::size_t stale_frames = 0;     ///< older frame files beyond the last one, left untouched
 };
 
-/// The camera of the options: automatic framing of the mesh bounds, overridden by what the
-/// options give, with clip planes fitted to the mesh.
-Camera ChooseCamera(const Mesh& mesh, const RenderOptions& options);
+/// The camera of the options: what they give, the rest from automatic framing of the mesh
+/// (raster/camera.h, fitted to its projected vertices), clip planes fitted to the mesh. When no
+/// --up was given and world up is parallel to the view, a perpendicular up is chosen and
+/// `note` (if given) says so.
+Camera ChooseCamera(const Mesh& mesh, const RenderOptions& options, std::string* note = nullptr);
 
-/// Draws one frame with the light turned by `angle` radians by `rotation` (about the options'
+/// The linear frame with the light turned by `angle` radians by `rotation` (about the options'
 /// axis, built once per run for the transport's lmax): shading, rasterizing over the turned
-/// environment, tone mapping. `rasterizer` keeps its buffers.
+/// environment (the teaching view transport:K over a neutral grey instead). `rasterizer` keeps
+/// its buffers; the result is valid until its next call.
+const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport,
+                                  const ShRgb& light, const AxisRotation& rotation, const Environment& env,
+                                  const Camera& camera, const RenderOptions& options, double angle);
+
+/// RasterizeFrame, then tone mapping with `exposure_ev` (and the legend of transport:K).
 ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
                      const AxisRotation& rotation, const Environment& env, const Camera& camera,
-                     const RenderOptions& options, double angle);
+                     const RenderOptions& options, double angle, double exposure_ev);
 
-/// Renders all frames into options.out (created if missing).
-FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                        const Environment& env, const Camera& camera, const RenderOptions& options);
+/// The exposure of the options, or for `auto` the one measured on frame 0 (raster/exposure.h).
+double ResolveExposure(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
+                       const AxisRotation& rotation, const Environment& env, const Camera& camera,
+                       const RenderOptions& options);
 
-/// The file name of frame `i`: frame_0000.png, ...
-std::string FrameName(int i);
+/// Renders all frames into `folder`, each named through folder.Output().
+FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Environment& env,
+                        const Camera& camera, const RenderOptions& options, OutputFolder& folder);
+
+/// The file name of frame `i` of `count`: frame_0000.png ..., with as many digits as count - 1
+/// needs (at least four), so that the names sort in frame order.
+std::string FrameName(int i, int count);
 
 }  // namespace prt

@@ -1,54 +1,81 @@
 #include "app/render_options.h"
 
 #include <cmath>
+#include <cstdlib>
+#include <map>
 #include <sstream>
 
-#include "core/error.h"
+#include <glm/geometric.hpp>
+
 #include "raster/rasterizer.h"
 #include "sh/coeffs.h"
 
-#include <cstdlib>
-
 namespace prt {
+namespace {
 
-const char* const kRenderOptionsHelp =
-    "render options:\n"
-    "  --frames N          frames over the turns, 1..100000 (default 120)\n"
-    "  --size WxH          frame size in pixels, each 1..16384 (default 640x480)\n"
-    "  --out DIR           output folder for frame_0000.png ... (default out/render)\n"
-    "  --axis X,Y,Z        rotation axis of the light (default 0,1,0: world up)\n"
-    "  --turns T           full turns of the light over all frames (default 1)\n"
-    "  --background B      env | black | R,G,B (linear, each >= 0) (default env: the environment,\n"
-    "                      turning with the light)\n"
-    "  --tonemap T         srgb | reinhard | aces (default srgb)\n"
-    "  --exposure EV       radiance is scaled by 2^EV before tone mapping, -20..20 (default 0)\n"
-    "  --ssaa K            K x K supersampling, 1..8 (default 1)\n"
-    "  --view V            radiance | irradiance | albedo | transport:K | light (default radiance):\n"
-    "                      the final colour, the lighting alone (albedo 1), the albedo, the K-th\n"
-    "                      transport coefficient in false colour with a legend, or the light as\n"
-    "                      the SH coefficients reconstruct it (on the mesh: in the normal's direction)\n"
-    "  --eye X,Y,Z --target X,Y,Z --up X,Y,Z --fov DEGREES\n"
-    "                      the camera; what is not given comes from automatic framing of the mesh,\n"
-    "                      and the run summary prints the camera used in this same syntax\n";
+std::string Number(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", v);
+  return buffer;
+}
 
-RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
-  RenderOptions o = d;
-  o.frames = args.Int("--frames", d.frames, 1, 100000);
-  if (const auto size = args.String("--size")) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    std::istringstream ss(*size);
-    if (!(ss >> w >> x >> h) || x != 'x' || (ss >> extra) || w < 1 || h < 1 || w > 16384 || h > 16384)
-      throw UsageError("--size: '" + *size + "' is not a size (expected WxH, each from 1 to 16384)", args.command());
-    o.width = w, o.height = h;
-  }
-  o.out = args.String("--out", d.out);
-  if (const auto axis = args.Vec3("--axis")) {
-    if (std::sqrt(axis->x * axis->x + axis->y * axis->y + axis->z * axis->z) < 1e-12)
-      throw UsageError("--axis: must not be zero", args.command());
-    o.axis = *axis;
-  }
-  o.turns = args.Double("--turns", d.turns, -1e6, 1e6);
+std::string Vec(const glm::dvec3& v) { return Number(v.x) + "," + Number(v.y) + "," + Number(v.z); }
+
+std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
+  std::map<std::string, OptionSpec> s;
+  auto add = [&s](OptionSpec o) { s[o.name] = std::move(o); };
+  add({"--frames", "N", "frames over the turns, 1..100000 (frame i shows the light turned by 360 * turns * i / N degrees)",
+       std::to_string(d.frames)});
+  add({"--size", "WxH", "frame size in pixels, each 1..16384", std::to_string(d.width) + "x" + std::to_string(d.height)});
+  add({"--out", "DIR",
+       "output folder, created if missing; one run at a time, and after a successful run it holds exactly that "
+       "run's outputs (older prt outputs it did not rewrite are removed, other files are never touched)",
+       d.out.empty() ? "required" : d.out});
+  add({"--axis", "X,Y,Z", "rotation axis of the light", Vec(d.axis) + ", world up"});
+  add({"--turns", "T", "full turns of the light over all frames, -1e6..1e6", Number(d.turns)});
+  add({"--background", "B", "env | black | R,G,B (linear, each >= 0): env draws the environment, turning with the light",
+       d.env_background ? "env" : "black"});
+  add({"--tonemap", "T", "srgb (clamp) | reinhard | aces (a filmic curve that keeps bright suns from clipping)",
+       ToneCurveName(d.tonemap)});
+  add({"--exposure", "EV",
+       "radiance is scaled by 2^EV before tone mapping, -20..20; auto: chosen from frame 0's mesh pixels and "
+       "printed on the run summary, so a run can be repeated exactly",
+       d.exposure ? Number(*d.exposure) : "auto"});
+  add({"--ssaa", "K", "K x K supersampling per pixel, 1..8", std::to_string(d.ssaa)});
+  add({"--view", "V",
+       "radiance | irradiance | albedo | transport:K | light: the final colour; the lighting alone (albedo 1); "
+       "the albedo; the K-th transport coefficient in false colour with a legend, on a grey background; the "
+       "light as the SH coefficients reconstruct it (on the mesh: in the normal's direction)",
+       d.view == "transport" ? "transport:" + std::to_string(d.transport_index) : d.view});
+  add({"--eye", "X,Y,Z", "camera position",
+       d.eye ? Vec(*d.eye) : "a three-quarter view fitted to the mesh's projected bounds; 6,3.2,9 for the embedded scene"});
+  add({"--target", "X,Y,Z", "point the camera looks at (the image centre)",
+       d.target ? Vec(*d.target) : "fitted with --eye; the mesh's centre when only --eye is given; 0,1.5,0 for the embedded scene"});
+  add({"--up", "X,Y,Z",
+       "camera up direction (when the default 0,1,0 is parallel to the view, a perpendicular one is chosen and "
+       "printed)",
+       d.up ? Vec(*d.up) : "0,1,0"});
+  add({"--fov", "DEGREES", "vertical field of view, 0.001..179", d.fov ? Number(*d.fov) : "35; 36 for the embedded scene"});
+  add({"--cache", "PATH",
+       "transport cache to reuse and update, so a re-run with the same mesh and options skips the precompute; "
+       "`none` disables it; a path that cannot be used is a warning, not an error",
+       d.cache.empty() ? "DIR/transport.cache" : d.cache});
+  return s;
+}
+
+/// WxH, each from 1 to 16384.
+void ReadSize(Args& args, RenderOptions& o) {
+  const auto size = args.String("--size");
+  if (!size) return;
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  std::istringstream ss(*size);
+  if (!(ss >> w >> x >> h) || x != 'x' || (ss >> extra) || w < 1 || h < 1 || w > 16384 || h > 16384)
+    args.Fail("--size: '" + *size + "' is not a size (expected WxH, each from 1 to 16384)");
+  o.width = w, o.height = h;
+}
+
+void ReadBackground(Args& args, RenderOptions& o, const RenderOptions& d) {
   const std::string bg = args.String("--background", d.env_background ? "env" : "black");
   if (bg == "env") {
     o.env_background = true;
@@ -60,34 +87,109 @@ RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
     char c1 = 0, c2 = 0;
     if (!(ss >> c.x >> c1 >> c.y >> c2 >> c.z) || c1 != ',' || c2 != ',' || c.x < 0 || c.y < 0 || c.z < 0 ||
         !std::isfinite(c.x + c.y + c.z))
-      throw UsageError("--background: '" + bg + "' (expected env, black or R,G,B with each >= 0)", args.command());
+      args.Fail("--background: '" + bg + "' (expected env, black or R,G,B with each >= 0)");
     o.env_background = false, o.background_color = glm::vec3(c);
   }
-  const std::string curve = args.Choice("--tonemap", ToneCurveName(d.tonemap), {"srgb", "reinhard", "aces"});
-  o.tonemap = *ParseToneCurve(curve);
-  o.exposure = args.Double("--exposure", d.exposure, -20.0, 20.0);
-  o.ssaa = args.Int("--ssaa", d.ssaa, 1, 8);
-  if (static_cast<long long>(o.width) * o.ssaa > kMaxTargetSide || static_cast<long long>(o.height) * o.ssaa > kMaxTargetSide)
-    throw UsageError("--ssaa: " + std::to_string(o.ssaa) + " times the frame size exceeds " +
-                     std::to_string(kMaxTargetSide) + " samples per side", args.command());
-  const std::string view = args.String("--view", d.view);
+}
+
+void ReadView(Args& args, RenderOptions& o, const RenderOptions& d) {
+  const std::string view = args.String("--view", d.view == "transport" ? "transport:" + std::to_string(d.transport_index) : d.view);
   if (view.rfind("transport:", 0) == 0) {
     const std::string k = view.substr(10);
     char* end = nullptr;
     const long index = std::strtol(k.c_str(), &end, 10);
     if (k.empty() || *end != '\0' || index < 0 || index >= CoeffCount(kMaxLmax))
-      throw UsageError("--view: '" + view + "' (expected transport:K with K a coefficient index from 0)", args.command());
+      args.Fail("--view: '" + view + "' (expected transport:K with K a coefficient index from 0)");
     o.view = "transport", o.transport_index = static_cast<int>(index);
   } else if (view == "radiance" || view == "irradiance" || view == "albedo" || view == "light") {
     o.view = view;
   } else {
-    throw UsageError("--view: unknown value '" + view + "' (expected radiance, irradiance, albedo, transport:K or light)",
-                     args.command());
+    args.Fail("--view: unknown value '" + view + "' (expected radiance, irradiance, albedo, transport:K or light)");
   }
+}
+
+/// The camera options, checked on their own: a zero --up, --eye equal to --target, and an
+/// explicit --up along an explicit view are errors; a default up along the view is not (it is
+/// replaced when the camera is built, raster/camera.h).
+void ReadCamera(Args& args, RenderOptions& o) {
   if (auto v = args.Vec3("--eye")) o.eye = v;
   if (auto v = args.Vec3("--target")) o.target = v;
-  if (auto v = args.Vec3("--up")) o.up = v;
+  if (auto v = args.Vec3("--up")) {
+    if (glm::length(*v) < 1e-12) args.Fail("--up: is zero (expected a direction, such as 0,1,0)");
+    o.up = v;
+  }
   if (args.Has("--fov")) o.fov = args.Double("--fov", 35.0, 1e-3, 179.0);
+  if (args.Has("--eye") && args.Has("--target")) {
+    const glm::dvec3 view = *o.target - *o.eye;
+    if (glm::length(view) < 1e-12) args.Fail("--eye: equals --target (expected two different points)");
+    if (args.Has("--up") && glm::length(glm::cross(glm::normalize(view), glm::normalize(*o.up))) < 1e-6)
+      args.Fail("--up: parallel to the view direction --target - --eye (expected a direction across it)");
+  }
+}
+
+}  // namespace
+
+RenderOptions WithDemoCamera(RenderOptions o) {
+  o.eye = glm::dvec3(6.0, 3.2, 9.0);
+  o.target = glm::dvec3(0.0, 1.5, 0.0);
+  o.fov = 36.0;
+  return o;
+}
+
+const std::vector<std::string>& AllRenderOptionNames() {
+  static const std::vector<std::string> names = {
+      "--frames", "--size",     "--out",  "--axis", "--turns",  "--background", "--tonemap", "--exposure",
+      "--ssaa",   "--view",     "--eye",  "--target", "--up",   "--fov",        "--cache"};
+  return names;
+}
+
+OptionGroup RenderOptionGroup(const RenderOptions& defaults, const std::vector<std::string>& names,
+                              const std::string& title) {
+  const auto specs = RenderSpecs(defaults);
+  OptionGroup group{title, {}};
+  for (const auto& n : names) group.options.push_back(specs.at(n));
+  return group;
+}
+
+RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
+  RenderOptions o = d;
+  const auto has = [&args](const char* name) { return args.Accepts(name); };
+  if (has("--frames")) o.frames = args.Int("--frames", d.frames, 1, 100000);
+  if (has("--size")) ReadSize(args, o);
+  if (has("--out")) o.out = args.String("--out", d.out);
+  if (has("--axis")) {
+    if (const auto axis = args.Vec3("--axis")) {
+      if (glm::length(*axis) < 1e-12) args.Fail("--axis: is zero (expected a direction, such as 0,1,0)");
+      o.axis = *axis;
+    }
+  }
+  if (has("--turns")) o.turns = args.Double("--turns", d.turns, -1e6, 1e6);
+  if (has("--background")) ReadBackground(args, o, d);
+  if (has("--tonemap")) {
+    const std::string curve = args.Choice("--tonemap", ToneCurveName(d.tonemap), {"srgb", "reinhard", "aces"});
+    o.tonemap = *ParseToneCurve(curve);
+  }
+  if (has("--exposure")) {
+    const auto text = args.String("--exposure");
+    if (text && *text == "auto") o.exposure.reset();
+    else if (text) o.exposure = args.Double("--exposure", 0.0, -20.0, 20.0);  // reads the same value
+  }
+  if (has("--ssaa")) o.ssaa = args.Int("--ssaa", d.ssaa, 1, 8);
+  if (static_cast<long long>(o.width) * o.ssaa > kMaxTargetSide || static_cast<long long>(o.height) * o.ssaa > kMaxTargetSide)
+    args.Fail("--ssaa: " + std::to_string(o.ssaa) + " times the frame size exceeds " + std::to_string(kMaxTargetSide) +
+              " samples per side (expected a smaller --ssaa or --size)");
+  if (has("--view")) ReadView(args, o, d);
+  if (has("--eye")) ReadCamera(args, o);
+  if (has("--cache")) o.cache = args.String("--cache", d.cache);
+  return o;
+}
+
+RenderOptions CompleteRenderOptions(Args& args, RenderOptions o, const SceneOptions& scene) {
+  if (o.view == "transport" && o.transport_index >= CoeffCount(scene.lmax))
+    args.Fail("--view: transport:" + std::to_string(o.transport_index) + " is out of range (expected 0 to " +
+              std::to_string(CoeffCount(scene.lmax) - 1) + " for lmax " + std::to_string(scene.lmax) + ")");
+  const bool camera_given = args.Has("--eye") || args.Has("--target") || args.Has("--up") || args.Has("--fov");
+  if (scene.mesh.empty() && !camera_given && !o.eye) o = WithDemoCamera(o);
   return o;
 }
 

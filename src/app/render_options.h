@@ -1,14 +1,17 @@
 #pragma once
 /// \file
-/// The render options of CLI.md (frames, size, rotation, background, tone mapping, camera),
-/// read and validated once for `render` and `demo`.
+/// The render options of CLI.md (frames, size, rotation, background, tone mapping, camera, the
+/// transport cache): their table entries, documented with the command's own defaults, and their
+/// reader. Every value, the camera included, is checked here, before any file is loaded.
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "app/args.h"
+#include "app/scene_options.h"
 #include "raster/tonemap.h"
 
 namespace prt {
@@ -21,20 +24,37 @@ struct RenderOptions {
   double turns = 1.0;              ///< full turns over all frames
   bool env_background = true;      ///< the environment behind the mesh, else background_color
   glm::vec3 background_color{0.0f};
-  ToneCurve tonemap = ToneCurve::kSrgb;
-  double exposure = 0.0;           ///< EV
-  int ssaa = 1;
+  ToneCurve tonemap = ToneCurve::kAces;
+  /// EV: radiance is scaled by 2^exposure before tone mapping. Empty: automatic, measured on
+  /// frame 0's mesh pixels (raster/exposure.h) and printed on the run summary.
+  std::optional<double> exposure;
+  int ssaa = 2;
   std::optional<glm::dvec3> eye, target, up;
   std::optional<double> fov;
   /// What to draw: radiance (the final colour), irradiance (albedo 1), albedo, transport (the
   /// coefficient transport_index in false colour) or light (the SH-reconstructed light).
   std::string view = "radiance";
   int transport_index = 0;
+  /// The transport cache to reuse and update: empty for "DIR/transport.cache", "none" for none.
+  std::string cache;
 };
 
-/// Reads the render options from `args`, with `defaults` for what is not given.
+/// The camera of `prt demo`, also used by render and reference on the embedded scene: a
+/// three-quarter view of the knot with the horizon in frame.
+RenderOptions WithDemoCamera(RenderOptions options);
+
+/// Every render option in help order: what `render` and `demo` take.
+const std::vector<std::string>& AllRenderOptionNames();
+
+/// The table entries of the render options in `names`, documented with `defaults`' values.
+OptionGroup RenderOptionGroup(const RenderOptions& defaults, const std::vector<std::string>& names,
+                              const std::string& title = "render options");
+
+/// Reads the render options the command's table lists, with `defaults` for what is not given.
 RenderOptions ReadRenderOptions(Args& args, const RenderOptions& defaults);
 
-extern const char* const kRenderOptionsHelp;
+/// Checks what depends on both option sets (a transport coefficient the lmax does not have)
+/// and gives the embedded scene the demo's camera when no camera option was given.
+RenderOptions CompleteRenderOptions(Args& args, RenderOptions render, const SceneOptions& scene);
 
 }  // namespace prt

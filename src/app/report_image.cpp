@@ -1,5 +1,6 @@
 #include "app/report_image.h"
 
+#include "raster/exposure.h"
 #include "raster/rasterizer.h"
 #include "raster/tonemap.h"
 
@@ -10,11 +11,14 @@ RenderOptions ReportRenderOptions(int width, int height) {
   o.width = width;
   o.height = height;
   o.frames = 1;
+  o.tonemap = ToneCurve::kSrgb;
+  o.exposure = 0.0;
+  o.ssaa = 1;
   return o;
 }
 
 Image8 DrawVertexColors(const Mesh& mesh, const std::vector<glm::vec3>& colors, const Environment& env,
-                        const Camera& camera, const RenderOptions& o) {
+                        const Camera& camera, const RenderOptions& o, double* exposure_used) {
   RasterOptions ro;
   ro.ssaa = o.ssaa;
   ro.background.color = o.background_color;
@@ -23,7 +27,9 @@ Image8 DrawVertexColors(const Mesh& mesh, const std::vector<glm::vec3>& colors, 
   const RasterImage frame = Rasterize(camera, o.width, o.height, mesh.positions, mesh.triangles, colors, ro);
   ToneMapOptions tone;
   tone.curve = o.tonemap;
-  tone.exposure_ev = float(o.exposure);
+  const double ev = o.exposure ? *o.exposure : AutoExposureEv(frame, o.tonemap);
+  if (exposure_used) *exposure_used = ev;
+  tone.exposure_ev = float(ev);
   return ToneMap(frame.image, tone).image;
 }
 

@@ -18,13 +18,15 @@
 namespace prt {
 
 /// The render options the report pictures use: 320 x 240 unless `width`/`height` say otherwise,
-/// everything else as `render`'s defaults.
+/// the plain sRGB curve at exposure 0 without supersampling (so PSNR compares vertex colours
+/// through the simplest fixed mapping), everything else as `render`'s defaults.
 RenderOptions ReportRenderOptions(int width = 320, int height = 240);
 
 /// The mesh drawn with per-vertex linear radiance `colors` over the unturned environment, seen
-/// by `camera`, tone-mapped as `options` say (frame 0 of `render`).
+/// by `camera`, tone-mapped as `options` say (frame 0 of `render`). With automatic exposure
+/// the EV is measured on this picture (raster/exposure.h) and stored in `exposure_used`.
 Image8 DrawVertexColors(const Mesh& mesh, const std::vector<glm::vec3>& colors, const Environment& env,
-                        const Camera& camera, const RenderOptions& options);
+                        const Camera& camera, const RenderOptions& options, double* exposure_used = nullptr);
 
 /// Double-precision colours to float, as the rasterizer takes them.
 std::vector<glm::vec3> ToFloat(const std::vector<glm::dvec3>& colors);

@@ -143,11 +143,11 @@ Image8 Plot(const ReportData& d) {
 
 }  // namespace
 
-void WriteReport(const std::string& dir, const ReportData& d) {
-  WriteFileAtomic(dir + "/report.csv", Csv(d));
-  WriteFileAtomic(dir + "/report.md", Markdown(d));
-  WritePng(dir + "/error_vs_time.png", Plot(d));
-  Summary("wrote " + dir + "/report.csv, report.md and error_vs_time.png");
+void WriteReport(OutputFolder& folder, const ReportData& d) {
+  WriteFileAtomic(folder.Output("report.csv"), Csv(d));
+  WriteFileAtomic(folder.Output("report.md"), Markdown(d));
+  WritePng(folder.Output("error_vs_time.png"), Plot(d));
+  Summary("wrote " + folder.dir() + "/report.csv, report.md and error_vs_time.png");
 }
 
 }  // namespace prt

@@ -10,10 +10,11 @@
 #include <string>
 
 #include "app/report_sweep.h"
+#include "core/output_folder.h"
 
 namespace prt {
 
-/// Writes the three files into `dir` (which must exist), each atomically.
-void WriteReport(const std::string& dir, const ReportData& data);
+/// Writes the three files into `folder`, each atomically.
+void WriteReport(OutputFolder& folder, const ReportData& data);
 
 }  // namespace prt

@@ -1,74 +1,169 @@
 #include "app/scene_options.h"
 
-#include "app/report_auto_lmax.h"
-#include "env/load_environment.h"
-
 #include <cmath>
+#include <filesystem>
+#include <map>
 
+#include "app/report_auto_lmax.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/parallel.h"
+#include "env/load_environment.h"
 #include "sh/coeffs.h"
 
 namespace prt {
+namespace {
 
-const char* const kSceneOptionsHelp =
-    "scene options:\n"
-    "  --mesh PATH        OBJ file (default: the embedded demo scene)\n"
-    "  --env ENV          cubemap folder (posx negx posy negy posz negz, jpg/png/hdr/exr), an\n"
-    "                     equirectangular .hdr/.exr/.png/.jpg file, or a built-in: furnace[:C],\n"
-    "                     sky[:sun=3,elevation=40,azimuth=35,radius=2] (default: sky)\n"
-    "  --lmax L           highest SH band, 0..64; (L+1)^2 coefficients (default 2: 9); `auto`:\n"
-    "                     the smallest whose irradiance error is below --tolerance\n"
-    "  --tolerance X      relative error for --lmax auto, 1e-12..1 (default 0.01)\n"
-    "  --transport MODE   unshadowed | shadowed | interreflection (default shadowed)\n"
-    "  --samples N        directions per vertex (default 1024)\n"
-    "  --sampler NAME     fibonacci | stratified | uniform (default fibonacci)\n"
-    "  --bounces B        interreflection bounces, 1..1000 (default 1)\n"
-    "  --direction-sets K independent direction sets the vertices draw from, 1..1024 (default 64):\n"
-    "                     many give independent per-vertex noise, 1 gives smooth, correlated error\n"
-    "  --albedo R,G,B     override the material colour, each in [0,1]\n"
-    "  --seed S           random seed (default 1)\n"
-    "  --threads N        worker threads, 1..1024; results do not depend on it (default: all cores)\n"
-    "  --games202-faces   read cubemaps with the course's face mapping and pow(x, 2.2) decoding,\n"
-    "                     to reproduce its published light.txt files\n"
-    "  --window W         none | hann | lanczos | auto: SH windowing against ringing (default none)\n"
-    "  --quiet            no progress, warnings or summary on stderr\n";
+std::string Number(double v) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%g", v);
+  return buffer;
+}
+
+std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
+  const std::string albedo =
+      d.albedo ? Number(d.albedo->x) + "," + Number(d.albedo->y) + "," + Number(d.albedo->z)
+               : "the materials' Kd; 0.8 grey without materials";
+  std::map<std::string, OptionSpec> s;
+  auto add = [&s](OptionSpec o) { s[o.name] = std::move(o); };
+  add({"--mesh", "PATH", "the OBJ mesh (polygons are triangulated; Kd of its .mtl is the albedo)",
+       d.mesh.empty() ? "the embedded demo scene, a torus knot on a ground plane" : d.mesh});
+  add({"--env", "ENV",
+       "the environment light: a cubemap folder (posx negx posy negy posz negz, jpg/png/hdr/exr), an "
+       "equirectangular .hdr/.exr/.png/.jpg file, or a built-in: furnace[:C] (constant radiance C, default 1) "
+       "or sky[:sun=3,elevation=40,azimuth=35,radius=2] (an HDR sky with a sun disk)",
+       d.env});
+  add({"--lmax", "L", "highest SH band, 0.." + std::to_string(kMaxLmax) +
+                          ": (L+1)^2 coefficients; `auto`: the smallest whose irradiance error is within --tolerance",
+       std::to_string(d.lmax) + ", " + std::to_string(CoeffCount(d.lmax)) + " coefficients"});
+  add({"--tolerance", "X", "relative irradiance error that --lmax auto must reach, 1e-12..1", Number(d.tolerance)});
+  add({"--transport", "MODE",
+       "unshadowed (closed form, no rays) | shadowed (visibility by ray casting) | interreflection (shadowed "
+       "plus --bounces bounces of light between surfaces)",
+       d.transport});
+  add({"--samples", "N", "ray directions per vertex, 1..16777216", std::to_string(d.samples)});
+  add({"--sampler", "NAME", "fibonacci (spherical Fibonacci) | stratified (the course's jittered grid) | uniform",
+       d.sampler});
+  add({"--bounces", "B", "interreflection bounces, 1..1000 (stops early once negligible)", std::to_string(d.bounces)});
+  add({"--direction-sets", "K",
+       "independent direction sets the vertices draw from, 1..1024: many give independent per-vertex noise, 1 "
+       "gives smooth, correlated error",
+       std::to_string(d.direction_sets)});
+  add({"--albedo", "R,G,B", "override the material colour, each channel in [0, 1]", albedo});
+  add({"--seed", "S", "random seed; the same seed gives the same bytes for any --threads", std::to_string(d.seed)});
+  add({"--threads", "N", "worker threads, 1..1024; results do not depend on it",
+       d.threads ? std::to_string(d.threads) : "all cores"});
+  add({"--games202-faces", "",
+       "read cubemaps with the course's face mapping and pow(x, 2.2) decoding, to reproduce its published "
+       "light.txt files (which have up and down swapped)",
+       ""});
+  add({"--window", "W",
+       "none | hann | lanczos | auto: SH windowing against ringing (auto: the least blurring window whose "
+       "reconstruction is non-negative)",
+       d.window});
+  add({"--max-edge", "L",
+       "split triangles until no edge is longer than L world units (`2%`: 2 % of the bounding-box diagonal), so "
+       "per-vertex transport can show shadows inside large triangles",
+       d.max_edge > 0 ? Number(d.max_edge) + (d.max_edge_relative ? "%" : "") : "none"});
+  return s;
+}
+
+/// Refuses --mesh and --env values that name nothing, before any of them is loaded.
+void CheckInputsExist(const SceneOptions& o) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!o.mesh.empty()) {
+    if (!fs::exists(o.mesh, ec)) throw Error(o.mesh + ": no such file (expected an OBJ mesh for --mesh)");
+    if (fs::is_directory(o.mesh, ec)) throw Error(o.mesh + ": is a directory (expected an OBJ file for --mesh)");
+  }
+  if (!fs::exists(o.env, ec)) {
+    const std::string name = o.env.substr(0, o.env.find(':'));
+    if (name != "furnace" && name != "sky")
+      throw Error(o.env + ": no such file, folder or built-in environment (expected a cubemap folder, an "
+                          "equirectangular .hdr/.exr/.png/.jpg file, or one of furnace, sky)");
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& AllSceneOptionNames() {
+  static const std::vector<std::string> names = {
+      "--mesh",    "--env",          "--lmax",   "--tolerance", "--transport",      "--samples",
+      "--sampler", "--bounces",      "--direction-sets",        "--albedo",         "--seed",
+      "--threads", "--games202-faces", "--window", "--max-edge"};
+  return names;
+}
+
+const std::vector<std::string>& LightOptionNames() {
+  static const std::vector<std::string> names = {"--env", "--lmax", "--tolerance", "--window",
+                                                 "--games202-faces", "--threads"};
+  return names;
+}
+
+OptionGroup SceneOptionGroup(const SceneOptions& defaults, const std::vector<std::string>& names,
+                             const std::string& title) {
+  const auto specs = SceneSpecs(defaults);
+  OptionGroup group{title, {}};
+  for (const auto& n : names) group.options.push_back(specs.at(n));
+  return group;
+}
 
 SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
   SceneOptions o = d;
-  o.mesh = args.String("--mesh", d.mesh);
-  o.env = args.String("--env", d.env);
-  const std::string lmax_text = args.String("--lmax", std::to_string(d.lmax));
-  o.tolerance = args.Double("--tolerance", d.tolerance, 1e-12, 1.0);
-  if (lmax_text == "auto") {
-    o.lmax_auto = true;
-  } else {
-    const auto v = ParseNumber(lmax_text);
-    if (!v || *v != std::floor(*v) || *v < 0 || *v > kMaxLmax)
-      throw UsageError("--lmax: '" + lmax_text + "' is out of range (expected an integer from 0 to " +
-                           std::to_string(kMaxLmax) + ") or auto",
-                       args.command());
-    o.lmax = static_cast<int>(*v);
+  const auto has = [&args](const char* name) { return args.Accepts(name); };
+  if (has("--mesh")) o.mesh = args.String("--mesh", d.mesh);
+  if (has("--env")) o.env = args.String("--env", d.env);
+  if (has("--tolerance")) o.tolerance = args.Double("--tolerance", d.tolerance, 1e-12, 1.0);
+  if (has("--lmax")) {
+    const std::string text = args.String("--lmax", std::to_string(d.lmax));
+    if (text == "auto") {
+      o.lmax_auto = true;
+    } else {
+      const auto v = ParseNumber(text);
+      if (!v || *v != std::floor(*v) || *v < 0 || *v > kMaxLmax)
+        args.Fail("--lmax: " + NumberProblem(text, true, "an integer from 0 to " + std::to_string(kMaxLmax) + ", or auto"));
+      o.lmax = static_cast<int>(*v);
+    }
   }
-  o.transport = args.Choice("--transport", d.transport, {"unshadowed", "shadowed", "interreflection"});
-  o.samples = args.Int("--samples", d.samples, 1, 1 << 24);
-  o.sampler = args.Choice("--sampler", d.sampler, {"fibonacci", "stratified", "uniform"});
-  o.bounces = args.Int("--bounces", d.bounces, 1, 1000);
-  o.direction_sets = args.Int("--direction-sets", d.direction_sets, 1, 1024);
-  if (auto albedo = args.Vec3("--albedo")) {
-    for (int c = 0; c < 3; ++c)
-      if ((*albedo)[c] < 0.0 || (*albedo)[c] > 1.0)
-        throw UsageError("--albedo: each channel must be in [0, 1]", args.command());
-    o.albedo = albedo;
+  if (has("--transport"))
+    o.transport = args.Choice("--transport", d.transport, {"unshadowed", "shadowed", "interreflection"});
+  if (has("--samples")) o.samples = args.Int("--samples", d.samples, 1, 1 << 24);
+  if (has("--sampler")) o.sampler = args.Choice("--sampler", d.sampler, {"fibonacci", "stratified", "uniform"});
+  if (has("--bounces")) o.bounces = args.Int("--bounces", d.bounces, 1, 1000);
+  if (has("--direction-sets")) o.direction_sets = args.Int("--direction-sets", d.direction_sets, 1, 1024);
+  if (has("--albedo")) {
+    if (auto albedo = args.Vec3("--albedo")) {
+      for (int c = 0; c < 3; ++c)
+        if ((*albedo)[c] < 0.0 || (*albedo)[c] > 1.0) args.Fail("--albedo: each channel must be in [0, 1]");
+      o.albedo = albedo;
+    }
   }
-  o.seed = static_cast<std::uint64_t>(args.Double("--seed", double(d.seed), 0.0, 9007199254740992.0));
-  o.threads = args.Int("--threads", d.threads, 1, 1024);
-  if (!args.Has("--threads")) o.threads = d.threads;
-  if (args.Flag("--games202-faces")) o.layout = CubeLayout::kGames202;
-  o.window = args.Choice("--window", d.window, {"none", "hann", "lanczos", "auto"});
+  if (has("--seed")) {
+    if (const auto text = args.String("--seed")) {
+      const auto v = ParseNumber(*text);
+      if (!v || *v != std::floor(*v) || *v < 0 || *v > 9007199254740992.0)
+        args.Fail("--seed: " + NumberProblem(*text, true, "an integer from 0 to 2^53"));
+      o.seed = static_cast<std::uint64_t>(*v);
+    }
+  }
+  if (has("--threads")) o.threads = args.Int("--threads", d.threads, 1, 1024);
+  if (has("--games202-faces") && args.Flag("--games202-faces")) o.layout = CubeLayout::kGames202;
+  if (has("--window")) o.window = args.Choice("--window", d.window, {"none", "hann", "lanczos", "auto"});
+  if (has("--max-edge")) {
+    if (const auto text = args.String("--max-edge")) {
+      const bool relative = text->back() == '%';
+      const std::string number = relative ? text->substr(0, text->size() - 1) : *text;
+      const auto v = ParseNumber(number);
+      if (!v || !(*v > 0.0) || (relative && *v > 100.0))
+        args.Fail("--max-edge: " + NumberProblem(*text, false, "a length > 0, or a percentage of the bounding-box "
+                                                                 "diagonal such as 2%, at most 100%"));
+      o.max_edge = relative ? *v / 100.0 : *v;
+      o.max_edge_relative = relative;
+    }
+  }
   SetQuiet(args.Flag("--quiet"));
   SetThreadCount(o.threads);
+  CheckInputsExist(o);
   if (o.lmax_auto) {
     // Measured on the environment itself (loaded here once more: the commands load it again).
     const AutoLmax choice = ChooseLmax(*LoadEnvironment(o.env, o.layout), o.tolerance, kMaxLmax);
@@ -78,9 +173,8 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
   return o;
 }
 
-std::set<std::string> SceneFlags(std::set<std::string> extra) {
-  extra.insert({"--games202-faces", "--quiet"});
-  return extra;
+double MaxEdgeLength(const SceneOptions& options, double diagonal) {
+  return options.max_edge_relative ? options.max_edge * diagonal : options.max_edge;
 }
 
 }  // namespace prt

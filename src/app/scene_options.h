@@ -1,12 +1,14 @@
 #pragma once
 /// \file
-/// The scene options shared by render, precompute, reference and report (CLI.md), read once and
-/// validated here, so every command means the same by them.
+/// The scene options shared by render, demo, precompute, reference, report and light (CLI.md):
+/// their table entries (documented with the command's own defaults) and their reader, so every
+/// command means the same by them. A command takes the subset its table lists; the reader reads
+/// exactly that subset, and checks every value before any file is loaded.
 
 #include <cstdint>
 #include <optional>
-#include <set>
 #include <string>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -31,15 +33,28 @@ struct SceneOptions {
   std::string window = "none";       ///< none | hann | lanczos | auto
   bool lmax_auto = false;            ///< --lmax auto: lmax chosen by --tolerance (report_auto_lmax.h)
   double tolerance = 0.01;           ///< --tolerance: relative irradiance error for --lmax auto
+  /// --max-edge: split triangles until no edge is longer than this (0: keep the mesh as it is);
+  /// a fraction of the bounding-box diagonal when max_edge_relative.
+  double max_edge = 0.0;
+  bool max_edge_relative = false;
 };
 
-/// The value-less flags of the scene options, plus `extra` (for the Args constructor).
-std::set<std::string> SceneFlags(std::set<std::string> extra = {});
+/// Every scene option in help order: what `render` takes.
+const std::vector<std::string>& AllSceneOptionNames();
+/// The options of the light alone (`prt light`).
+const std::vector<std::string>& LightOptionNames();
 
-/// Reads the scene options from `args`, with `defaults` for what is not given.
+/// The table entries of the scene options in `names`, documented with `defaults`' values.
+OptionGroup SceneOptionGroup(const SceneOptions& defaults, const std::vector<std::string>& names,
+                             const std::string& title = "scene options");
+
+/// Reads the scene options the command's table lists, with `defaults` for what is not given,
+/// and applies --quiet and --threads. Checks that --mesh and --env name something that exists
+/// (or a built-in environment) before anything is loaded. `--lmax auto` loads the environment
+/// here to choose lmax.
 SceneOptions ReadSceneOptions(Args& args, const SceneOptions& defaults = {});
 
-/// The help text of the scene options, with their defaults.
-extern const char* const kSceneOptionsHelp;
+/// The `--max-edge` length for a mesh whose bounding-box diagonal is `diagonal` (0: none).
+double MaxEdgeLength(const SceneOptions& options, double diagonal);
 
 }  // namespace prt

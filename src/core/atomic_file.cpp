@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include "core/error.h"
@@ -28,19 +29,44 @@ AtomicFile::~AtomicFile() {
 }
 
 void AtomicFile::Commit() {
-  if (std::rename(temp_.c_str(), path_.c_str()) != 0)
-    throw Error(path_ + ": cannot write (" + std::strerror(errno) + ")");
+  if (std::rename(temp_.c_str(), path_.c_str()) != 0) throw Error(path_ + ": cannot write (" + WriteProblem(path_, errno) + ")");
   committed_ = true;
+}
+
+std::string WriteProblem(const std::string& path, int error) {
+  std::string folder = fs::path(path).parent_path().string();
+  if (folder.empty()) folder = ".";
+  switch (error) {
+    case ENOENT:
+    case ENOTDIR: return "folder '" + folder + "' does not exist";
+    case EACCES:
+    case EPERM: return "folder '" + folder + "' is not writable: permission denied";
+    case EROFS: return "folder '" + folder + "' is on a read-only file system";
+    case ENOSPC:
+    case EDQUOT: return "disk full: no space left on the device of '" + folder + "'";
+    case EISDIR: return "is a directory (expected a file name)";
+    default: return std::strerror(error);
+  }
 }
 
 void WriteFileAtomic(const std::string& path, const std::string& bytes) {
   AtomicFile file(path);
-  {
-    std::ofstream out(file.temp_path(), std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.flush();
-    if (!out) throw Error(path + ": cannot write (disk full or folder not writable)");
+  const int fd = ::open(file.temp_path().c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw Error(path + ": cannot write (" + WriteProblem(path, errno) + ")");
+  std::size_t done = 0;
+  int error = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      error = n < 0 ? errno : EIO;
+      break;
+    }
+    done += static_cast<std::size_t>(n);
   }
+  // close() reports delayed write errors (full disks on network file systems among them).
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error != 0) throw Error(path + ": cannot write (" + WriteProblem(path, error) + ")");
   file.Commit();
 }
 

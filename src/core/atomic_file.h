@@ -27,8 +27,14 @@ class AtomicFile {
   bool committed_ = false;
 };
 
-/// Writes `bytes` to `path` through an AtomicFile. Throws Error naming `path` on failure.
+/// Writes `bytes` to `path` through an AtomicFile. Throws Error naming `path` and the cause
+/// (WriteProblem) on failure; the previous file at `path`, if any, is then left as it was.
 void WriteFileAtomic(const std::string& path, const std::string& bytes);
+
+/// Why writing into `path` failed with `error` (an errno value), in the user's terms: the
+/// folder does not exist, is not writable (permission denied, read-only file system), the disk
+/// is full, or the system's own words for anything else.
+std::string WriteProblem(const std::string& path, int error);
 
 /// Reads a whole file. Throws Error naming `path` if it is missing, a directory or unreadable.
 std::string ReadFile(const std::string& path);

@@ -1,5 +1,6 @@
 #include "core/progress.h"
 
+#include <cmath>
 #include <cstdio>
 
 #include <unistd.h>
@@ -7,6 +8,17 @@
 #include "core/log.h"
 
 namespace prt {
+
+std::string TimeLeft(double fraction, double elapsed_s) {
+  if (!(fraction >= kTimeLeftFraction) || fraction >= 1.0 || !(elapsed_s >= 0.0)) return {};
+  const double left = elapsed_s * (1.0 - fraction) / fraction;
+  const long s = static_cast<long>(std::ceil(left));  // "1 s left" until the end, never "0 s"
+  char text[64];
+  if (s < 60) std::snprintf(text, sizeof text, "%ld s left", s);
+  else if (s < 3600) std::snprintf(text, sizeof text, "%ld min %ld s left", s / 60, s % 60);
+  else std::snprintf(text, sizeof text, "%ld h %ld min left", s / 3600, s / 60 % 60);
+  return text;
+}
 
 Progress::Progress(std::string label, std::size_t total)
     : label_(std::move(label)), total_(total), enabled_(!IsQuiet() && ::isatty(2) && total > 0),
@@ -32,7 +44,10 @@ void Progress::Draw(std::size_t done) {
   const int width = 30, filled = static_cast<int>(f * width);
   std::string bar(filled, '#');
   bar.resize(width, '.');
-  std::fprintf(stderr, "\r%s [%s] %3.0f%%", label_.c_str(), bar.c_str(), 100.0 * f);
+  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const std::string left = TimeLeft(f, elapsed);
+  std::fprintf(stderr, "\r%s [%s] %3.0f%%%s%s\033[K", label_.c_str(), bar.c_str(), 100.0 * f, left.empty() ? "" : "  ",
+               left.c_str());
   std::fflush(stderr);
 }
 

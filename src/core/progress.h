@@ -2,6 +2,12 @@
 /// \file
 /// A progress bar on stderr for long work: shown only when stderr is a terminal and the run is
 /// not quiet, updated at most ten times a second, safe to advance from any thread.
+///
+///     rendering [#############.................]  45%  12 s left
+///
+/// The time left assumes the rest goes at the average rate so far: elapsed * (1 - f) / f for a
+/// fraction f done. It is shown once kTimeLeftFraction of the work is done, when the rate has
+/// settled enough to mean something.
 
 #include <atomic>
 #include <chrono>
@@ -11,11 +17,20 @@
 
 namespace prt {
 
+/// Fraction of the work done before the time left is shown.
+inline constexpr double kTimeLeftFraction = 0.03;
+
+/// "12 s left", "3 min 20 s left", "2 h 5 min left" for `fraction` of the work done in
+/// `elapsed_s` seconds; empty before kTimeLeftFraction or when done.
+std::string TimeLeft(double fraction, double elapsed_s);
+
+/// A progress bar over `total` items (see the file comment).
 class Progress {
  public:
+  /// A bar labelled `label` for `total` items; nothing is shown for the first second.
   Progress(std::string label, std::size_t total);
   ~Progress();  ///< clears the bar
-  Progress(const Progress&) = delete;
+  Progress(const Progress&) = delete;  ///< one bar, one owner
   Progress& operator=(const Progress&) = delete;
 
   /// Adds `n` finished items.

@@ -33,7 +33,12 @@ struct MeshReport {
   std::size_t dropped_degenerate = 0;   ///< zero-area triangles removed
   std::size_t recomputed_normals = 0;   ///< vertices whose normal was missing or zero-length
   std::size_t welded_away = 0;          ///< corners merged into an existing vertex
-  std::vector<std::string> warnings;    ///< e.g. a missing .mtl
+  /// Lines of the source file that were not understood: not a statement of the format, or (OBJ)
+  /// a `v`/`vn` line whose numbers do not all parse. 0 for meshes not read from a file.
+  std::size_t skipped_lines = 0;
+  std::size_t first_skipped_line = 0;   ///< 1-based line number of the first of them; 0 if none
+  std::string first_skipped_text;       ///< its text, cut to about 40 characters, printable
+  std::vector<std::string> warnings;    ///< e.g. a material the .mtl does not define
 };
 
 }  // namespace prt

@@ -24,7 +24,7 @@ bool HasNormal(const glm::vec3& n) { return n.x != 0.0f || n.y != 0.0f || n.z !=
 
 }  // namespace
 
-Mesh WeldCorners(const CornerSoup& soup, float position_tolerance, MeshReport& report) {
+WeldedMesh WeldCorners(const CornerSoup& soup, float position_tolerance, MeshReport& report) {
   const std::size_t n = soup.positions.size();
   constexpr std::uint32_t kNone = ~0u;
 
@@ -36,7 +36,8 @@ Mesh WeldCorners(const CornerSoup& soup, float position_tolerance, MeshReport& r
   KdTree tree(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   if (!bare.empty()) tree.buildIndex();
 
-  Mesh mesh;
+  WeldedMesh out;
+  Mesh& mesh = out.mesh;
   std::vector<glm::vec3> normal_sum, albedo_sum;
   std::vector<int> corner_count;
   std::vector<std::uint32_t> vertex_of(n, kNone);
@@ -95,6 +96,7 @@ Mesh WeldCorners(const CornerSoup& soup, float position_tolerance, MeshReport& r
   const std::size_t nv = mesh.positions.size();
   mesh.normals.resize(nv);
   mesh.albedo.resize(nv);
+  out.normal_from_file.assign(nv, 1);
   std::vector<glm::vec3> smooth;
   for (std::size_t v = 0; v < nv; ++v) {
     mesh.albedo[v] = albedo_sum[v] / static_cast<float>(corner_count[v]);
@@ -105,9 +107,10 @@ Mesh WeldCorners(const CornerSoup& soup, float position_tolerance, MeshReport& r
     }
     if (smooth.empty()) smooth = SmoothNormals(mesh);
     mesh.normals[v] = smooth[v];
+    out.normal_from_file[v] = 0;
     ++report.recomputed_normals;
   }
-  return mesh;
+  return out;
 }
 
 }  // namespace prt

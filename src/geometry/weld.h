@@ -19,6 +19,7 @@
 ///  [1] J. L. Blanco, P. K. Rai, "nanoflann: a C++ header-only fork of FLANN", 2014,
 ///      https://github.com/jlblancoc/nanoflann
 
+#include <cstdint>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -37,12 +38,21 @@ struct CornerSoup {
   std::vector<glm::vec3> albedo;   ///< linear RGB of the corner's material
 };
 
+/// A welded mesh and, per vertex, where its normal came from.
+struct WeldedMesh {
+  Mesh mesh;  ///< welded vertices, triangles and file_triangles
+  /// One per vertex: 1 when the normal is the (normalised sum of) the file's normals of its
+  /// corners, 0 when it was computed because its corners had none (or zero-length ones, which
+  /// the caller passes as none). Mesh repairs that may flip normals need to know which they are.
+  std::vector<std::uint8_t> normal_from_file;
+};
+
 /// Welds `soup` into a mesh. A vertex takes the position of its first corner, the normalised sum
 /// of its corners' normals, and the mean albedo of its corners (so albedo is averaged where
 /// materials meet). Vertices whose corners have no normal get area-and-angle-weighted smooth
-/// normals (counted in report.recomputed_normals). Triangles that collapse because two of their
-/// corners weld together are dropped (report.dropped_degenerate). report.welded_away counts
-/// corners that joined an existing vertex.
-Mesh WeldCorners(const CornerSoup& soup, float position_tolerance, MeshReport& report);
+/// normals (counted in report.recomputed_normals, flagged 0 in normal_from_file). Triangles that
+/// collapse because two of their corners weld together are dropped (report.dropped_degenerate).
+/// report.welded_away counts corners that joined an existing vertex.
+WeldedMesh WeldCorners(const CornerSoup& soup, float position_tolerance, MeshReport& report);
 
 }  // namespace prt

@@ -3,7 +3,14 @@
 /// Wavefront OBJ meshes through tinyobjloader [1]: polygons triangulated, corners welded into
 /// vertices (geometry/weld.h), normals from the file or smooth ones, albedo from the materials'
 /// Kd, and every input problem either repaired and counted or reported as
-/// `<path>: <problem> (<expected>)`.
+/// `<path>: <problem> (<expected>)`, in prt's words rather than the parser's.
+///
+/// Stages. The file is read into memory once. One pass over the text (obj_scan.h) refuses
+/// non-finite coordinates, malformed or missing indices (quoting the index as written, with its
+/// line) and faces of fewer than three corners, counts lines that are not OBJ, and counts the
+/// faces of each material. tinyobjloader then parses the same text from memory, reading the
+/// material libraries through obj_materials.h; its corners are welded. For a large file a
+/// progress bar (core/progress.h) covers reading, scanning, parsing and welding.
 ///
 /// Materials. A `usemtl NAME` used several times in the .mtl resolves to the LAST definition
 /// of NAME, as later definitions override earlier ones in MTL readers such as three.js's
@@ -12,10 +19,17 @@
 /// (material `MC003_Kozakura_Mari`, absent from the .mtl, hence the default 0.8 grey) and its
 /// blue part (`材质`) get their two colours.
 ///
+/// Messages. Errors: `<path>: line 12: face uses vertex -7, out of bounds: only 4 vertices
+/// precede it (indices 1..9 or -1..-4)`. Warnings: one per missing material, e.g.
+/// `<path>: material 'MC003_Kozakura_Mari' is not defined in mary.mtl; its 9904 faces use the
+/// default albedo 0.8`. Lines not understood are counted in the report, not warned one by one.
+///
 /// References
 ///  [1] S. Fujita, "tinyobjloader", https://github.com/tinyobjloader/tinyobjloader (2.0.0rc10).
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "geometry/mesh.h"
 
@@ -23,8 +37,11 @@ namespace prt {
 
 /// A loaded mesh and what loading had to repair.
 struct LoadedMesh {
-  Mesh mesh;
-  MeshReport report;
+  Mesh mesh;          ///< welded, in the file's face order
+  MeshReport report;  ///< repairs, lines not understood and warnings, for the run summary
+  /// One per vertex of `mesh`: 1 when its normal came from the file, 0 when it was computed
+  /// because its corners had no normal or a zero-length one.
+  std::vector<std::uint8_t> normal_from_file;
 };
 
 /// Corners without a file normal closer than this fraction of the bounding-box diagonal are one
@@ -32,11 +49,16 @@ struct LoadedMesh {
 /// rounding (6e-8 relative) of one coordinate written twice.
 inline constexpr float kWeldRelativeTolerance = 1e-6f;
 
-/// Loads `path`. Throws prt::Error for a missing file, a directory, a parse error, indices out
-/// of range, non-finite coordinates, a file without faces, or only zero-area faces.
-/// Zero-area triangles are dropped and zero-length or missing normals recomputed (counted in
-/// the report); a missing or unreadable .mtl, or an unknown material, is a warning and leaves
-/// the default albedo 0.8.
+/// Loads `path`. Throws prt::Error for a missing file, a directory, indices that do not exist,
+/// malformed face corners, faces of fewer than three vertices, non-finite coordinates, a file
+/// without faces, or only zero-area faces. Zero-area triangles are dropped, zero-length or
+/// missing normals recomputed and lines that are not OBJ skipped (counted in the report); a
+/// material no library defines (the library missing, unreadable or silent about it) is one
+/// warning per name and leaves its faces at the default albedo 0.8.
 LoadedMesh LoadObj(const std::string& path);
+
+/// The run summary's words for report.skipped_lines, e.g. `3 lines not understood, skipped
+/// (first: line 12: 'hello world')`; empty when there were none.
+std::string DescribeSkippedLines(const MeshReport& report);
 
 }  // namespace prt

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <vector>
 
+#include <glm/common.hpp>
+
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wconversion"
 #pragma GCC diagnostic ignored "-Wsign-conversion"
@@ -25,6 +27,35 @@ void FillRect(Image8& image, int x0, int y0, int x1, int y1, glm::vec3 color) {
             static_cast<std::uint8_t>(std::lround(std::clamp(color[c], 0.0f, 1.0f) * 255.0f));
 }
 
+// The legend panel takes at most this fraction of the image width while the text can shrink.
+constexpr double kMaxLegendWidth = 0.5;
+
+// The ink rectangles of `text` at `scale`, relative to its top-left corner (stb_easy_font's
+// quads have whole-pixel corners).
+std::vector<PixelRect> Glyphs(const std::string& text, int scale) {
+  std::vector<char> buffer(text.begin(), text.end());
+  buffer.push_back('\0');
+  std::vector<unsigned char> quads(text.size() * 270 + 256);  // stb: about 270 bytes a character
+  unsigned char rgba[4] = {255, 255, 255, 255};
+  const int n = stb_easy_font_print(0, 0, buffer.data(), rgba, quads.data(), static_cast<int>(quads.size()));
+  std::vector<PixelRect> rects;
+  rects.reserve(static_cast<std::size_t>(std::max(n, 0)));
+  const float f = static_cast<float>(scale);
+  for (int q = 0; q < n; ++q) {
+    const float* v = reinterpret_cast<const float*>(quads.data() + q * 64);  // 4 vertices of 16 bytes
+    rects.push_back({static_cast<int>(v[0] * f), static_cast<int>(v[1] * f), static_cast<int>(v[8] * f),
+                     static_cast<int>(v[9] * f)});
+  }
+  return rects;
+}
+
+// An end label of the legend.
+std::string Label(double value) {
+  char label[32];
+  std::snprintf(label, sizeof label, "%+.3g", value);
+  return label;
+}
+
 }  // namespace
 
 glm::vec3 DivergingColor(double t) {
@@ -35,37 +66,72 @@ glm::vec3 DivergingColor(double t) {
 }
 
 void DrawText(Image8& image, int x, int y, const std::string& text, glm::vec3 color, int scale) {
-  std::vector<char> buffer(text.begin(), text.end());
-  buffer.push_back('\0');
-  std::vector<unsigned char> quads(text.size() * 270 + 256);  // stb: about 270 bytes a character
-  unsigned char rgba[4] = {255, 255, 255, 255};
-  const int n = stb_easy_font_print(0, 0, buffer.data(), rgba, quads.data(), static_cast<int>(quads.size()));
-  for (int q = 0; q < n; ++q) {
-    const float* v = reinterpret_cast<const float*>(quads.data() + q * 64);  // 4 vertices of 16 bytes
-    const float qx0 = v[0], qy0 = v[1], qx1 = v[8], qy1 = v[9];
-    const float f = static_cast<float>(scale);
-    FillRect(image, x + static_cast<int>(qx0 * f), y + static_cast<int>(qy0 * f), x + static_cast<int>(qx1 * f),
-             y + static_cast<int>(qy1 * f), color);
+  for (const PixelRect& q : Glyphs(text, scale))
+    FillRect(image, x + q.x0, y + q.y0, x + q.x1, y + q.y1, color);
+}
+
+glm::ivec2 TextSize(const std::string& text, int scale) {
+  glm::ivec2 size(0);
+  for (const PixelRect& q : Glyphs(text, scale)) size = glm::max(size, glm::ivec2(q.x1, q.y1));
+  return size;
+}
+
+std::optional<LegendLayout> LayoutDivergingLegend(int width, int height, double max_abs,
+                                                  const std::string& title) {
+  const std::string texts[3] = {Label(max_abs), "0", Label(-max_abs)};
+  // Text scale from the height: 1 at 480, 2 at 1080 (height / 540, rounded).
+  for (int s = std::max(1, (height + 270) / 540); s >= 1; --s) {
+    LegendLayout l;
+    l.text_scale = s;
+    // Margin to the image edges, padding of the panel, gap between bar and labels.
+    const int margin = 6 * s, pad = 2 * s, gap = 3 * s;
+    glm::ivec2 label[3];
+    int column = 0, label_h = 0;
+    for (int i = 0; i < 3; ++i) {
+      label[i] = TextSize(texts[i], s);
+      column = std::max(column, label[i].x), label_h = std::max(label_h, label[i].y);
+    }
+    const glm::ivec2 title_size = TextSize(title, s);
+    const int bar_w = std::max(6 * s, width / 40);
+    // Right to left: labels against the right margin, the bar, the title above both.
+    const int right = width - margin;
+    l.bar.x1 = right - column - gap, l.bar.x0 = l.bar.x1 - bar_w;
+    const int title_x = std::min(l.bar.x0, right - title_size.x);
+    l.title = {title_x, margin, title_x + title_size.x, margin + title_size.y};
+    // Top to bottom: the title, then the bar, whose end rows carry the centres of the end labels.
+    l.bar.y0 = l.title.y1 + gap + (label_h + 1) / 2;
+    l.bar.y1 = height - margin - (label_h + 1) / 2;
+    const int rows[3] = {l.bar.y0, (l.bar.y0 + l.bar.y1 - 1) / 2, l.bar.y1 - 1};
+    for (int i = 0; i < 3; ++i) {
+      const int y = rows[i] - label[i].y / 2;
+      l.labels[i] = {l.bar.x1 + gap, y, l.bar.x1 + gap + label[i].x, y + label[i].y};
+    }
+    l.panel = {std::min(l.bar.x0, title_x) - pad, margin - pad, width, height - margin + pad};
+    // Fits: inside the image, a bar tall enough to keep the labels apart, and at most
+    // kMaxLegendWidth of the width unless the text is already at its smallest.
+    const bool inside = l.panel.x0 >= 0 && l.panel.y0 >= 0 && l.panel.y1 <= height;
+    const bool tall = l.bar.y1 - l.bar.y0 >= std::max(20, 2 * (label_h + s));
+    const bool narrow = width - l.panel.x0 <= kMaxLegendWidth * width || s == 1;
+    if (inside && tall && narrow) return l;
   }
+  return std::nullopt;
 }
 
 void DrawDivergingLegend(Image8& image, double max_abs, const std::string& title) {
-  const int bar_w = std::max(6, image.width / 40), margin = 6;
-  const int top = margin + 14, bottom = image.height - margin - 14;
-  const int x0 = image.width - margin - bar_w - 44;
-  if (bottom - top < 20 || x0 < 0) return;
-  FillRect(image, x0 - 2, top - 16, image.width, bottom + 14, glm::vec3(0.1f));
-  for (int y = top; y < bottom; ++y) {
-    const double t = 1.0 - 2.0 * (y - top) / double(bottom - top - 1);
-    FillRect(image, x0, y, x0 + bar_w, y + 1, DivergingColor(t));
+  const std::optional<LegendLayout> l = LayoutDivergingLegend(image.width, image.height, max_abs, title);
+  if (!l) return;
+  const PixelRect& p = l->panel;
+  FillRect(image, p.x0, p.y0, p.x1, p.y1, glm::vec3(0.1f));
+  // The bar: +1 at its top row, -1 at its bottom row.
+  const int rows = l->bar.y1 - l->bar.y0;
+  for (int y = l->bar.y0; y < l->bar.y1; ++y) {
+    const double t = 1.0 - 2.0 * (y - l->bar.y0) / double(std::max(rows - 1, 1));
+    FillRect(image, l->bar.x0, y, l->bar.x1, y + 1, DivergingColor(t));
   }
-  char label[32];
-  std::snprintf(label, sizeof label, "%+.3g", max_abs);
-  DrawText(image, x0 + bar_w + 3, top - 3, label, glm::vec3(1.0f));
-  DrawText(image, x0 + bar_w + 3, (top + bottom) / 2 - 3, "0", glm::vec3(1.0f));
-  std::snprintf(label, sizeof label, "%+.3g", -max_abs);
-  DrawText(image, x0 + bar_w + 3, bottom - 6, label, glm::vec3(1.0f));
-  DrawText(image, x0, top - 13, title, glm::vec3(1.0f));
+  const std::string texts[3] = {Label(max_abs), "0", Label(-max_abs)};
+  for (int i = 0; i < 3; ++i)
+    DrawText(image, l->labels[i].x0, l->labels[i].y0, texts[i], glm::vec3(1.0f), l->text_scale);
+  DrawText(image, l->title.x0, l->title.y0, title, glm::vec3(1.0f), l->text_scale);
 }
 
 }  // namespace prt

@@ -12,9 +12,17 @@
 
 namespace prt {
 
+const char* const kBasisPoleCaption = "pole (m = 0 axis): world +Z; scenes are Y-up";
+
+namespace {
+const char* const kTitle = "real SH basis: red > 0, blue < 0, +Z up";
+}  // namespace
+
 Image8 DrawBasisChart(int lmax, int cell) {
-  const int columns = 2 * lmax + 1, label_w = 40, label_h = 16;
-  Image8 image(label_w + columns * cell, label_h + (lmax + 1) * cell);
+  // Two caption lines of 12 font pixels above the grid.
+  const int columns = 2 * lmax + 1, label_w = 40, label_h = 30;
+  const int caption_w = 8 + std::max(TextSize(kTitle).x, TextSize(kBasisPoleCaption).x);
+  Image8 image(std::max(label_w + columns * cell, caption_w), label_h + (lmax + 1) * cell);
   std::fill(image.rgb.begin(), image.rgb.end(), std::uint8_t(24));
   // View frame: looking at the sphere from direction `eye` (unit), +Z up on screen.
   const glm::dvec3 eye = glm::normalize(glm::dvec3(0.8, -1.0, 0.45));
@@ -47,7 +55,8 @@ Image8 DrawBasisChart(int lmax, int cell) {
     }
     DrawText(image, 4, label_h + l * cell + cell / 2 - 4, "l=" + std::to_string(l), glm::vec3(0.9f));
   }
-  DrawText(image, 4, 4, "real SH basis: red > 0, blue < 0, +Z up", glm::vec3(0.9f));
+  DrawText(image, 4, 4, kTitle, glm::vec3(0.9f));
+  DrawText(image, 4, 16, kBasisPoleCaption, glm::vec3(0.9f));
   return image;
 }
 

@@ -180,7 +180,7 @@ TEST_SUITE("app") {
       const char* part;
     };
     for (const Case& c : {
-             Case{"--lmax -1", "--lmax: '-1' is out of range (expected an integer from 0 to 64)"},
+             Case{"--lmax -1", "--lmax: '-1' is out of range (expected an integer from 0 to 64, or auto)"},
              Case{"--lmax 65", "--lmax: '65' is out of range"},
              Case{"--lmax 2.5", "--lmax: '2.5'"},
              Case{"--samples 0", "--samples: '0' is out of range"},
@@ -288,10 +288,16 @@ TEST_SUITE("app") {
     REQUIRE(other);
     CHECK(other->exit_code == 0);
     CHECK(other->err.find("made from other inputs") != std::string::npos);
-    // A cache path that is a folder cannot be written: an error naming it, exit 1.
+    // A cache path that is a folder cannot be used: the cache is an optimisation, so a warning
+    // naming it, and the frames are still written.
     fs::remove(cache);
     fs::create_directories(cache);
-    ExpectFailure(run, 1, {cache});
+    const auto folder = test::RunPrt(run);
+    REQUIRE(folder);
+    CHECK(folder->exit_code == 0);
+    CHECK(folder->err.find("prt: warning: cache: " + cache + ": is a folder (expected a file name); going on without "
+                           "the cache") != std::string::npos);
+    CHECK(fs::exists(out + "/frame_0000.png"));
   }
 }
 

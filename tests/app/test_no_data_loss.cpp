@@ -4,8 +4,9 @@
 //
 // What SIGKILL can leave: the one temporary file being written at the kill (named
 // `.frame_NNNN.png.tmp<pid>_<n>`: a dot file, ignored by every reader, never counted as a
-// frame). A later run does not remove it: temporary names carry the writer's pid, and each run
-// cleans only its own (its AtomicFile destructors), so two runs never delete each other's work.
+// frame), and the folder's lock file, which is held by no process once the run is dead. A later
+// successful run into the folder removes the temporary file (its writer's pid, in its name, is
+// gone) and reuses the lock (core/output_folder.h).
 #include <doctest/doctest.h>
 
 #include <csignal>
@@ -68,7 +69,8 @@ TEST_SUITE("app") {
     constexpr int kMarkers = 400;
     const auto old = FillWithMarkers(dir, kMarkers);
 
-    // Many small frames: the run would take minutes; it is killed once 20 frames are new.
+    // Many small frames (four-digit names, like the markers): the run would take a while; it is
+    // killed once 20 frames are new.
     const std::string out = dir;
     const std::string mesh = test::Fixture("obj/tetra_no_normals.obj");
     const pid_t pid = ::fork();
@@ -78,7 +80,7 @@ TEST_SUITE("app") {
       const int null = ::open("/dev/null", O_WRONLY);
       if (null >= 0) ::dup2(null, 2);
       ::execl(binary, binary, "render", "--mesh", mesh.c_str(), "--env", "furnace", "--transport", "unshadowed",
-              "--frames", "100000", "--size", "48x32", "--threads", "1", "--out", out.c_str(), "--quiet",
+              "--frames", "9999", "--size", "48x32", "--threads", "1", "--out", out.c_str(), "--quiet",
               static_cast<char*>(nullptr));
       ::_exit(127);
     }
@@ -106,7 +108,7 @@ TEST_SUITE("app") {
         CHECK(name.find(".tmp" + std::to_string(pid) + "_") != std::string::npos);
         continue;
       }
-      if (name == "transport.cache") continue;
+      if (name == "transport.cache" || name.rfind(".prt-", 0) == 0) continue;  // the cache, the folder's lock
       CAPTURE(name);
       const std::string bytes = Slurp(entry.path().string());
       Image8 image;
@@ -123,9 +125,16 @@ TEST_SUITE("app") {
     CHECK(fresh >= 21);
     CHECK(fresh + kept >= kMarkers);  // every earlier frame is there, replaced or intact
     CHECK(temps <= 1);                // at most the frame being written at the kill
+
+    // The killed run's lock blocks nothing, and the next successful run removes its temporary file.
+    const auto later = test::RunPrt("render --mesh '" + mesh + "' --env furnace --transport unshadowed --frames 1 "
+                                    "--size 8x8 --quiet --out '" + dir + "'");
+    REQUIRE(later);
+    CHECK(later->exit_code == 0);
+    for (const auto& entry : fs::directory_iterator(dir)) CHECK_FALSE(IsTemp(entry.path().filename().string()));
   }
 
-  TEST_CASE("no data lost: fewer frames than the folder has remove nothing; failed runs keep old outputs") {
+  TEST_CASE("no data lost: frames prt did not write are never removed; failed runs keep old outputs") {
     const auto r0 = test::RunPrt("--version");
     if (!r0) return;
     const std::string dir = test::ScratchDir("no_data_loss_fewer");
@@ -136,7 +145,9 @@ TEST_SUITE("app") {
     REQUIRE(r);
     CAPTURE(r->err);
     CHECK(r->exit_code == 0);
-    CHECK(r->err.find("note: 7 older frame files") != std::string::npos);
+    // The markers were not written by prt: frames 3..9 are left, and the run says so.
+    CHECK(r->err.find("note: 7 frame files in " + dir + " not written by this run were left untouched") !=
+          std::string::npos);
     for (const auto& [name, bytes] : old) {
       CAPTURE(name);
       REQUIRE(fs::exists(dir + "/" + name));

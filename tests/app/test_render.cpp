@@ -32,8 +32,14 @@ Mesh SphereOnPlane() {
   return m;
 }
 
+/// The goldens are drawn with the plain sRGB curve at exposure 0 without supersampling, so a
+/// change of render's defaults (tone curve, automatic exposure, supersampling) does not move
+/// them: they test shading and rasterizing.
 RenderOptions SmallFrame() {
   RenderOptions o;
+  o.tonemap = ToneCurve::kSrgb;
+  o.exposure = 0.0;
+  o.ssaa = 1;
   o.width = o.height = 96;
   o.eye = glm::dvec3(0.0, 3.0, 7.0);
   o.target = glm::dvec3(0.0, 0.8, 0.0);
@@ -66,7 +72,7 @@ Scene MakeScene(TransportMode mode, int lmax) {
 Image8 Draw(const Scene& s, const RenderOptions& o, double angle) {
   Rasterizer r;
   return DrawFrame(r, s.mesh, s.transport, s.light, AxisRotation(o.axis, s.transport.lmax), *s.env,
-                   ChooseCamera(s.mesh, o), o, angle)
+                   ChooseCamera(s.mesh, o), o, angle, *o.exposure)
       .image;
 }
 

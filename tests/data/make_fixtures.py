@@ -179,6 +179,8 @@ def main():
         "v -1e7 -1e7 0\nv 1e7 -1e7 0\nv 0 1e7 0\nv 0 0 1e7\nf 1 2 3\nf 1 2 4\nf 2 3 4\nf 3 1 4\n")
     out("obj/garbage_mtl.obj", "mtllib garbage_mtl.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n")
     out("obj/garbage_mtl.mtl", full_png)
+    # Windows line ends: line numbers and quoted text as with \n (the \r is no part of the line).
+    out("obj/crlf_garbage.obj", "v 0 0 0\r\nv 1 0 0\r\nnot obj\r\nv 0 1 0\r\nf 1 2 3\r\n")
 
     # Cache.
     out("cache/text.cache", "not a prt transport cache\n")

@@ -1,7 +1,8 @@
-// OBJ loading: one fixture per failure mode in tests/data/obj, welding rules, materials, and the
-// course's mary and bunny when ../shared/data is present.
+// OBJ loading: one fixture per failure mode in tests/data/obj, welding rules, materials, the
+// messages in prt's words, and the course's mary and bunny when ../shared/data is present.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -10,6 +11,7 @@
 #include "core/error.h"
 #include "geometry/mesh_ops.h"
 #include "io/obj_loader.h"
+#include "io/obj_scan.h"
 #include "tests/test_support.h"
 
 namespace prt {
@@ -24,7 +26,7 @@ bool Near(const glm::vec3& a, const glm::vec3& b, float tol = kColourTolerance) 
 }
 
 // The error message of loading `fixture`, which must start with its path and contain `part`.
-void ExpectError(const std::string& fixture, const std::string& part) {
+std::string ExpectError(const std::string& fixture, const std::string& part) {
   const std::string path = test::Fixture("obj/" + fixture);
   std::string message;
   try {
@@ -36,7 +38,26 @@ void ExpectError(const std::string& fixture, const std::string& part) {
   CAPTURE(message);
   CHECK(message.rfind(path + ": ", 0) == 0);
   CHECK(message.find(part) != std::string::npos);
-  CHECK(message.back() == ')');  // `<path>: <problem> (<expected>)`
+  CHECK((!message.empty() && message.back() == ')'));  // `<path>: <problem> (<expected>)`
+  return message;
+}
+
+// The vertex at position `p` (the fixtures' coordinates are exact).
+std::size_t VertexAt(const Mesh& mesh, const glm::vec3& p) {
+  const auto it = std::find(mesh.positions.begin(), mesh.positions.end(), p);
+  REQUIRE(it != mesh.positions.end());
+  return static_cast<std::size_t>(it - mesh.positions.begin());
+}
+
+bool Contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+// tinyobjloader's own words, which the loader translates rather than passes on.
+bool HasRawTinyobjText(const std::vector<std::string>& warnings) {
+  for (const std::string& w : warnings)
+    if (Contains(w, "not found in .mtl") || Contains(w, "[ '") || Contains(w, "Material file") ||
+        Contains(w, "Failed to load"))
+      return true;
+  return false;
 }
 
 }  // namespace
@@ -80,11 +101,101 @@ TEST_SUITE("io") {
     ExpectError("does_not_exist.obj", "no such file");
     ExpectError("", "is a directory");
     ExpectError("no_faces.obj", "no faces");
-    ExpectError("index_out_of_range.obj", "out of bounds");
-    ExpectError("index_zero.obj", "zero value for face index");
+    ExpectError("binary.obj", "no faces; ");  // then how many lines were not understood
+    ExpectError("index_out_of_range.obj", "line 6: face uses vertex 7, out of bounds: the file has 3 vertices");
+    ExpectError("index_zero.obj", "line 5: face uses vertex 0, a zero value");
+    ExpectError("negative_out_of_range.obj",
+                "line 4: face uses vertex -5, out of bounds: only 3 vertices precede it (indices 1..3 or -1..-3)");
+    ExpectError("normal_out_of_range.obj", "line 6: face uses normal 2, out of bounds: the file has 1 normal");
+    ExpectError("bad_corner.obj", "line 5: face corner 'x' is not an index");
+    ExpectError("truncated.obj", "line 6: face 'f 2 4' has fewer than 3 vertices");
+    ExpectError("polygon_forward_reference.obj", "line 6: polygon uses vertex 4, which is defined only after it");
     ExpectError("nan_coordinate.obj", "line 3: coordinate 'nan' is not finite");
     ExpectError("inf_coordinate.obj", "line 4: coordinate 'inf' is not finite");
+    ExpectError("float_overflow.obj", "line 3: coordinate '1e39' is not finite");  // finite as a double
     ExpectError("all_degenerate.obj", "zero area");
+  }
+
+  TEST_CASE("obj: an index error quotes the index as written, with the ranges valid on its line") {
+    // `f 1 2 -7` on line 9 after 4 vertices, 7 in the file. Resolving first would quote -3 or
+    // 4 - 7; checking a negative index against the whole file would accept it.
+    const std::string m = ExpectError("index_written.obj", "line 9: face uses vertex -7, out of bounds");
+    CHECK(Contains(m, "only 4 vertices precede it (indices 1..7 or -1..-4)"));
+  }
+
+  TEST_CASE("obj: a face may use a vertex defined after it") {
+    // Positive indices count the whole file, not the lines before the face.
+    const LoadedMesh m = LoadObj(test::Fixture("obj/forward_reference.obj"));
+    CHECK(m.mesh.triangle_count() == 1);
+  }
+
+  TEST_CASE("obj: lines that are not OBJ are counted, the first quoted with its line number") {
+    const LoadedMesh m = LoadObj(test::Fixture("obj/garbage_lines.obj"));
+    // Comments, blank lines and g, s, cstype are OBJ; `hello world`, `bogus ...` and the `v` line
+    // with a word for a number are not.
+    CHECK(m.report.skipped_lines == 3);
+    CHECK(m.report.first_skipped_line == 5);
+    CHECK(m.report.first_skipped_text == "hello world");
+    CHECK(DescribeSkippedLines(m.report) == "3 lines not understood, skipped (first: line 5: 'hello world')");
+    // The unreadable `v` line still is vertex 4 (the second face uses it): numbering unchanged.
+    CHECK(m.mesh.triangle_count() == 2);
+    CHECK(m.report.warnings.empty());  // counted for the run summary, not warned line by line
+    // Windows line ends: same line numbers, and the \r is no part of the quoted text.
+    const LoadedMesh crlf = LoadObj(test::Fixture("obj/crlf_garbage.obj"));
+    CHECK(crlf.report.skipped_lines == 1);
+    CHECK(crlf.report.first_skipped_line == 3);
+    CHECK(crlf.report.first_skipped_text == "not obj");
+    // A clean file has none.
+    const LoadedMesh quad = LoadObj(test::Fixture("obj/quad.obj"));
+    CHECK(quad.report.skipped_lines == 0);
+    CHECK(DescribeSkippedLines(quad.report).empty());
+  }
+
+  TEST_CASE("obj: quoted lines are cut at a character boundary and show control bytes as '?'") {
+    CHECK(QuoteLine("hello world") == "hello world");
+    CHECK(QuoteLine(std::string(50, 'x')) == std::string(kQuotedLineLength, 'x') + "...");
+    CHECK(QuoteLine("a\x01" "b\x7f") == "a?b?");
+    CHECK(QuoteLine("\xff\xfe") == "??");  // not UTF-8
+    std::string chinese;  // 材质 is two 3-byte characters; 20 of them are 60 bytes
+    for (int i = 0; i < 10; ++i) chinese += "\u6750\u8d28";
+    const std::string cut = QuoteLine(chinese);
+    CHECK(cut == chinese.substr(0, 39) + "...");  // 13 whole characters, none split
+  }
+
+  TEST_CASE("obj: a missing material is one warning in prt's words, with its library and face count") {
+    // `ghost` is used by two usemtl lines, three faces (one a quad: four triangles).
+    const std::string path = test::Fixture("obj/missing_material.obj");
+    const LoadedMesh m = LoadObj(path);
+    REQUIRE(m.report.warnings.size() == 1);
+    CHECK(m.report.warnings[0] == path + ": material 'ghost' is not defined in missing_material.mtl; "
+                                         "its 3 faces use the default albedo 0.8");
+    CHECK(!HasRawTinyobjText(m.report.warnings));
+    // The defined material still applies: (0, 1, 0) is in two `ghost` faces and the `red` one.
+    const float g = kDefaultAlbedo;
+    CHECK(Near(m.mesh.albedo[VertexAt(m.mesh, {0, 1, 0})], glm::vec3(2 * g + 1, 2 * g, 2 * g) / 3.0f));
+    CHECK(Near(m.mesh.albedo[VertexAt(m.mesh, {2, 0, 0})], glm::vec3(g)));  // only in the quad
+    // The library itself missing: said within the material's warning.
+    const std::string missing = test::Fixture("obj/missing_mtl.obj");
+    const LoadedMesh lib = LoadObj(missing);
+    REQUIRE(lib.report.warnings.size() == 1);
+    CHECK(lib.report.warnings[0] == missing + ": material 'red' is not defined: does_not_exist.mtl was not found; "
+                                              "its 1 face uses the default albedo 0.8");
+    // A material used before the mtllib line that defines it.
+    const LoadedMesh early = LoadObj(test::Fixture("obj/material_before_library.obj"));
+    REQUIRE(early.report.warnings.size() == 1);
+    CHECK(Contains(early.report.warnings[0], "material 'red' is used before the mtllib line that defines it"));
+    CHECK(Near(early.mesh.albedo[VertexAt(early.mesh, {0, 0, 0})], glm::vec3(kDefaultAlbedo)));  // only in face 1
+    CHECK(Near(early.mesh.albedo[VertexAt(early.mesh, {2, 0, 0})], glm::vec3(1, 0, 0)));         // only in face 2
+  }
+
+  TEST_CASE("obj: normal_from_file says which vertex normals came from the file") {
+    using Flags = std::vector<std::uint8_t>;
+    CHECK(LoadObj(test::Fixture("obj/quad.obj")).normal_from_file == Flags{1, 1, 1, 1});
+    CHECK(LoadObj(test::Fixture("obj/tetra_no_normals.obj")).normal_from_file == Flags{0, 0, 0, 0});
+    // Face 1 with normals, face 2 without: 3 + 3 vertices (not one flag per position).
+    CHECK(LoadObj(test::Fixture("obj/mixed_normals.obj")).normal_from_file == Flags{1, 1, 1, 0, 0, 0});
+    // A zero-length file normal counts as none.
+    CHECK(LoadObj(test::Fixture("obj/zero_normal.obj")).normal_from_file == Flags{1, 1, 0});
   }
 
   TEST_CASE("obj: repairs are counted, missing materials are warnings") {
@@ -95,7 +206,7 @@ TEST_SUITE("io") {
     CHECK(zero.report.recomputed_normals == 1);
     for (const auto& n : zero.mesh.normals) CHECK(Near(n, glm::vec3(0, 0, 1)));
     const LoadedMesh missing = LoadObj(test::Fixture("obj/missing_mtl.obj"));
-    CHECK(!missing.report.warnings.empty());
+    CHECK(missing.report.warnings.size() == 1);
     for (const auto& a : missing.mesh.albedo) CHECK(Near(a, glm::vec3(kDefaultAlbedo)));
   }
 
@@ -112,8 +223,17 @@ TEST_SUITE("io") {
 
   TEST_CASE("obj: the course's mary has 7905 vertices and its two colours") {
     PRT_SHARED_DATA_OR_SKIP(data);
-    const LoadedMesh m = LoadObj(data + "/games202/mary/mary.obj");
+    const std::string path = data + "/games202/mary/mary.obj";
+    const LoadedMesh m = LoadObj(path);
     CHECK(m.mesh.vertex_count() == 7905);
+    CHECK(m.report.skipped_lines == 0);
+    // Its body's material is not in mary.mtl: one warning, translated, with its 9904 faces.
+    REQUIRE(m.report.warnings.size() == 1);
+    CHECK(m.report.warnings[0] == path + ": material 'MC003_Kozakura_Mari' is not defined in mary.mtl; "
+                                         "its 9904 faces use the default albedo 0.8");
+    REQUIRE(m.normal_from_file.size() == m.mesh.vertex_count());
+    CHECK(static_cast<std::size_t>(std::count(m.normal_from_file.begin(), m.normal_from_file.end(), 0)) ==
+          m.report.recomputed_normals);
     CHECK(m.report.dropped_degenerate == 2);  // two zero-area faces in the file
     CHECK(m.mesh.triangle_count() == 10174 - 2);
     std::set<std::array<float, 3>> colours;

@@ -1,0 +1,123 @@
+#include "app/option_table.h"
+
+#include <algorithm>
+#include <sstream>
+
+namespace prt {
+namespace {
+
+constexpr std::size_t kHelpWidth = 100;  // columns of the wrapped help text
+constexpr std::size_t kOptionColumn = 24;  // where option descriptions start
+
+/// Appends `text` wrapped to kHelpWidth, every line indented by `indent` spaces (the first one
+/// too, unless `first_indented` is false: it continues a line already `indent` wide).
+void Wrap(std::string& out, const std::string& text, std::size_t indent, bool first_indented = true) {
+  std::istringstream words(text);
+  std::string word;
+  std::size_t column = indent;
+  bool line_empty = true;
+  if (first_indented) out.append(indent, ' ');
+  while (words >> word) {
+    if (!line_empty && column + 1 + word.size() > kHelpWidth) {
+      out += "\n";
+      out.append(indent, ' ');
+      column = indent;
+      line_empty = true;
+    }
+    if (!line_empty) out += ' ', ++column;
+    out += word;
+    column += word.size();
+    line_empty = false;
+  }
+  out += "\n";
+}
+
+std::size_t EditDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+const OptionSpec* CommandSpec::Find(const std::string& name) const {
+  for (const auto& g : groups)
+    for (const auto& o : g.options)
+      if (o.name == name) return &o;
+  return nullptr;
+}
+
+std::vector<std::string> CommandSpec::Names() const {
+  std::vector<std::string> names;
+  for (const auto& g : groups)
+    for (const auto& o : g.options) names.push_back(o.name);
+  return names;
+}
+
+std::string FormatHelp(const CommandSpec& spec) {
+  std::string out = "usage: " + spec.usage + "\n\n";
+  std::istringstream paragraphs(spec.about);
+  std::string paragraph, line;
+  while (std::getline(paragraphs, line)) {
+    if (line.empty()) {
+      if (!paragraph.empty()) Wrap(out, paragraph, 2), out += "\n";
+      paragraph.clear();
+    } else {
+      paragraph += (paragraph.empty() ? "" : " ") + line;
+    }
+  }
+  if (!paragraph.empty()) Wrap(out, paragraph, 2), out += "\n";
+  for (const auto& g : spec.groups) {
+    if (g.options.empty()) continue;
+    out += g.title + ":\n";
+    for (const auto& o : g.options) {
+      std::string head = "  " + o.name + (o.value.empty() ? "" : " " + o.value);
+      std::string text = o.help;
+      if (o.default_text == "required") text += " (required)";
+      else if (!o.default_text.empty()) text += " (default: " + o.default_text + ")";
+      if (head.size() + 2 > kOptionColumn) {
+        out += head + "\n";
+        Wrap(out, text, kOptionColumn);
+      } else {
+        head.append(kOptionColumn - head.size(), ' ');
+        out += head;
+        Wrap(out, text, kOptionColumn, false);
+      }
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+std::string NearestName(const std::string& given, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_distance = static_cast<std::size_t>(-1);
+  for (const auto& c : candidates) {
+    std::size_t d = EditDistance(given, c);
+    // A prefix of a longer name (`--sample` for `--samples`) is a likely abbreviation.
+    if (given.size() >= 4 && c.compare(0, given.size(), given) == 0) d = std::min<std::size_t>(d, 1);
+    if (d < best_distance) best_distance = d, best = c;
+  }
+  const std::size_t length = std::max<std::size_t>(given.size(), 1);
+  const std::size_t limit = length <= 4 ? 1 : std::min<std::size_t>(3, length / 3);
+  return best_distance <= limit ? best : std::string();
+}
+
+std::string UnknownMessage(const std::string& given, const std::string& what,
+                           const std::vector<std::string>& candidates) {
+  const std::string near = NearestName(given, candidates);
+  return given + ": unknown " + what + (near.empty() ? "" : " (did you mean " + near + "?)");
+}
+
+OptionSpec QuietOption() { return {"--quiet", "", "no progress, warnings or run summary on stderr (errors are still printed)", ""}; }
+
+}  // namespace prt

@@ -1,0 +1,59 @@
+#pragma once
+/// \file
+/// The one table of a command's options. The parser (args.h) accepts exactly the options of the
+/// table and `prt help COMMAND` (or `prt COMMAND --help`) prints the same table with each
+/// option's default, so what the program accepts and what it documents cannot drift apart.
+///
+///   CommandSpec spec{"prt light [options]", "Prints ...", {LightGroup(defaults), CommonGroup()}};
+///   Args args("light", tokens, spec);      // unknown options: a usage error with a suggestion
+///   std::printf("%s", FormatHelp(spec).c_str());
+
+#include <string>
+#include <vector>
+
+namespace prt {
+
+/// One option as the user types it and as the help documents it.
+struct OptionSpec {
+  std::string name;          ///< "--lmax"
+  std::string value;         ///< the value's placeholder, "L"; empty for a flag (no value)
+  std::string help;          ///< what it does (wrapped by FormatHelp)
+  std::string default_text;  ///< the default as printed, "2, 9 coefficients"; "required"; empty for none
+};
+
+/// Options that belong together in the help ("scene options", "render options", ...).
+struct OptionGroup {
+  std::string title;
+  std::vector<OptionSpec> options;
+};
+
+/// Everything `prt help COMMAND` prints: the usage line, what the command does, its options.
+struct CommandSpec {
+  std::string usage;  ///< "prt render [options]"
+  std::string about;  ///< paragraphs separated by blank lines (wrapped by FormatHelp)
+  std::vector<OptionGroup> groups;
+
+  /// The option called `name`, or nullptr.
+  const OptionSpec* Find(const std::string& name) const;
+  /// Every option name, in help order.
+  std::vector<std::string> Names() const;
+};
+
+/// The help text of a command: usage, about, then every option with its default, wrapped to
+/// 100 columns.
+std::string FormatHelp(const CommandSpec& spec);
+
+/// The entry of `candidates` nearest to `given` by edit distance (Levenshtein; `given` being a
+/// prefix of a candidate, 4 characters or more, counts as distance 1), or "" when none is near
+/// enough to be a likely typo: distance at most 1 for names of up to 4 characters, else at most
+/// a third of the length, and never more than 3.
+std::string NearestName(const std::string& given, const std::vector<std::string>& candidates);
+
+/// "--x: unknown option" with " (did you mean --y?)" when a near name exists.
+std::string UnknownMessage(const std::string& given, const std::string& what,
+                           const std::vector<std::string>& candidates);
+
+/// The `--quiet` option every command accepts.
+OptionSpec QuietOption();
+
+}  // namespace prt

@@ -1,0 +1,90 @@
+// LoadSceneMesh (pipeline.h): the mesh of --mesh or the embedded scene, repaired and reported.
+#include <chrono>
+#include <cstdio>
+
+#include <glm/geometric.hpp>
+
+#include "app/pipeline.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "geometry/mesh_ops.h"
+#include "geometry/orientation.h"
+#include "geometry/procedural.h"
+#include "geometry/subdivide.h"
+#include "io/obj_loader.h"
+
+namespace prt {
+namespace {
+
+/// --max-edge may not make more triangles than this: beyond it the precompute would take hours
+/// and the mesh would not fit comfortably in memory (about 100 bytes a triangle with its BVH).
+constexpr std::size_t kMaxSplitTriangles = 20'000'000;
+
+std::string Seconds(std::chrono::steady_clock::time_point t0) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, " [%.3f s]",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  return buf;
+}
+
+/// What loading repaired or skipped, for the mesh's summary line.
+std::string LoadNotes(const MeshReport& report) {
+  std::string notes;
+  if (report.dropped_degenerate)
+    notes += ", " + std::to_string(report.dropped_degenerate) + " zero-area triangles dropped";
+  if (report.recomputed_normals) notes += ", " + std::to_string(report.recomputed_normals) + " normals computed";
+  if (report.skipped_lines)
+    notes += ", " + std::to_string(report.skipped_lines) + " line" + (report.skipped_lines > 1 ? "s" : "") +
+             " not understood and skipped (first: line " +
+             std::to_string(report.first_skipped_line) + ": '" + report.first_skipped_text + "')";
+  return notes;
+}
+
+void SplitLongTriangles(Mesh& mesh, const SceneOptions& options) {
+  const Bounds3 box = MeshBounds(mesh);
+  const double diagonal = glm::length(box.hi - box.lo);
+  const float max_edge = static_cast<float>(MaxEdgeLength(options, diagonal));
+  const std::size_t estimate = EstimateSplitTriangles(mesh, max_edge);
+  if (estimate > kMaxSplitTriangles)
+    throw Error("--max-edge: " + std::to_string(max_edge) + " would split the mesh into about " +
+                std::to_string(estimate) + " triangles (expected at most " + std::to_string(kMaxSplitTriangles) +
+                ": choose a longer edge)");
+  const auto t0 = std::chrono::steady_clock::now();
+  const SplitReport r = SplitLongEdges(mesh, max_edge);
+  char line[200];
+  std::snprintf(line, sizeof line, "split: no edge longer than %.4g: %zu triangles -> %zu, %zu vertices added", max_edge,
+                r.triangles_before, r.triangles_after, r.vertices_added);
+  Summary(line + Seconds(t0));
+}
+
+}  // namespace
+
+Mesh LoadSceneMesh(const SceneOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  Mesh mesh;
+  std::string what;
+  OrientationReport orientation;
+  if (options.mesh.empty()) {
+    mesh = MakeDemoScene();
+    what = "embedded demo scene (torus knot on a ground plane)";
+  } else {
+    LoadedMesh loaded = LoadObj(options.mesh);
+    for (const auto& w : loaded.report.warnings) Warn(w);
+    what = options.mesh + LoadNotes(loaded.report);
+    orientation = OrientMesh(loaded.mesh, loaded.normal_from_file);
+    mesh = std::move(loaded.mesh);
+  }
+  Summary("mesh: " + what + ": " + std::to_string(mesh.vertex_count()) + " vertices, " +
+          std::to_string(mesh.triangle_count()) + " triangles" + Seconds(t0));
+  if (!orientation.fixed.empty()) Summary("orientation: " + orientation.fixed);
+  if (!orientation.warning.empty()) Warn(options.mesh + ": " + orientation.warning);
+  ApplySceneEdits(mesh, options);
+  return mesh;
+}
+
+void ApplySceneEdits(Mesh& mesh, const SceneOptions& options) {
+  if (options.albedo) SetUniformAlbedo(mesh, glm::vec3(*options.albedo));
+  if (options.max_edge > 0.0) SplitLongTriangles(mesh, options);
+}
+
+}  // namespace prt

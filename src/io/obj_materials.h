@@ -1,0 +1,68 @@
+#pragma once
+/// \file
+/// The OBJ loader's materials: reading the `mtllib` files for tinyobjloader [1], turning Kd into
+/// albedo, and saying in prt's words what is missing.
+///
+/// Lookup. A `mtllib NAME ...` line names one or more libraries; tinyobjloader asks for them in
+/// turn and keeps the first that can be read. NAME is looked up in the OBJ's folder (an absolute
+/// NAME as it is), the way tinyobjloader's own file reader does with the folder as search path;
+/// here prt reads the file, so it knows which library was read, which was missing and why.
+///
+/// Definitions. The last definition of a name wins, over all libraries read (obj_loader.h says
+/// why); Kd outside [0, 1] is clamped, a non-finite Kd gives the default albedo.
+///
+/// Missing materials. A `usemtl NAME` that no library defines leaves its faces at the default
+/// albedo; the warning names the material, the libraries (or why none was read) and the number
+/// of faces, once per name however often the file uses it.
+///
+/// References
+///  [1] S. Fujita, "tinyobjloader", https://github.com/tinyobjloader/tinyobjloader (2.0.0rc10).
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <tiny_obj_loader.h>
+
+namespace prt {
+
+/// Reads the material libraries of one OBJ file when tinyobjloader meets its `mtllib` lines.
+class MaterialLibraries : public tinyobj::MaterialReader {
+ public:
+  /// `obj_path` is the OBJ file; libraries are looked up in its folder.
+  explicit MaterialLibraries(const std::string& obj_path);
+
+  /// Called by tinyobjloader with one library name: reads it into `materials` and `names`,
+  /// returns false when it does not exist or cannot be read.
+  bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                  std::map<std::string, int>* names, std::string* warn, std::string* err) override;
+
+  /// Names of the libraries read, as the OBJ wrote them, in order.
+  const std::vector<std::string>& read() const { return read_; }
+  /// One entry per library that could not be read: "x.mtl was not found", "... could not be read".
+  const std::vector<std::string>& unread() const { return unread_; }
+  /// tinyobjloader's remarks on the libraries' content, each prefixed with the library's path.
+  const std::vector<std::string>& remarks() const { return remarks_; }
+
+ private:
+  std::string folder_;
+  std::vector<std::string> read_, unread_, remarks_;
+};
+
+/// Albedo for each tinyobjloader material id: the Kd of the LAST definition of its name,
+/// clamped to [0, 1] (with a warning naming the material), the default albedo where Kd is not
+/// finite. Warnings are appended to `warnings`, prefixed with `path`.
+std::vector<glm::vec3> MaterialAlbedos(const std::vector<tinyobj::material_t>& materials, const std::string& path,
+                                       std::vector<std::string>& warnings);
+
+/// One warning per material name used but not defined, e.g. `mary.obj: material 'X' is not
+/// defined in mary.mtl; its 9000 faces use the default albedo 0.8`. `faces_by_material` counts
+/// the faces of each used name (ObjScan); `used_before_definition` holds the names tinyobjloader
+/// could not find when it met their `usemtl` although a later `mtllib` defines them.
+void WarnMissingMaterials(const std::string& path, const std::map<std::string, std::size_t>& faces_by_material,
+                          const std::vector<tinyobj::material_t>& materials, const MaterialLibraries& libraries,
+                          const std::set<std::string>& used_before_definition, std::vector<std::string>& warnings);
+
+}  // namespace prt

@@ -1,0 +1,178 @@
+// Output folders never mix two runs (core/output_folder.h): a folder in use is refused at once,
+// a lock left by a killed run blocks nothing, and after a successful run the folder holds
+// exactly that run's outputs while files prt did not write stay untouched.
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+#include <thread>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "app/render_frames.h"
+#include "core/atomic_file.h"
+#include "core/output_folder.h"
+#include "tests/test_support.h"
+
+namespace prt {
+namespace {
+namespace fs = std::filesystem;
+
+std::string Q(const std::string& s) { return "'" + s + "'"; }
+
+std::string Quick(const std::string& out, int frames) {
+  return "render --mesh " + Q(test::Fixture("obj/tetra_no_normals.obj")) +
+         " --env furnace --transport unshadowed --size 16x12 --frames " + std::to_string(frames) + " --out " + Q(out);
+}
+
+/// Names of the files in `dir`, hidden ones included.
+std::set<std::string> Files(const std::string& dir) {
+  std::set<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
+  return names;
+}
+
+std::string Slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+}  // namespace
+
+TEST_SUITE("app") {
+  TEST_CASE("output folder: a folder in use is refused at once; a crashed run's lock blocks nothing") {
+    const std::string dir = test::ScratchDir("folder_lock");
+    // Hold the lock as a running prt would.
+    const int fd = ::open((dir + "/" + OutputFolder::kLockName).c_str(), O_RDWR | O_CREAT, 0644);
+    REQUIRE(fd >= 0);
+    REQUIRE(::flock(fd, LOCK_EX | LOCK_NB) == 0);
+    const auto refused = test::RunPrt(Quick(dir, 2));
+    if (!refused) {
+      ::close(fd);
+      MESSAGE("skipped: PRT_BINARY is not set (run the tests through ctest)");
+      return;
+    }
+    CHECK(refused->exit_code == 1);
+    CHECK(refused->err.find(dir + ": in use by another prt run") != std::string::npos);
+    CHECK_FALSE(fs::exists(dir + "/frame_0000.png"));
+    // The lock file stays where a killed run left it, but unheld: the next run goes ahead.
+    ::close(fd);
+    const auto after = test::RunPrt(Quick(dir, 2));
+    CHECK(after->exit_code == 0);
+    CHECK(fs::exists(dir + "/frame_0001.png"));
+    CHECK_FALSE(fs::exists(dir + "/" + OutputFolder::kLockName));  // a finished run removes its lock
+  }
+
+  TEST_CASE("output folder: two renders into one folder at the same time, the second is refused") {
+    const char* binary = std::getenv("PRT_BINARY");
+    if (!binary || !*binary) {
+      MESSAGE("skipped: PRT_BINARY is not set (run the tests through ctest)");
+      return;
+    }
+    const std::string dir = test::ScratchDir("folder_two_runs");
+    const std::string mesh = test::Fixture("obj/tetra_no_normals.obj");
+    const pid_t pid = ::fork();
+    REQUIRE(pid >= 0);
+    if (pid == 0) {
+      const int null = ::open("/dev/null", O_WRONLY);
+      if (null >= 0) ::dup2(null, 2);
+      ::execl(binary, binary, "render", "--mesh", mesh.c_str(), "--env", "furnace", "--transport", "unshadowed",
+              "--frames", "9999", "--size", "16x12", "--out", dir.c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    // Wait until the first run holds the folder (its pid is in the lock file).
+    const std::string lock = dir + "/" + OutputFolder::kLockName;
+    bool holding = false;
+    for (int tries = 0; tries < 20000 && !holding; ++tries) {
+      holding = Slurp(lock) == std::to_string(pid);
+      if (!holding) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    const auto second = test::RunPrt(Quick(dir, 3));
+    ::kill(pid, SIGKILL);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    REQUIRE(holding);
+    CHECK(second->exit_code == 1);
+    CHECK(second->err.find("in use by another prt run (process " + std::to_string(pid) + ")") != std::string::npos);
+  }
+
+  TEST_CASE("output folder: after a run the folder holds exactly its outputs; other files are untouched") {
+    const std::string dir = test::ScratchDir("folder_exact");
+    std::ofstream(dir + "/notes.txt") << "mine";
+    std::ofstream(dir + "/frame_0007.png") << "a frame prt did not write";
+    const auto first = test::RunPrt(Quick(dir, 5) + " --quiet");
+    if (!first) return;
+    CHECK(first->exit_code == 0);
+    CHECK(fs::exists(dir + "/frame_0004.png"));
+    const auto second = test::RunPrt(Quick(dir, 3) + " --quiet");  // what CI runs: nothing printed
+    CHECK(second->exit_code == 0);
+    CHECK(second->err.empty());
+    CHECK(Files(dir) == std::set<std::string>{".prt-outputs", "frame_0000.png", "frame_0001.png", "frame_0002.png",
+                                              "frame_0007.png", "notes.txt", "transport.cache"});
+    CHECK(Slurp(dir + "/notes.txt") == "mine");
+    CHECK(Slurp(dir + "/frame_0007.png") == "a frame prt did not write");
+    // Without --quiet the run says what it removed and what it left.
+    const auto third = test::RunPrt(Quick(dir, 1));
+    CHECK(third->err.find("outputs: removed 2 files an earlier run wrote in " + dir +
+                          " and this one did not (frame_0001.png ... frame_0002.png)") != std::string::npos);
+    CHECK(third->err.find("note: 1 frame file in " + dir + " not written by this run was left untouched") !=
+          std::string::npos);
+  }
+
+  TEST_CASE("output folder: precompute leaves no transport file of an earlier mode") {
+    const std::string dir = test::ScratchDir("folder_precompute");
+    const std::string scene = "precompute --env furnace --samples 16 --mesh " + Q(test::Fixture("obj/quad.obj")) +
+                              " --out " + Q(dir);
+    const auto coloured = test::RunPrt(scene + " --transport interreflection --albedo 0.9,0.2,0.1");
+    if (!coloured) return;
+    CHECK(coloured->exit_code == 0);
+    CHECK(fs::exists(dir + "/transport_r.txt"));
+    const auto shadowed = test::RunPrt(scene + " --transport shadowed");
+    CHECK(shadowed->exit_code == 0);
+    CHECK(Files(dir) == std::set<std::string>{".prt-outputs", "light.txt", "transport.txt", "transport.cache"});
+  }
+
+  TEST_CASE("output folder: a failed run removes nothing; a later successful run cleans what it left") {
+    const std::string dir = test::ScratchDir("folder_failed");
+    {
+      OutputFolder folder(dir);
+      WriteFileAtomic(folder.Output("a.txt"), "a");
+      WriteFileAtomic(folder.Output("b.txt"), "b");
+      folder.Finish();
+    }
+    {
+      OutputFolder failing(dir);
+      WriteFileAtomic(failing.Output("c.txt"), "c");
+      // no Finish(): the run failed
+    }
+    CHECK(Files(dir) == std::set<std::string>{".prt-outputs", "a.txt", "b.txt", "c.txt"});
+    {
+      OutputFolder folder(dir);
+      WriteFileAtomic(folder.Output("a.txt"), "a2");
+      CHECK(folder.Finish() == std::vector<std::string>{"b.txt", "c.txt"});
+    }
+    CHECK(Files(dir) == std::set<std::string>{".prt-outputs", "a.txt"});
+  }
+
+  TEST_CASE("output folder: frame names keep frame order past 9999 frames") {
+    CHECK(FrameName(0, 120) == "frame_0000.png");
+    CHECK(FrameName(9999, 10000) == "frame_9999.png");
+    CHECK(FrameName(0, 10001) == "frame_00000.png");
+    CHECK(FrameName(10000, 10001) == "frame_10000.png");
+    CHECK(FrameName(5, 100000) == "frame_00005.png");
+    CHECK(FrameName(99999, 100000) == "frame_99999.png");
+    // Lexical order is frame order for every count.
+    for (int count : {10, 10001, 100001})
+      CHECK(FrameName(count / 2 - 1, count) < FrameName(count / 2, count));
+    CHECK(FrameName(999, 10001) < FrameName(10000, 10001));
+  }
+}
+
+}  // namespace prt

@@ -1,0 +1,116 @@
+// The README runs verbatim: every command of its ```sh blocks is run, in order, with bash from a
+// scratch folder laid out like a fresh clone after the quick start (build/prt, scripts/), and
+// must exit 0. Commands that need the course's files (they name $GAMES202) run against the
+// course data in ../shared/data, laid out as the course's framework has it, and are skipped
+// with a message when it is absent. The quick start's own commands are what runs this test, so
+// they are not run again.
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <sys/wait.h>
+
+#include "tests/test_support.h"
+
+namespace prt {
+namespace {
+namespace fs = std::filesystem;
+
+/// The commands of the README's ```sh blocks: comment lines dropped, continuations joined.
+std::vector<std::string> ReadmeCommands(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::string> commands;
+  bool in_block = false;
+  std::string pending;
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("```", 0) == 0) {
+      in_block = !in_block && line == "```sh";
+      continue;
+    }
+    if (!in_block) continue;
+    const auto first = line.find_first_not_of(' ');
+    if (first == std::string::npos || line[first] == '#') continue;
+    if (!line.empty() && line.back() == '\\') {
+      pending += line.substr(0, line.size() - 1);
+      continue;
+    }
+    commands.push_back(pending + line);
+    pending.clear();
+  }
+  return commands;
+}
+
+/// The course's framework layout (assets/mary, assets/cubemap/<Name>/faces) over the shared
+/// data: real folders holding links to the files, so outputs written there stay in `root`.
+void LayOutCourseFramework(const std::string& data, const std::string& root) {
+  fs::create_directories(root + "/assets");
+  fs::create_directory_symlink(data + "/games202/mary", root + "/assets/mary");
+  for (const auto& cubemap : fs::directory_iterator(data + "/games202/cubemap")) {
+    const std::string folder = root + "/assets/cubemap/" + cubemap.path().filename().string();
+    fs::create_directories(folder);
+    for (const auto& face : fs::directory_iterator(cubemap.path()))
+      fs::create_symlink(face.path(), folder + "/" + face.path().filename().string());
+  }
+}
+
+/// `text` as one single-quoted shell word.
+std::string ShellQuote(const std::string& text) {
+  std::string out = "'";
+  for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+}  // namespace
+
+TEST_SUITE("readme") {
+  TEST_CASE("readme: every command of the README runs as written") {
+    const char* binary = std::getenv("PRT_BINARY");
+    if (!binary || !*binary) {
+      MESSAGE("skipped: PRT_BINARY is not set (run the tests through ctest)");
+      return;
+    }
+    const auto commands = ReadmeCommands(test::SourceDir() + "/README.md");
+    REQUIRE(commands.size() >= 10);
+    const std::string clone = test::ScratchDir("readme");
+    fs::create_directories(clone + "/build");
+    fs::create_symlink(binary, clone + "/build/prt");
+    fs::create_directory_symlink(test::SourceDir() + "/scripts", clone + "/scripts");
+    const auto data = test::SharedData();
+    if (data) LayOutCourseFramework(*data, clone + "/games202");
+
+    int ran = 0, skipped = 0;
+    for (const std::string& command : commands) {
+      CAPTURE(command);
+      if (command.rfind("bash scripts/quickstart.sh", 0) == 0) continue;  // what runs this test
+      const bool course = command.find("$GAMES202") != std::string::npos;
+      if (course && !data) {
+        ++skipped;
+        continue;
+      }
+      const std::string script = "cd '" + clone + "' && GAMES202='" + clone + "/games202' bash -c " + ShellQuote(command) +
+                                 " >'" + clone + "/stdout' 2>'" + clone + "/stderr' </dev/null";
+      const int status = std::system(script.c_str());
+      std::ifstream err(clone + "/stderr");
+      std::stringstream text;
+      text << err.rdbuf();
+      CAPTURE(text.str());
+      CHECK(WIFEXITED(status));
+      CHECK(WEXITSTATUS(status) == 0);
+      ++ran;
+    }
+    if (skipped) MESSAGE("skipped " << skipped << " course commands: ../shared/data is absent");
+    CHECK(ran >= 10);
+    // What the commands say they make is there.
+    CHECK(fs::exists(clone + "/out/samples/scene.obj"));
+    CHECK(fs::exists(clone + "/out/frames_split/frame_0059.png"));
+    CHECK(fs::exists(clone + "/out/diff.png"));
+    if (data) CHECK(fs::exists(clone + "/games202/assets/cubemap/GraceCathedral/transport.txt"));
+  }
+}
+
+}  // namespace prt
