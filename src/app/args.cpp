@@ -1,6 +1,7 @@
 #include "app/args.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <stdexcept>
@@ -27,10 +28,15 @@ std::string NumberProblem(const std::string& text, bool integer, const std::stri
 
 namespace {
 
+// Integers in full (16777216, not 1.67772e+07); other bounds as %g writes them.
+std::string Bound(double v, bool integer) {
+  char text[64];
+  std::snprintf(text, sizeof text, integer ? "%.0f" : "%g", v);
+  return text;
+}
+
 std::string Range(double lo, double hi, bool integer) {
-  std::ostringstream ss;
-  ss << (integer ? "an integer" : "a number") << " from " << lo << " to " << hi;
-  return ss.str();
+  return std::string(integer ? "an integer" : "a number") + " from " + Bound(lo, integer) + " to " + Bound(hi, integer);
 }
 
 }  // namespace

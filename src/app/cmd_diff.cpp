@@ -81,7 +81,12 @@ int Diff(const std::vector<std::string>& tokens) {
     WritePng(*out, AmplifiedDifference(a, b));
   }
   const std::string exceeded = Exceeded(metrics, limits);
-  if (!exceeded.empty() && !quiet) std::fprintf(stderr, "prt: diff: outside the limits: %s\n", exceeded.c_str());
+  if (!exceeded.empty() && !quiet) {
+    if (any_limit) std::fprintf(stderr, "prt: diff: outside the limits: %s\n", exceeded.c_str());
+    else
+      std::fprintf(stderr, "prt: diff: not identical (%zu differing pixels; --max-abs, --mean-abs or --min-psnr "
+                   "allow differences)\n", metrics.differing_pixels);
+  }
   return exceeded.empty() ? 0 : 1;
 }
 

@@ -12,6 +12,7 @@
 #include "geometry/procedural.h"
 #include "geometry/subdivide.h"
 #include "io/obj_loader.h"
+#include "raster/camera.h"  // ShortestFloat
 
 namespace prt {
 namespace {
@@ -46,7 +47,7 @@ void SplitLongTriangles(Mesh& mesh, const SceneOptions& options) {
   const float max_edge = static_cast<float>(MaxEdgeLength(options, diagonal));
   const std::size_t estimate = EstimateSplitTriangles(mesh, max_edge);
   if (estimate > kMaxSplitTriangles)
-    throw Error("--max-edge: " + std::to_string(max_edge) + " would split the mesh into about " +
+    throw Error("--max-edge: " + ShortestFloat(max_edge) + " would split the mesh into about " +
                 std::to_string(estimate) + " triangles (expected at most " + std::to_string(kMaxSplitTriangles) +
                 ": choose a longer edge)");
   const auto t0 = std::chrono::steady_clock::now();

@@ -38,7 +38,13 @@ std::string WriteProblem(const std::string& path, int error) {
   if (folder.empty()) folder = ".";
   switch (error) {
     case ENOENT:
-    case ENOTDIR: return "folder '" + folder + "' does not exist";
+    case ENOTDIR: {
+      // Some file systems (/proc, /sys) answer ENOENT for a new name in a folder that exists.
+      std::error_code ec;
+      if (fs::is_directory(folder, ec)) return "folder '" + folder + "' does not accept new files";
+      if (fs::exists(folder, ec)) return "'" + folder + "' is a file, not a folder";
+      return "folder '" + folder + "' does not exist";
+    }
     case EACCES:
     case EPERM: return "folder '" + folder + "' is not writable: permission denied";
     case EROFS: return "folder '" + folder + "' is on a read-only file system";

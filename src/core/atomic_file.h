@@ -32,8 +32,9 @@ class AtomicFile {
 void WriteFileAtomic(const std::string& path, const std::string& bytes);
 
 /// Why writing into `path` failed with `error` (an errno value), in the user's terms: the
-/// folder does not exist, is not writable (permission denied, read-only file system), the disk
-/// is full, or the system's own words for anything else.
+/// folder does not exist (or is a file), exists but takes no new files (ENOENT from /proc and
+/// the like), is not writable (permission denied, read-only file system), the disk is full, or
+/// the system's own words for anything else.
 std::string WriteProblem(const std::string& path, int error);
 
 /// Reads a whole file. Throws Error naming `path` if it is missing, a directory or unreadable.

@@ -2,12 +2,18 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include <unistd.h>
 
 #include "core/log.h"
 
 namespace prt {
+namespace {
+
+constexpr std::chrono::milliseconds kRedraw(100);  // at most ten draws a second
+
+}  // namespace
 
 std::string TimeLeft(double fraction, double elapsed_s) {
   if (!(fraction >= kTimeLeftFraction) || fraction >= 1.0 || !(elapsed_s >= 0.0)) return {};
@@ -20,9 +26,19 @@ std::string TimeLeft(double fraction, double elapsed_s) {
   return text;
 }
 
+std::chrono::duration<double> ProgressDelay() {
+  static const double seconds = [] {
+    const char* text = std::getenv("PRT_PROGRESS_DELAY");
+    char* end = nullptr;
+    const double v = text ? std::strtod(text, &end) : kProgressDelaySeconds;
+    return text && end != text && *end == '\0' && v >= 0.0 && v <= 3600.0 ? v : kProgressDelaySeconds;
+  }();
+  return std::chrono::duration<double>(seconds);
+}
+
 Progress::Progress(std::string label, std::size_t total)
     : label_(std::move(label)), total_(total), enabled_(!IsQuiet() && ::isatty(2) && total > 0),
-      last_(std::chrono::steady_clock::now()), start_(last_) {}
+      start_(std::chrono::steady_clock::now()), last_(start_ - kRedraw) {}  // the first draw waits for the delay only
 
 Progress::~Progress() {
   if (enabled_) std::fprintf(stderr, "\r\033[K");
@@ -33,8 +49,8 @@ void Progress::Advance(std::size_t n) {
   if (!enabled_) return;
   const auto now = std::chrono::steady_clock::now();
   std::unique_lock<std::mutex> lock(mutex_, std::try_to_lock);
-  if (!lock.owns_lock() || now - last_ < std::chrono::milliseconds(100)) return;
-  if (now - start_ < std::chrono::seconds(1)) return;  // short work shows no bar
+  if (!lock.owns_lock() || now - last_ < kRedraw) return;
+  if (now - start_ < ProgressDelay()) return;  // short work shows no bar
   last_ = now;
   Draw(done);
 }

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// A progress bar on stderr for long work: shown only when stderr is a terminal and the run is
-/// not quiet, updated at most ten times a second, safe to advance from any thread.
+/// not quiet, after a second of work (ProgressDelay), updated at most ten times a second, safe
+/// to advance from any thread.
 ///
 ///     rendering [#############.................]  45%  12 s left
 ///
@@ -20,6 +21,14 @@ namespace prt {
 /// Fraction of the work done before the time left is shown.
 inline constexpr double kTimeLeftFraction = 0.03;
 
+/// Seconds of work before a bar appears, so that short work shows none.
+inline constexpr double kProgressDelaySeconds = 1.0;
+
+/// The delay in use: the environment variable PRT_PROGRESS_DELAY (seconds, 0..3600) when set
+/// to such a number, else kProgressDelaySeconds. Read once. (Tests set 0 to see bars of
+/// short work on a pseudo-terminal.)
+std::chrono::duration<double> ProgressDelay();
+
 /// "12 s left", "3 min 20 s left", "2 h 5 min left" for `fraction` of the work done in
 /// `elapsed_s` seconds; empty before kTimeLeftFraction or when done.
 std::string TimeLeft(double fraction, double elapsed_s);
@@ -27,7 +36,7 @@ std::string TimeLeft(double fraction, double elapsed_s);
 /// A progress bar over `total` items (see the file comment).
 class Progress {
  public:
-  /// A bar labelled `label` for `total` items; nothing is shown for the first second.
+  /// A bar labelled `label` for `total` items; nothing is shown before ProgressDelay().
   Progress(std::string label, std::size_t total);
   ~Progress();  ///< clears the bar
   Progress(const Progress&) = delete;  ///< one bar, one owner
@@ -44,8 +53,8 @@ class Progress {
   bool enabled_;
   std::atomic<std::size_t> done_{0};
   std::mutex mutex_;
-  std::chrono::steady_clock::time_point last_;
   std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point last_;  ///< of the last draw
 };
 
 }  // namespace prt

@@ -113,13 +113,11 @@ void AddHoleCaps(const std::vector<Rim>& rims, PartOf part_of) {
 
 std::string Percent(double fraction) { return std::to_string(std::lround(100.0 * fraction)) + "%"; }
 
-// Joins clauses into one sentence: "A; b; c."
-std::string Sentence(const std::vector<std::string>& clauses) {
+// Joins clauses as the run summary writes them after a label: "a; b; c".
+std::string Clauses(const std::vector<std::string>& clauses) {
   std::string s;
   for (const std::string& c : clauses) s += (s.empty() ? "" : "; ") + c;
-  if (s.empty()) return s;
-  if (s[0] >= 'a' && s[0] <= 'z') s[0] = static_cast<char>(s[0] - 'a' + 'A');
-  return s + ".";
+  return s;
 }
 
 }  // namespace
@@ -264,7 +262,7 @@ OrientationReport OrientMesh(Mesh& mesh, const std::vector<std::uint8_t>& normal
   if (negated > 0)
     fixed.push_back("negated " + std::to_string(negated) +
                     " normals from the file that pointed into their closed part on most of its area");
-  report.fixed = Sentence(fixed);
+  report.fixed = Clauses(fixed);
 
   std::vector<std::string> warning;
   if (open_triangles > 0)
@@ -281,7 +279,7 @@ OrientationReport OrientMesh(Mesh& mesh, const std::vector<std::uint8_t>& normal
     warning.push_back(std::to_string(tangled_triangles) +
                       " triangles form closed surfaces wound inconsistently (neighbours disagree), so their "
                       "winding was not repaired: recalculate outward normals in the modelling tool");
-  report.warning = Sentence(warning);
+  report.warning = Clauses(warning);
   return report;
 }
 

@@ -59,8 +59,8 @@ struct OrientationReport {
   double normals_against_winding = 0.0;
   std::size_t flipped_triangles = 0;  ///< triangles whose winding was reversed
   std::size_t flipped_normals = 0;    ///< vertex normals negated (file or computed ones)
-  std::string fixed;    ///< non-empty: one sentence saying what was repaired and why
-  std::string warning;  ///< non-empty: a problem seen but not repaired, with the remedy
+  std::string fixed;    ///< non-empty: what was repaired and why ("clause; clause", lower case)
+  std::string warning;  ///< non-empty: a problem seen but not repaired, with the remedy (likewise)
 };
 
 /// Makes closed parts of `mesh` face outward (see the file comment) and reports what it did.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 #include <glm/geometric.hpp>
@@ -196,14 +197,25 @@ Camera FramePoints(const std::vector<glm::vec3>& points, float aspect, float fov
 }
 
 std::string CameraArgs(const Camera& c) {
-  // %.9g round-trips every float exactly.
-  char buffer[320];
-  std::snprintf(buffer, sizeof buffer,
-                "--eye %.9g,%.9g,%.9g --target %.9g,%.9g,%.9g --up %.9g,%.9g,%.9g --fov %.9g",
-                double(c.eye.x), double(c.eye.y), double(c.eye.z), double(c.target.x),
-                double(c.target.y), double(c.target.z), double(c.up.x), double(c.up.y),
-                double(c.up.z), double(c.fov_deg));
-  return buffer;
+  const auto vec = [](const glm::vec3& v) {
+    return ShortestFloat(v.x) + "," + ShortestFloat(v.y) + "," + ShortestFloat(v.z);
+  };
+  return "--eye " + vec(c.eye) + " --target " + vec(c.target) + " --up " + vec(c.up) + " --fov " +
+         ShortestFloat(c.fov_deg);
+}
+
+std::string ShortestFloat(float v) {
+  // %.9g round-trips every float; fewer digits often do (3.2, not 3.20000005). %g switches to
+  // an exponent when the integer part has more digits than the precision (40 at one digit is
+  // 4e+01), so the precision covers the integer digits, up to 9 of them.
+  const double magnitude = std::fabs(double(v));
+  const int integer_digits = magnitude >= 1.0 && magnitude < 1e9 ? int(std::floor(std::log10(magnitude))) + 1 : 0;
+  char text[32];
+  for (int digits = 1; digits <= 9; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", std::max(digits, integer_digits), double(v));
+    if (std::strtof(text, nullptr) == v) break;
+  }
+  return text;
 }
 
 }  // namespace prt

@@ -45,6 +45,18 @@ TEST_SUITE("app") {
     CHECK(prt::test::RunPrt("diff '" + a + "' '" + b + "' --mean-abs 0.01")->exit_code == 1);
     CHECK(prt::test::RunPrt("diff '" + a + "' '" + b + "' --min-psnr 40")->exit_code == 0);
     CHECK(prt::test::RunPrt("diff '" + a + "' '" + b + "' --min-psnr 70")->exit_code == 1);
+    // Outside the limits, stderr says which limit failed, with the value and the limit; the
+    // metric line is on stdout as always.
+    const auto which = prt::test::RunPrt("diff '" + a + "' '" + b + "' --max-abs 2 --mean-abs 0.01 --min-psnr 40");
+    CHECK(which->exit_code == 1);
+    CHECK(which->out.rfind("max_abs=2 ", 0) == 0);
+    CHECK(which->err.find("mean_abs 0.0208333 > 0.01 (--mean-abs)") != std::string::npos);
+    CHECK(which->err.find("--max-abs") == std::string::npos);
+    CHECK(which->err.find("--min-psnr") == std::string::npos);
+    const auto psnr = prt::test::RunPrt("diff '" + a + "' '" + b + "' --min-psnr 70");
+    CHECK(psnr->err.find("(--min-psnr)") != std::string::npos);
+    const auto identical = prt::test::RunPrt("diff '" + a + "' '" + b + "'");
+    CHECK(identical->err.find("not identical") != std::string::npos);
 
     const auto with_out = prt::test::RunPrt("diff '" + a + "' '" + b + "' --max-abs 5 --out '" + dir + "/d.png'");
     CHECK(with_out->exit_code == 0);

@@ -152,6 +152,10 @@ TEST_SUITE("app") {
     } catch (const Error& e) {
       CHECK(std::string(e.what()) == dir + "/missing/f.txt: cannot write (folder '" + dir + "/missing' does not exist)");
     }
+    // ENOENT is also what a folder that takes no new files answers (/proc): the folder exists.
+    CHECK(WriteProblem(dir + "/f.txt", ENOENT) == "folder '" + dir + "' does not accept new files");
+    std::ofstream(dir + "/plain") << "x";
+    CHECK(WriteProblem(dir + "/plain/f.txt", ENOTDIR) == "'" + dir + "/plain' is a file, not a folder");
   }
 }
 

@@ -1,0 +1,96 @@
+// Progress as a user at a terminal sees it: the binary runs on a pseudo-terminal (util-linux's
+// `script`, part of every Debian system) with PRT_PROGRESS_DELAY=0, so that bars of short work
+// show (by default a bar waits a second). A render shows the estimated time left; loading an
+// OBJ shows its own bar; off a terminal, or with --quiet, nothing is drawn.
+#include <doctest/doctest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <sys/wait.h>
+
+#include "core/atomic_file.h"
+#include "tests/test_support.h"
+
+namespace prt {
+namespace {
+
+std::string Q(const std::string& s) { return "'" + s + "'"; }
+
+/// What `prt arguments` writes to the terminal (stdout and stderr together, as `script` records
+/// them), run with PRT_PROGRESS_DELAY=0; empty when the binary is not known.
+std::string OnTerminal(const std::string& arguments, const std::string& dir) {
+  const char* binary = std::getenv("PRT_BINARY");
+  if (!binary || !*binary) return "";
+  const std::string inner = "PRT_PROGRESS_DELAY=0 " + Q(binary) + " " + arguments;
+  // `script -qec CMD FILE` runs CMD on a new pseudo-terminal and copies what it prints to FILE.
+  std::string quoted = "'";
+  for (const char c : inner) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  quoted += "'";
+  const std::string command = "script -qec " + quoted + " " + Q(dir + "/typescript") + " >/dev/null 2>&1 </dev/null";
+  const int status = std::system(command.c_str());
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  return ReadFile(dir + "/typescript");
+}
+
+/// A flat grid of n x n vertices as OBJ text: about 70 bytes a vertex with its two triangles.
+std::string GridObj(int n) {
+  std::string text;
+  char line[96];
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      std::snprintf(line, sizeof line, "v %.4f 0 %.4f\n", 0.01 * i, 0.01 * j);
+      text += line;
+    }
+  for (int i = 0; i + 1 < n; ++i)
+    for (int j = 0; j + 1 < n; ++j) {
+      const int a = i * n + j + 1;
+      std::snprintf(line, sizeof line, "f %d %d %d\nf %d %d %d\n", a, a + 1, a + n, a + 1, a + n + 1, a + n);
+      text += line;
+    }
+  return text;
+}
+
+}  // namespace
+
+TEST_SUITE("app") {
+  TEST_CASE("progress: on a terminal a render shows the time left and an OBJ its loading") {
+    if (!std::getenv("PRT_BINARY")) {
+      MESSAGE("skipped: PRT_BINARY is not set (run the tests through ctest)");
+      return;
+    }
+    REQUIRE(std::system("command -v script >/dev/null") == 0);  // util-linux: always on Debian
+    const std::string dir = test::ScratchDir("progress_bar");
+    const std::string render = OnTerminal(
+        "render --transport unshadowed --frames 100 --size 320x240 --threads 1 --cache none --out " + Q(dir + "/frames"),
+        dir);
+    CAPTURE(render);
+    CHECK(render.find("rendering [") != std::string::npos);
+    CHECK(render.find(" s left") != std::string::npos);
+
+    WriteFileAtomic(dir + "/grid.obj", GridObj(200));  // 2.7 MB
+    const std::string load = OnTerminal("render --mesh " + Q(dir + "/grid.obj") +
+                                            " --transport unshadowed --frames 1 --size 32x24 --cache none --out " +
+                                            Q(dir + "/grid"),
+                                        dir);
+    CAPTURE(load);
+    CHECK(load.find("loading grid.obj [") != std::string::npos);
+
+    const std::string quiet = OnTerminal(
+        "render --transport unshadowed --frames 20 --size 64x48 --cache none --quiet --out " + Q(dir + "/quiet"), dir);
+    CHECK(quiet.find("rendering [") == std::string::npos);
+    // Off a terminal (what RunPrt gives: stderr is a file) no bar is drawn either.
+    ::setenv("PRT_PROGRESS_DELAY", "0", 1);
+    const auto piped = test::RunPrt("render --transport unshadowed --frames 100 --size 320x240 --threads 1 --cache none "
+                                    "--out " + Q(dir + "/piped"));
+    ::unsetenv("PRT_PROGRESS_DELAY");
+    CHECK(piped->exit_code == 0);
+    CHECK(piped->err.find("rendering [") == std::string::npos);
+  }
+}
+
+}  // namespace prt
