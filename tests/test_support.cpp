@@ -38,6 +38,12 @@ static std::string Slurp(const std::string& path) {
   return ss.str();
 }
 
+std::string ShellQuote(const std::string& text) {
+  std::string out = "'";
+  for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
 std::optional<RunResult> RunPrt(const std::string& arguments) {
   const char* binary = std::getenv("PRT_BINARY");
   if (!binary || !*binary) return std::nullopt;

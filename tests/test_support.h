@@ -25,6 +25,9 @@ struct RunResult {
   std::string out;  ///< stdout
   std::string err;  ///< stderr
 };
+/// `text` as one single-quoted shell word (a quote inside it included).
+std::string ShellQuote(const std::string& text);
+
 /// Runs the `prt` binary (path from the PRT_BINARY environment variable, set by CTest) with a
 /// shell-quoted argument string. Returns nullopt if the binary is not known.
 std::optional<RunResult> RunPrt(const std::string& arguments);

@@ -10,6 +10,8 @@
 #include "core/log.h"
 #include "core/output_folder.h"
 #include "env/cube_faces.h"
+#include "env/cubemap.h"
+#include "env/equirect.h"
 #include "env/procedural.h"
 #include "geometry/mesh_ops.h"
 #include "geometry/procedural.h"
@@ -18,33 +20,6 @@
 
 namespace prt {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-/// The equirect layout of env/equirect.h: row 0 looks straight up, the centre column along -Z.
-ImageF SkyEquirect(const Environment& sky, int width, int height) {
-  ImageF image(width, height);
-  for (int row = 0; row < height; ++row) {
-    const double theta = kPi * (row + 0.5) / height;
-    for (int col = 0; col < width; ++col) {
-      const double phi = 2.0 * kPi * (col + 0.5) / width - kPi;
-      const glm::dvec3 d(std::sin(theta) * std::sin(phi), std::cos(theta), -std::sin(theta) * std::cos(phi));
-      image.at(col, row) = glm::vec3(sky.Radiance(d));
-    }
-  }
-  return image;
-}
-
-/// One face of the standard cube layout (env/cube_faces.h).
-ImageF SkyFace(const Environment& sky, const FaceFrame& f, int size) {
-  ImageF image(size, size);
-  for (int row = 0; row < size; ++row)
-    for (int col = 0; col < size; ++col) {
-      const double s = 2.0 * (col + 0.5) / size - 1.0, t = 2.0 * (row + 0.5) / size - 1.0;
-      image.at(col, row) = glm::vec3(sky.Radiance(glm::normalize(f.n + s * f.u + t * f.v)));
-    }
-  return image;
-}
 
 std::vector<ObjPart> SampleScene() {
   Mesh knot = MakeTorusKnot(2, 3, 0.16f, 192, 20);
@@ -72,12 +47,12 @@ int RunSampleFiles(const std::vector<std::string>& tokens) {
   args.Finish();
   OutputFolder folder(out);
   const auto sky = MakeSky(SkyParams{});
-  WriteFileAtomic(folder.Output("sky.hdr"), EncodeHdr(SkyEquirect(*sky, 1024, 512)));
+  const auto radiance = [&sky](const glm::dvec3& d) { return sky->Radiance(d); };
+  WriteFileAtomic(folder.Output("sky.hdr"), EncodeHdr(EquirectImage(radiance, 1024, 512)));
   {
     OutputFolder cube(out + "/sky_cubemap");
-    for (int f = 0; f < 6; ++f)
-      WriteFileAtomic(cube.Output(std::string(kFaceNames[f]) + ".hdr"),
-                      EncodeHdr(SkyFace(*sky, FaceFrames(CubeLayout::kStandard)[f], 128)));
+    const auto faces = CubemapFaceImages(radiance, 128);
+    for (int f = 0; f < 6; ++f) WriteFileAtomic(cube.Output(std::string(kFaceNames[f]) + ".hdr"), EncodeHdr(faces[f]));
     cube.Finish();
   }
   const auto parts = SampleScene();

@@ -61,8 +61,8 @@ glm::dvec3 CubemapEnvironment::Radiance(const glm::dvec3& dir) const {
   return glm::mix(top, bottom, fy);
 }
 
-std::unique_ptr<CubemapEnvironment> CubemapFromFunction(const std::function<glm::dvec3(const glm::dvec3&)>& radiance,
-                                                       int size, CubeLayout layout) {
+std::array<ImageF, 6> CubemapFaceImages(const std::function<glm::dvec3(const glm::dvec3&)>& radiance, int size,
+                                        CubeLayout layout) {
   std::array<ImageF, 6> faces;
   const auto& frames = FaceFrames(layout);
   for (int k = 0; k < 6; ++k) {
@@ -73,7 +73,12 @@ std::unique_ptr<CubemapEnvironment> CubemapFromFunction(const std::function<glm:
         faces[k].at(col, row) = glm::vec3(radiance(glm::normalize(frames[k].n + s * frames[k].u + t * frames[k].v)));
       }
   }
-  return std::make_unique<CubemapEnvironment>(std::move(faces), layout,
+  return faces;
+}
+
+std::unique_ptr<CubemapEnvironment> CubemapFromFunction(const std::function<glm::dvec3(const glm::dvec3&)>& radiance,
+                                                       int size, CubeLayout layout) {
+  return std::make_unique<CubemapEnvironment>(CubemapFaceImages(radiance, size, layout), layout,
                                               "cubemap from a function 6x" + std::to_string(size) + "^2");
 }
 

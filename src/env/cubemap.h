@@ -38,6 +38,11 @@ class CubemapEnvironment : public Environment {
   std::string description_;
 };
 
+/// The six size^2 faces (in kFaceNames order, as `layout` maps them) whose texel centres hold
+/// `radiance(direction)`.
+std::array<ImageF, 6> CubemapFaceImages(const std::function<glm::dvec3(const glm::dvec3&)>& radiance, int size,
+                                        CubeLayout layout = CubeLayout::kStandard);
+
 /// A size^2 cubemap whose texel centres hold `radiance(direction)`: for tests, benchmarks and
 /// resolution studies.
 std::unique_ptr<CubemapEnvironment> CubemapFromFunction(const std::function<glm::dvec3(const glm::dvec3&)>& radiance,

@@ -60,8 +60,7 @@ glm::dvec3 EquirectEnvironment::Radiance(const glm::dvec3& d) const {
   return glm::mix(top, bottom, fy);
 }
 
-std::unique_ptr<EquirectEnvironment> EquirectFromFunction(const std::function<glm::dvec3(const glm::dvec3&)>& radiance,
-                                                         int width, int height) {
+ImageF EquirectImage(const std::function<glm::dvec3(const glm::dvec3&)>& radiance, int width, int height) {
   ImageF image(width, height);
   for (int row = 0; row < height; ++row) {
     const double theta = kPi * (row + 0.5) / height;
@@ -71,8 +70,14 @@ std::unique_ptr<EquirectEnvironment> EquirectFromFunction(const std::function<gl
       image.at(col, row) = glm::vec3(radiance(d));
     }
   }
-  return std::make_unique<EquirectEnvironment>(std::move(image), "equirect from a function " + std::to_string(width) +
-                                                                     "x" + std::to_string(height));
+  return image;
+}
+
+std::unique_ptr<EquirectEnvironment> EquirectFromFunction(const std::function<glm::dvec3(const glm::dvec3&)>& radiance,
+                                                         int width, int height) {
+  return std::make_unique<EquirectEnvironment>(EquirectImage(radiance, width, height),
+                                               "equirect from a function " + std::to_string(width) + "x" +
+                                                   std::to_string(height));
 }
 
 std::unique_ptr<Environment> LoadEquirect(const std::string& path) {

@@ -37,6 +37,10 @@ class EquirectEnvironment : public Environment {
   std::string description_;
 };
 
+/// The width x height equirect image (the layout above) whose texel centres hold
+/// `radiance(direction)`.
+ImageF EquirectImage(const std::function<glm::dvec3(const glm::dvec3&)>& radiance, int width, int height);
+
 /// A width x height equirect whose texel centres hold `radiance(direction)`.
 std::unique_ptr<EquirectEnvironment> EquirectFromFunction(const std::function<glm::dvec3(const glm::dvec3&)>& radiance,
                                                          int width, int height);

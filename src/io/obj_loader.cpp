@@ -71,21 +71,12 @@ class SlicedText : public std::streambuf {
   std::function<void(std::size_t)> advance_;
 };
 
-// tinyobjloader's multi-line messages as single lines.
-std::vector<std::string> Lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty()) out.push_back(line);
-  return out;
-}
-
 // tinyobjloader's warnings in prt's words. The scan has already refused what it reports about
 // indices and short faces; a missing library or material is said by WarnMissingMaterials; names
 // it could not find at their `usemtl` go to `not_found`; the rest passes on with the path.
 void TranslateWarnings(const std::string& path, const std::string& raw, std::set<std::string>& not_found,
                        std::vector<std::string>& warnings) {
-  for (const std::string& w : Lines(raw)) {
+  for (const std::string& w : TinyObjLines(raw)) {
     const std::string material = "material [ '";
     if (w.rfind(material, 0) == 0) {
       const std::size_t end = w.rfind("' ]");
@@ -135,7 +126,7 @@ LoadedMesh LoadObj(const std::string& path) {
     std::istream stream(&buffer);
     if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &raw_warnings, &raw_errors, &stream, &libraries,
                           /*triangulate=*/true, /*default_vcols_fallback=*/false)) {
-      const auto lines = Lines(raw_errors);
+      const auto lines = TinyObjLines(raw_errors);
       Fail(path, lines.empty() ? "cannot be parsed" : "tinyobjloader: " + lines.front(), "a Wavefront OBJ file");
     }
   }

@@ -29,15 +29,6 @@ std::string Join(const std::vector<std::string>& items, const char* last) {
   return out;
 }
 
-// tinyobjloader's multi-line text as single lines.
-std::vector<std::string> Lines(const std::string& text) {
-  std::vector<std::string> out;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty()) out.push_back(line);
-  return out;
-}
-
 }  // namespace
 
 MaterialLibraries::MaterialLibraries(const std::string& obj_path)
@@ -58,7 +49,7 @@ bool MaterialLibraries::operator()(const std::string& name, std::vector<tinyobj:
   std::istringstream stream(text.str());
   std::string remarks;
   tinyobj::LoadMtl(names, materials, &stream, &remarks, err);
-  for (const std::string& r : Lines(remarks)) remarks_.push_back(path.string() + ": " + r);
+  for (const std::string& r : TinyObjLines(remarks)) remarks_.push_back(path.string() + ": " + r);
   read_.push_back(name);
   return true;
 }
@@ -104,6 +95,14 @@ void WarnMissingMaterials(const std::string& path, const std::map<std::string, s
     warnings.push_back(path + ": material '" + name + "' is not defined" + where + "; " +
                        (faces == 1 ? "its 1 face uses " : "its " + std::to_string(faces) + " faces use ") + albedo);
   }
+}
+
+std::vector<std::string> TinyObjLines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    if (!line.empty()) out.push_back(line);
+  return out;
 }
 
 }  // namespace prt

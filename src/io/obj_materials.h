@@ -65,4 +65,7 @@ void WarnMissingMaterials(const std::string& path, const std::map<std::string, s
                           const std::vector<tinyobj::material_t>& materials, const MaterialLibraries& libraries,
                           const std::set<std::string>& used_before_definition, std::vector<std::string>& warnings);
 
+/// tinyobjloader's warnings and errors (several lines in one string) as non-empty single lines.
+std::vector<std::string> TinyObjLines(const std::string& text);
+
 }  // namespace prt

@@ -24,7 +24,8 @@ namespace prt {
 namespace {
 namespace fs = std::filesystem;
 
-std::string Q(const std::string& s) { return "'" + s + "'"; }
+/// A path as one shell word.
+std::string Q(const std::string& s) { return test::ShellQuote(s); }
 
 // The files hold 7 significant digits (transport_txt.h): a value and a mix of three of them
 // agree to a few units of the 7th digit.

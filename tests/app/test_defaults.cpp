@@ -18,7 +18,8 @@
 namespace prt {
 namespace {
 
-std::string Q(const std::string& s) { return "'" + s + "'"; }
+/// A path as one shell word.
+std::string Q(const std::string& s) { return test::ShellQuote(s); }
 
 /// The value printed after `--exposure ` in "(--exposure X repeats it)" on the summary.
 std::string PrintedExposure(const std::string& err) {

@@ -17,7 +17,8 @@ namespace prt {
 namespace {
 namespace fs = std::filesystem;
 
-std::string Q(const std::string& s) { return "'" + s + "'"; }
+/// A path as one shell word.
+std::string Q(const std::string& s) { return test::ShellQuote(s); }
 
 /// A mesh whose loading fails: any error about it means it was loaded before the options.
 std::string Unloadable() { return Q(test::Fixture("obj/no_faces.obj")); }

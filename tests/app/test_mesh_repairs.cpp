@@ -23,7 +23,8 @@
 namespace prt {
 namespace {
 
-std::string Q(const std::string& s) { return "'" + s + "'"; }
+/// A path as one shell word.
+std::string Q(const std::string& s) { return test::ShellQuote(s); }
 
 enum class Normals { kNone, kAsGiven, kNegated };
 

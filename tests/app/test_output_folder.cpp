@@ -25,7 +25,8 @@ namespace prt {
 namespace {
 namespace fs = std::filesystem;
 
-std::string Q(const std::string& s) { return "'" + s + "'"; }
+/// A path as one shell word.
+std::string Q(const std::string& s) { return test::ShellQuote(s); }
 
 std::string Quick(const std::string& out, int frames) {
   return "render --mesh " + Q(test::Fixture("obj/tetra_no_normals.obj")) +

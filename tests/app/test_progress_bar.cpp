@@ -18,7 +18,8 @@
 namespace prt {
 namespace {
 
-std::string Q(const std::string& s) { return "'" + s + "'"; }
+/// A path as one shell word.
+std::string Q(const std::string& s) { return test::ShellQuote(s); }
 
 /// What `prt arguments` writes to the terminal (stdout and stderr together, as `script` records
 /// them), run with PRT_PROGRESS_DELAY=0; empty when the binary is not known.
@@ -27,10 +28,7 @@ std::string OnTerminal(const std::string& arguments, const std::string& dir) {
   if (!binary || !*binary) return "";
   const std::string inner = "PRT_PROGRESS_DELAY=0 " + Q(binary) + " " + arguments;
   // `script -qec CMD FILE` runs CMD on a new pseudo-terminal and copies what it prints to FILE.
-  std::string quoted = "'";
-  for (const char c : inner) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  quoted += "'";
-  const std::string command = "script -qec " + quoted + " " + Q(dir + "/typescript") + " >/dev/null 2>&1 </dev/null";
+  const std::string command = "script -qec " + Q(inner) + " " + Q(dir + "/typescript") + " >/dev/null 2>&1 </dev/null";
   const int status = std::system(command.c_str());
   CHECK(WIFEXITED(status));
   CHECK(WEXITSTATUS(status) == 0);

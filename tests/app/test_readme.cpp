@@ -58,13 +58,6 @@ void LayOutCourseFramework(const std::string& data, const std::string& root) {
   }
 }
 
-/// `text` as one single-quoted shell word.
-std::string ShellQuote(const std::string& text) {
-  std::string out = "'";
-  for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
 }  // namespace
 
 TEST_SUITE("readme") {
@@ -92,7 +85,7 @@ TEST_SUITE("readme") {
         ++skipped;
         continue;
       }
-      const std::string script = "cd '" + clone + "' && GAMES202='" + clone + "/games202' bash -c " + ShellQuote(command) +
+      const std::string script = "cd '" + clone + "' && GAMES202='" + clone + "/games202' bash -c " + test::ShellQuote(command) +
                                  " >'" + clone + "/stdout' 2>'" + clone + "/stderr' </dev/null";
       const int status = std::system(script.c_str());
       std::ifstream err(clone + "/stderr");
