@@ -71,8 +71,8 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
   OutputFolder folder(*out);
   const CachePlan cache = PlanCache(cache_option, &folder);
 
-  const Mesh mesh = LoadSceneMesh(options);
-  const auto env = LoadSceneEnvironment(options);
+  const Mesh mesh = LoadSceneMesh(options, &folder);
+  const auto env = LoadSceneEnvironment(options, &folder);
   const ShRgb light = ComputeLight(*env, options);
   const Transport transport = ComputeSceneTransport(mesh, options, cache);
 

@@ -52,11 +52,11 @@ int RunReference(const std::vector<std::string>& tokens) {
   if (render.out.empty()) args.Fail("--out DIR is required");
   OutputFolder folder(render.out);
 
-  const Mesh mesh = LoadSceneMesh(scene);
+  const Mesh mesh = LoadSceneMesh(scene, &folder);
   std::string up_note;
   const Camera camera = ChooseCamera(mesh, render, &up_note);
   Summary("camera: " + CameraArgs(camera) + (up_note.empty() ? "" : " (" + up_note + ")"));
-  const auto env = LoadSceneEnvironment(scene);
+  const auto env = LoadSceneEnvironment(scene, &folder);
   ReferenceOptions ro;
   ro.mode = TransportModeFromName(scene.transport);
   ro.samples = samples;

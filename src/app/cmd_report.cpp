@@ -71,7 +71,7 @@ int RunReport(const std::vector<std::string>& tokens) {
     return failed ? 1 : 0;
   }
 
-  const auto env = LoadSceneEnvironment(scene);
+  const auto env = LoadSceneEnvironment(scene, &folder);
   Mesh mesh;
   std::string scene_name;
   if (scene.mesh.empty()) {
@@ -79,7 +79,7 @@ int RunReport(const std::vector<std::string>& tokens) {
     ApplySceneEdits(mesh, scene);
     scene_name = "report scene (torus knot 128x16 on a 24x24 plane)";
   } else {
-    mesh = LoadSceneMesh(scene);
+    mesh = LoadSceneMesh(scene, &folder);
     scene_name = scene.mesh;
   }
   ReportConfig config;

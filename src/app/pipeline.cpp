@@ -47,9 +47,11 @@ void WarnIfMostlyBlocked(const Mesh& mesh, const Transport& transport, Transport
 
 }  // namespace
 
-std::unique_ptr<Environment> LoadSceneEnvironment(const SceneOptions& options) {
+std::unique_ptr<Environment> LoadSceneEnvironment(const SceneOptions& options, OutputFolder* folder) {
   const auto t0 = std::chrono::steady_clock::now();
   auto env = LoadEnvironment(options.env, options.layout);
+  std::error_code ec;
+  if (folder && std::filesystem::exists(options.env, ec)) folder->KeepInput(options.env);  // not a built-in
   Summary("environment: " + env->Describe() + Format(" [%.3f s]", SecondsSince(t0)));
   return env;
 }
@@ -108,7 +110,7 @@ CachePlan PlanCache(const std::string& option, OutputFolder* folder) {
     Warn(what + "folder '" + dir.string() + "' is not writable: the cache is read if it matches, but not updated");
     return {path, false};
   }
-  return {given ? path : folder->Output("transport.cache"), true};
+  return {given ? path : folder->OutputInPlace("transport.cache"), true};
 }
 
 Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, const CachePlan& cache) {

@@ -25,8 +25,9 @@
 
 namespace prt {
 
-/// The environment named by the options, described on the run summary.
-std::unique_ptr<Environment> LoadSceneEnvironment(const SceneOptions& options);
+/// The environment named by the options, described on the run summary. With a `folder`, the
+/// file or cubemap folder read is recorded as an input of its run (OutputFolder::KeepInput).
+std::unique_ptr<Environment> LoadSceneEnvironment(const SceneOptions& options, OutputFolder* folder = nullptr);
 
 /// The environment's SH coefficients for bands 0..options.lmax, windowed as asked
 /// (`auto` picks the mildest window that keeps the reconstruction non-negative and says why).
@@ -34,8 +35,9 @@ ShRgb ComputeLight(const Environment& env, const SceneOptions& options);
 
 /// The mesh of `--mesh` (or the embedded demo scene): an inside-out mesh turned right way out
 /// where that is unambiguous (geometry/orientation.h), `--albedo` applied, triangles split by
-/// `--max-edge`; each repair and anything suspicious reported on the run summary.
-Mesh LoadSceneMesh(const SceneOptions& options);
+/// `--max-edge`; each repair and anything suspicious reported on the run summary. With a
+/// `folder`, the OBJ and material libraries read are recorded as inputs of its run.
+Mesh LoadSceneMesh(const SceneOptions& options, OutputFolder* folder = nullptr);
 
 /// What the scene options change in any mesh: `--albedo`, then the `--max-edge` split (refused
 /// with an Error before splitting when it would make an unreasonable number of triangles).

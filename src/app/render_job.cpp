@@ -34,12 +34,12 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render, OutputFol
   const CachePlan cache = PlanCache(render.cache, &folder);
 
   // Mesh and camera first: a camera that cannot see is refused before any light is loaded.
-  const Mesh mesh = LoadSceneMesh(scene);
+  const Mesh mesh = LoadSceneMesh(scene, &folder);
   std::string up_note;
   const Camera camera = ChooseCamera(mesh, render, &up_note);
   Summary("camera: " + CameraArgs(camera) + (up_note.empty() ? "" : " (" + up_note + ")"));
 
-  const auto env = LoadSceneEnvironment(scene);
+  const auto env = LoadSceneEnvironment(scene, &folder);
   const ShRgb light = ComputeLight(*env, scene);
   const Transport transport = ComputeSceneTransport(mesh, scene, cache);
   const AxisRotation rotation(render.axis, transport.lmax);

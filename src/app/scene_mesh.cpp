@@ -60,7 +60,7 @@ void SplitLongTriangles(Mesh& mesh, const SceneOptions& options) {
 
 }  // namespace
 
-Mesh LoadSceneMesh(const SceneOptions& options) {
+Mesh LoadSceneMesh(const SceneOptions& options, OutputFolder* folder) {
   const auto t0 = std::chrono::steady_clock::now();
   Mesh mesh;
   std::string what;
@@ -70,6 +70,8 @@ Mesh LoadSceneMesh(const SceneOptions& options) {
     what = "embedded demo scene (torus knot on a ground plane)";
   } else {
     LoadedMesh loaded = LoadObj(options.mesh);
+    if (folder)
+      for (const std::string& file : loaded.files_read) folder->KeepInput(file);
     for (const auto& w : loaded.report.warnings) Warn(w);
     what = options.mesh + LoadNotes(loaded.report);
     orientation = OrientMesh(loaded.mesh, loaded.normal_from_file);

@@ -58,13 +58,20 @@ OutputFolder::OutputFolder(std::string dir) : dir_(std::move(dir)) {
     for (std::string line; std::getline(list, line);)
       if (!line.empty() && line[0] != '#' && line.find('/') == std::string::npos) earlier_.insert(line);
   }
+  // A staging folder here is a killed run's (this run holds the lock): its files never counted.
+  fs::remove_all(staging(), ec);
+  if (!fs::create_directory(staging(), ec) && !fs::is_directory(staging()))
+    throw Error(dir_ + ": cannot use the output folder (" +
+                WriteProblem(staging() + "/x", ec.value() ? ec.value() : EIO) + ")");
 }
 
 OutputFolder::~OutputFolder() {
   if (lock_fd_ < 0) return;
+  std::error_code ec;
+  fs::remove_all(staging(), ec);  // a failed run's staged outputs, never moved into place
   if (!finished_) {
     std::set<std::string> all = earlier_;
-    all.insert(written_.begin(), written_.end());
+    all.insert(in_place_.begin(), in_place_.end());
     try {
       WriteList(all);
     } catch (const std::exception&) {
@@ -77,23 +84,63 @@ OutputFolder::~OutputFolder() {
   ::close(lock_fd_);
 }
 
+std::string OutputFolder::staging() const { return dir_ + "/" + kStagingName; }
+
 std::string OutputFolder::Output(const std::string& name) {
   std::lock_guard<std::mutex> lock(mutex_);
-  written_.insert(name);
+  staged_.insert(name);
+  return staging() + "/" + name;
+}
+
+std::string OutputFolder::OutputInPlace(const std::string& name) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  in_place_.insert(name);
   return dir_ + "/" + name;
 }
 
 bool OutputFolder::Wrote(const std::string& name) {
   std::lock_guard<std::mutex> lock(mutex_);
-  return written_.count(name) != 0;
+  return staged_.count(name) != 0 || in_place_.count(name) != 0;
+}
+
+namespace {
+
+// `path` absolute, symbolic links resolved as far as it exists, normalised.
+fs::path Resolved(const std::string& path) {
+  std::error_code ec;
+  const fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  return p.lexically_normal();
+}
+
+}  // namespace
+
+void OutputFolder::KeepInput(const std::string& path) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  inputs_.push_back(Resolved(path).string());
+}
+
+bool OutputFolder::IsInput(const std::string& name) const {
+  const std::string p = Resolved(dir_ + "/" + name).string();
+  for (const std::string& input : inputs_)
+    if (p == input || (p.size() > input.size() && p.compare(0, input.size(), input) == 0 && p[input.size()] == '/'))
+      return true;
+  return false;
 }
 
 std::vector<std::string> OutputFolder::Finish() {
   std::lock_guard<std::mutex> lock(mutex_);
+  // This run's outputs into place. Each one moved is listed from then on, even if a later one
+  // fails (the destructor writes the list).
+  std::error_code ec;
+  for (const auto& name : staged_) {
+    const std::string from = staging() + "/" + name, to = dir_ + "/" + name;
+    if (!fs::exists(fs::symlink_status(from, ec))) continue;  // named, then never written
+    if (std::rename(from.c_str(), to.c_str()) != 0) throw Error(to + ": cannot write (" + WriteProblem(to, errno) + ")");
+    in_place_.insert(name);
+  }
   std::vector<std::string> removed;
   for (const auto& name : earlier_) {
-    if (written_.count(name)) continue;
-    std::error_code ec;
+    if (in_place_.count(name) || IsInput(name)) continue;
     const fs::path p = fs::path(dir_) / name;
     if (fs::is_regular_file(fs::symlink_status(p, ec)) && fs::remove(p, ec)) removed.push_back(name);
   }
@@ -101,7 +148,6 @@ std::vector<std::string> OutputFolder::Finish() {
   // `.<name>.tmp<pid>_<n>`): removed once their process is gone. This run holds the folder, so
   // no live run of prt can be writing them here.
   static const std::regex temp_name("\\..+\\.tmp([0-9]{1,9})_[0-9]+");
-  std::error_code ec;
   for (const auto& entry : fs::directory_iterator(dir_, ec)) {
     std::smatch m;
     const std::string name = entry.path().filename().string();
@@ -110,7 +156,7 @@ std::vector<std::string> OutputFolder::Finish() {
     const bool gone = pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH;
     if (gone && fs::remove(entry.path(), ec)) removed.push_back(name);
   }
-  WriteList(written_);
+  WriteList(in_place_);
   finished_ = true;
   return removed;
 }

@@ -107,12 +107,30 @@ std::atomic<const BvhKernels*>& Active() {
 
 }  // namespace
 
+#ifdef PRT_HAS_WIDE_KERNELS
+// Whether this CPU runs code compiled for x86-64-v3 (`v4` false) or x86-64-v4 (`v4` true). GCC
+// names the levels; clang 14 (the fuzzing builds) does not, nor LZCNT, MOVBE or F16C, so there
+// the level is its other features: every CPU with AVX2, FMA and BMI1/2 has those three too.
+bool CpuRunsLevel(bool v4) {
+  __builtin_cpu_init();
+#ifdef __clang__
+  const bool v3 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi") &&
+                  __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("popcnt") &&
+                  __builtin_cpu_supports("sse4.2");
+  if (!v4) return v3;
+  return v3 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+         __builtin_cpu_supports("avx512cd") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl");
+#else
+  return v4 ? __builtin_cpu_supports("x86-64-v4") : __builtin_cpu_supports("x86-64-v3");
+#endif
+}
+#endif
+
 std::vector<Isa> SupportedIsas() {
   std::vector<Isa> isas;
 #ifdef PRT_HAS_WIDE_KERNELS
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("x86-64-v4")) isas.push_back(Isa::kAvx512);
-  if (__builtin_cpu_supports("x86-64-v3")) isas.push_back(Isa::kAvx2);
+  if (CpuRunsLevel(true)) isas.push_back(Isa::kAvx512);
+  if (CpuRunsLevel(false)) isas.push_back(Isa::kAvx2);
 #endif
   isas.push_back(Isa::kBaseline);
   return isas;

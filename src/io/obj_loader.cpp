@@ -134,6 +134,8 @@ LoadedMesh LoadObj(const std::string& path) {
   std::set<std::string> not_found;
   TranslateWarnings(path, raw_warnings, not_found, out.report.warnings);
   for (const std::string& r : libraries.remarks()) out.report.warnings.push_back(r);
+  out.files_read.push_back(path);
+  for (const std::string& library : libraries.read_paths()) out.files_read.push_back(library);
   WarnMissingMaterials(path, scan.faces_by_material, materials, libraries, not_found, out.report.warnings);
   const std::vector<glm::vec3> albedos = MaterialAlbedos(materials, path, out.report.warnings);
   auto albedo_of = [&](int id) {

@@ -42,6 +42,8 @@ struct LoadedMesh {
   /// One per vertex of `mesh`: 1 when its normal came from the file, 0 when it was computed
   /// because its corners had no normal or a zero-length one.
   std::vector<std::uint8_t> normal_from_file;
+  /// The files read: the OBJ, then the material libraries it named that could be read.
+  std::vector<std::string> files_read;
 };
 
 /// Corners without a file normal closer than this fraction of the bounding-box diagonal are one

@@ -51,6 +51,7 @@ bool MaterialLibraries::operator()(const std::string& name, std::vector<tinyobj:
   tinyobj::LoadMtl(names, materials, &stream, &remarks, err);
   for (const std::string& r : TinyObjLines(remarks)) remarks_.push_back(path.string() + ": " + r);
   read_.push_back(name);
+  read_paths_.push_back(path.string());
   return true;
 }
 

@@ -41,6 +41,8 @@ class MaterialLibraries : public tinyobj::MaterialReader {
 
   /// Names of the libraries read, as the OBJ wrote them, in order.
   const std::vector<std::string>& read() const { return read_; }
+  /// The same libraries' paths as they were opened (the OBJ's folder joined with the name).
+  const std::vector<std::string>& read_paths() const { return read_paths_; }
   /// One entry per library that could not be read: "x.mtl was not found", "... could not be read".
   const std::vector<std::string>& unread() const { return unread_; }
   /// tinyobjloader's remarks on the libraries' content, each prefixed with the library's path.
@@ -48,7 +50,7 @@ class MaterialLibraries : public tinyobj::MaterialReader {
 
  private:
   std::string folder_;
-  std::vector<std::string> read_, unread_, remarks_;
+  std::vector<std::string> read_, read_paths_, unread_, remarks_;
 };
 
 /// Albedo for each tinyobjloader material id: the Kd of the LAST definition of its name,

@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include "core/atomic_file.h"
+#include "core/output_folder.h"
 #include "core/error.h"
 #include "io/png_io.h"
 #include "tests/test_support.h"
@@ -59,7 +60,7 @@ std::map<std::string, std::string> FillWithMarkers(const std::string& dir, int n
 }  // namespace
 
 TEST_SUITE("app") {
-  TEST_CASE("no data lost: a render killed mid-run leaves only complete frames, old or new") {
+  TEST_CASE("no data lost: a render killed mid-run leaves every earlier frame as it was") {
     const char* binary = std::getenv("PRT_BINARY");
     if (!binary || !*binary) {
       MESSAGE("skipped: PRT_BINARY is not set (run the tests through ctest)");
@@ -70,8 +71,7 @@ TEST_SUITE("app") {
     const auto old = FillWithMarkers(dir, kMarkers);
 
     // Many small frames (four-digit names, like the markers): the run would take a while; it is
-    // killed once 20 frames are new.
-    const std::string out = dir;
+    // killed once 20 frames are written (into the staging folder, until the run succeeds).
     const std::string mesh = test::Fixture("obj/tetra_no_normals.obj");
     const pid_t pid = ::fork();
     REQUIRE(pid >= 0);
@@ -80,16 +80,17 @@ TEST_SUITE("app") {
       const int null = ::open("/dev/null", O_WRONLY);
       if (null >= 0) ::dup2(null, 2);
       ::execl(binary, binary, "render", "--mesh", mesh.c_str(), "--env", "furnace", "--transport", "unshadowed",
-              "--frames", "9999", "--size", "48x32", "--threads", "1", "--out", out.c_str(), "--quiet",
+              "--frames", "9999", "--size", "48x32", "--threads", "1", "--out", dir.c_str(), "--quiet",
               static_cast<char*>(nullptr));
       ::_exit(127);
     }
-    const std::string watched = dir + "/frame_0020.png";
+    const std::string staging = dir + "/" + OutputFolder::kStagingName;
+    const std::string watched = staging + "/frame_0020.png";
     bool started = false;
-    // Polls until frame 20 is new (or the child has exited, which fails below). The bound only
-    // keeps a broken build from hanging the suite; it is not a time limit on prt.
+    // Polls until frame 20 is staged (or the child has exited, which fails below). The bound
+    // only keeps a broken build from hanging the suite; it is not a time limit on prt.
     for (int tries = 0; tries < 60000 && !started; ++tries) {
-      started = Slurp(watched) != old.at("frame_0020.png");
+      started = fs::exists(watched);
       int status = 0;
       if (!started && ::waitpid(pid, &status, WNOHANG) == pid) break;
       if (!started) std::this_thread::sleep_for(std::chrono::milliseconds(1));
@@ -100,38 +101,44 @@ TEST_SUITE("app") {
     REQUIRE(started);
     CHECK(WIFSIGNALED(status));
 
-    int fresh = 0, kept = 0, temps = 0;
+    // The folder itself: every earlier frame intact, nothing new but prt's own files.
+    int kept = 0;
     for (const auto& entry : fs::directory_iterator(dir)) {
+      const std::string name = entry.path().filename().string();
+      if (name == "transport.cache" || name.rfind(".prt-", 0) == 0) continue;  // the cache; lock, staging
+      CAPTURE(name);
+      REQUIRE(old.count(name) == 1);
+      CHECK(Slurp(entry.path().string()) == old.at(name));
+      ++kept;
+    }
+    CHECK(kept == kMarkers);
+    // What the killed run staged is complete frames, and at most the one being written.
+    int staged = 0, temps = 0;
+    for (const auto& entry : fs::directory_iterator(staging)) {
       const std::string name = entry.path().filename().string();
       if (IsTemp(name)) {
         ++temps;
-        CHECK(name.find(".tmp" + std::to_string(pid) + "_") != std::string::npos);
         continue;
       }
-      if (name == "transport.cache" || name.rfind(".prt-", 0) == 0) continue;  // the cache, the folder's lock
       CAPTURE(name);
-      const std::string bytes = Slurp(entry.path().string());
       Image8 image;
-      CHECK_NOTHROW(image = DecodePng(bytes, name));  // complete, never truncated
-      if (old.count(name) && bytes == old.at(name)) ++kept;
-      else {
-        ++fresh;
-        CHECK(image.width == 48);
-        CHECK(image.height == 32);
-      }
+      CHECK_NOTHROW(image = DecodePng(Slurp(entry.path().string()), name));  // complete, never truncated
+      CHECK(image.width == 48);
+      ++staged;
     }
-    MESSAGE("after SIGKILL: " << fresh << " new frames, " << kept << " earlier frames intact, " << temps
-                              << " temporary file(s) left by the killed run");
-    CHECK(fresh >= 21);
-    CHECK(fresh + kept >= kMarkers);  // every earlier frame is there, replaced or intact
-    CHECK(temps <= 1);                // at most the frame being written at the kill
+    MESSAGE("after SIGKILL: " << kept << " earlier frames intact, " << staged << " frames and " << temps
+                              << " temporary file(s) in the killed run's staging folder");
+    CHECK(staged >= 21);
+    CHECK(temps <= 1);
 
-    // The killed run's lock blocks nothing, and the next successful run removes its temporary file.
+    // The killed run's lock blocks nothing, and the next successful run removes its staging folder.
     const auto later = test::RunPrt("render --mesh '" + mesh + "' --env furnace --transport unshadowed --frames 1 "
                                     "--size 8x8 --quiet --out '" + dir + "'");
     REQUIRE(later);
     CHECK(later->exit_code == 0);
+    CHECK_FALSE(fs::exists(staging));
     for (const auto& entry : fs::directory_iterator(dir)) CHECK_FALSE(IsTemp(entry.path().filename().string()));
+    CHECK(Slurp(dir + "/frame_0001.png") == old.at("frame_0001.png"));  // not prt's: never removed
   }
 
   TEST_CASE("no data lost: frames prt did not write are never removed; failed runs keep old outputs") {

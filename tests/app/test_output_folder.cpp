@@ -140,26 +140,89 @@ TEST_SUITE("app") {
     CHECK(Files(dir) == std::set<std::string>{".prt-outputs", "light.txt", "transport.txt", "transport.cache"});
   }
 
-  TEST_CASE("output folder: a failed run removes nothing; a later successful run cleans what it left") {
+  TEST_CASE("output folder: rendering from sample files into their own folder keeps them, run after run") {
+    const std::string dir = test::ScratchDir("folder_own_inputs");
+    const auto samples = test::RunPrt("sample-files --quiet --out '" + dir + "'");
+    if (!samples) return;
+    REQUIRE(samples->exit_code == 0);
+    const std::string run = "render --mesh '" + dir + "/scene.obj' --env '" + dir +
+                            "/sky.hdr' --samples 16 --frames 2 --size 32x24 --quiet --out '" + dir + "'";
+    for (int i = 0; i < 2; ++i) {
+      CAPTURE(i);
+      const auto r = test::RunPrt(run);
+      CAPTURE(r->err);
+      CHECK(r->exit_code == 0);
+      for (const char* input : {"scene.obj", "scene.mtl", "sky.hdr"}) CHECK(std::filesystem::exists(dir + "/" + input));
+    }
+    const auto cube = test::RunPrt("light --env '" + dir + "/sky_cubemap'");
+    CHECK(cube->exit_code == 0);
+  }
+
+  TEST_CASE("output folder: a failed run leaves the earlier outputs exactly; only its in-place files stay") {
     const std::string dir = test::ScratchDir("folder_failed");
     {
       OutputFolder folder(dir);
       WriteFileAtomic(folder.Output("a.txt"), "a");
       WriteFileAtomic(folder.Output("b.txt"), "b");
+      CHECK_FALSE(std::filesystem::exists(dir + "/a.txt"));  // staged until the run succeeds
       folder.Finish();
     }
+    CHECK(Files(dir) == std::set<std::string>{".prt-outputs", "a.txt", "b.txt"});
     {
       OutputFolder failing(dir);
+      WriteFileAtomic(failing.Output("a.txt"), "a, failed run");
       WriteFileAtomic(failing.Output("c.txt"), "c");
+      WriteFileAtomic(failing.OutputInPlace("cache"), "valid on its own");
       // no Finish(): the run failed
     }
-    CHECK(Files(dir) == std::set<std::string>{".prt-outputs", "a.txt", "b.txt", "c.txt"});
+    CHECK(Files(dir) == std::set<std::string>{".prt-outputs", "a.txt", "b.txt", "cache"});
+    CHECK(ReadFile(dir + "/a.txt") == "a");
     {
       OutputFolder folder(dir);
       WriteFileAtomic(folder.Output("a.txt"), "a2");
-      CHECK(folder.Finish() == std::vector<std::string>{"b.txt", "c.txt"});
+      CHECK(folder.Finish() == std::vector<std::string>{"b.txt", "cache"});
     }
     CHECK(Files(dir) == std::set<std::string>{".prt-outputs", "a.txt"});
+    CHECK(ReadFile(dir + "/a.txt") == "a2");
+  }
+
+  TEST_CASE("output folder: a run never removes what it reads, even files an earlier run wrote there") {
+    const std::string dir = test::ScratchDir("folder_inputs");
+    {
+      OutputFolder folder(dir);
+      WriteFileAtomic(folder.Output("scene.obj"), "v 0 0 0");
+      WriteFileAtomic(folder.Output("scene.mtl"), "newmtl a");
+      WriteFileAtomic(folder.Output("old.txt"), "x");
+      folder.Finish();
+    }
+    {
+      OutputFolder folder(dir);
+      folder.KeepInput(dir + "/scene.obj");
+      folder.KeepInput(dir + "/./scene.mtl");  // paths are compared normalised
+      WriteFileAtomic(folder.Output("frame.png"), "f");
+      CHECK(folder.Finish() == std::vector<std::string>{"old.txt"});
+    }
+    CHECK(Files(dir) == std::set<std::string>{".prt-outputs", "frame.png", "scene.mtl", "scene.obj"});
+    // No longer listed as prt's: a later run that does not read them leaves them alone too.
+    {
+      OutputFolder folder(dir);
+      WriteFileAtomic(folder.Output("frame.png"), "g");
+      CHECK(folder.Finish().empty());
+    }
+    CHECK(Files(dir).count("scene.obj") == 1);
+  }
+
+  TEST_CASE("output folder: a run that reads a folder inside the output folder keeps all of it") {
+    const std::string dir = test::ScratchDir("folder_input_folder");
+    {
+      OutputFolder folder(dir);
+      WriteFileAtomic(folder.Output("sky.hdr"), "h");
+      WriteFileAtomic(folder.Output("skyline.txt"), "not under sky.hdr");
+      folder.Finish();
+    }
+    OutputFolder folder(dir);
+    folder.KeepInput(dir + "/sky.hdr");
+    CHECK(folder.Finish() == std::vector<std::string>{"skyline.txt"});  // a shared prefix is not a folder
   }
 
   TEST_CASE("output folder: frame names keep frame order past 9999 frames") {
