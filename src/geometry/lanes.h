@@ -59,9 +59,17 @@ template <Isa isa>
 PRT_LANES std::uint32_t Bits(M8 m) {
 #if defined(__x86_64__)
   if constexpr (IsWide(isa)) {
+#if defined(__clang__)
+    // clang checks a builtin's instruction set in the function that names it, not in the
+    // kernel it is inlined into: the generic loop stands in (clang builds prt for fuzzing).
+    std::uint32_t b = 0;
+    for (int l = 0; l < kLanes; ++l) b |= (m[l] != 0 ? 1u : 0u) << l;
+    return b;
+#else
     V8 f;
     std::memcpy(&f, &m, sizeof f);
     return static_cast<std::uint32_t>(__builtin_ia32_movmskps256(f));
+#endif
   } else {
     __m128 lo, hi;  // movemask per half: one instruction each on the baseline
     std::memcpy(&lo, &m, sizeof lo);
