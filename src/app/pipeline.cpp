@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "core/error.h"
+#include "core/atomic_file.h"  // WriteProblem
 #include "core/log.h"
 #include "env/load_environment.h"
 #include "io/transport_cache.h"
@@ -106,8 +107,21 @@ CachePlan PlanCache(const std::string& option, OutputFolder* folder) {
   if (fs::is_directory(path, ec)) return skip("is a folder (expected a file name)");
   if (!fs::exists(dir, ec)) return skip("folder '" + dir.string() + "' does not exist");
   if (!fs::is_directory(dir, ec)) return skip("'" + dir.string() + "' is a file, not a folder");
+  // What is there already is replaced only when it is prt's: a cache (however damaged) at any
+  // path, anything at the output folder's own cache name; an empty file. Never a device, pipe
+  // or socket, never another file given as --cache (a typo must not cost the user a file).
+  const fs::file_status link = fs::symlink_status(path, ec);
+  if (fs::exists(link)) {
+    if (!fs::is_regular_file(fs::status(path, ec))) return skip("is not a regular file: left alone");
+    if (given && fs::file_size(path, ec) > 0 && !StartsLikeTransportCache(path))
+      return skip("exists and is not a prt transport cache: left as it is");
+    if (fs::is_symlink(link)) {
+      Warn(what + "is a symbolic link: the cache is read if it matches, but never replaced");
+      return {path, false};
+    }
+  }
   if (::access(dir.c_str(), W_OK) != 0) {
-    Warn(what + "folder '" + dir.string() + "' is not writable: the cache is read if it matches, but not updated");
+    Warn(what + WriteProblem(path, errno) + ": the cache is read if it matches, but not updated");
     return {path, false};
   }
   return {given ? path : folder->OutputInPlace("transport.cache"), true};

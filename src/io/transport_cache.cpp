@@ -58,6 +58,12 @@ void WriteTransportCache(const std::string& path, const Transport& t, std::uint6
   WriteFileAtomic(path, bytes);
 }
 
+bool StartsLikeTransportCache(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[sizeof kMagic];
+  return in.read(magic, sizeof magic) && std::memcmp(magic, kMagic, sizeof kMagic) == 0;
+}
+
 std::optional<Transport> ReadTransportCache(const std::string& path, std::uint64_t key, std::string& why) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) {

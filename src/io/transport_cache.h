@@ -27,6 +27,10 @@ std::uint64_t TransportKey(const Mesh& mesh, const TransportOptions& options);
 /// Writes `transport` with `key` to `path` atomically. Throws Error if it cannot.
 void WriteTransportCache(const std::string& path, const Transport& transport, std::uint64_t key);
 
+/// True if the file at `path` starts as every prt transport cache does (its 8-byte magic), however
+/// damaged the rest; false for other files and for paths that cannot be read.
+bool StartsLikeTransportCache(const std::string& path);
+
 /// Reads the cache at `path` if it is intact and was made with `key`; otherwise returns
 /// nothing and sets `why` to the reason ("no cache yet", "checksum mismatch", ...).
 std::optional<Transport> ReadTransportCache(const std::string& path, std::uint64_t key, std::string& why);

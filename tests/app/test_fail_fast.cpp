@@ -8,6 +8,8 @@
 #include <fstream>
 #include <string>
 
+#include <sys/stat.h>
+
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "io/png_io.h"
@@ -99,12 +101,30 @@ TEST_SUITE("app") {
     const auto under_file = test::RunPrt("render " + Quick(dir + "/c") + " --cache " + Q(dir + "/file/t.cache"));
     CHECK(under_file->exit_code == 0);
     CHECK(under_file->err.find("is a file, not a folder") != std::string::npos);
+    // What exists at an explicit --cache and is not a prt cache is never replaced: a file the
+    // user meant to keep, a pipe, a link (read if it is a matching cache, never replaced).
+    std::ofstream(dir + "/notes.txt") << "my notes";
+    const auto notes = test::RunPrt("render " + Quick(dir + "/e") + " --cache " + Q(dir + "/notes.txt"));
+    CHECK(notes->exit_code == 0);
+    CHECK(notes->err.find("notes.txt: exists and is not a prt transport cache: left as it is; going on without the "
+                          "cache") != std::string::npos);
+    CHECK(ReadFile(dir + "/notes.txt") == "my notes");
+    REQUIRE(::mkfifo((dir + "/pipe").c_str(), 0644) == 0);
+    const auto pipe = test::RunPrt("render " + Quick(dir + "/f") + " --cache " + Q(dir + "/pipe"));
+    CHECK(pipe->exit_code == 0);
+    CHECK(pipe->err.find("pipe: is not a regular file: left alone") != std::string::npos);
+    CHECK(fs::is_fifo(dir + "/pipe"));
     // A usable explicit cache is written and reused.
     const auto write = test::RunPrt("render " + Quick(dir + "/d") + " --cache " + Q(dir + "/t.cache"));
     CHECK(write->exit_code == 0);
     CHECK(fs::exists(dir + "/t.cache"));
     const auto reuse = test::RunPrt("render " + Quick(dir + "/d") + " --cache " + Q(dir + "/t.cache"));
     CHECK(reuse->err.find("taken from the cache") != std::string::npos);
+    fs::create_symlink(dir + "/t.cache", dir + "/link.cache");
+    const auto link = test::RunPrt("render " + Quick(dir + "/g") + " --cache " + Q(dir + "/link.cache"));
+    CHECK(link->err.find("is a symbolic link: the cache is read if it matches, but never replaced") != std::string::npos);
+    CHECK(link->err.find("taken from the cache") != std::string::npos);
+    CHECK(fs::is_symlink(dir + "/link.cache"));
   }
 
   TEST_CASE("fail fast: prt demo takes render's options (--cache none among them)") {
