@@ -1,5 +1,6 @@
 #include "app/scene_options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -8,6 +9,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/parallel.h"
+#include "env/cubemap.h"
 #include "env/load_environment.h"
 #include "sh/coeffs.h"
 
@@ -68,19 +70,35 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
   return s;
 }
 
-/// Refuses --mesh and --env values that name nothing, before any of them is loaded.
-void CheckInputsExist(const SceneOptions& o) {
+/// Refuses --mesh and --env values that name nothing or cannot be read, before any of them is
+/// loaded: the mesh file exists; a cubemap folder has its six faces, square and of one size (from
+/// their headers); a built-in's parameters parse. A path that does not exist is a failure (exit
+/// 1); a malformed built-in is a usage error (exit 2), an unknown one names the nearest.
+void CheckInputs(Args& args, const SceneOptions& o) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!o.mesh.empty()) {
     if (!fs::exists(o.mesh, ec)) throw Error(o.mesh + ": no such file (expected an OBJ mesh for --mesh)");
     if (fs::is_directory(o.mesh, ec)) throw Error(o.mesh + ": is a directory (expected an OBJ file for --mesh)");
   }
-  if (!fs::exists(o.env, ec)) {
-    const std::string name = o.env.substr(0, o.env.find(':'));
-    if (name != "furnace" && name != "sky")
+  if (fs::is_directory(o.env, ec)) {
+    CheckCubemapFolder(o.env);
+    return;
+  }
+  if (fs::exists(o.env, ec)) return;  // an image file: its header is read when it is loaded
+  const std::string name = o.env.substr(0, o.env.find(':'));
+  const auto& builtins = BuiltinEnvironmentNames();
+  if (std::find(builtins.begin(), builtins.end(), name) == builtins.end()) {
+    const std::string near = NearestName(name, builtins);
+    if (o.env.find_first_of("/.") != std::string::npos || near.empty())
       throw Error(o.env + ": no such file, folder or built-in environment (expected a cubemap folder, an "
                           "equirectangular .hdr/.exr/.png/.jpg file, or one of furnace, sky)");
+    args.Fail("--env: '" + o.env + "': no such file, folder or built-in environment (did you mean " + near + "?)");
+  }
+  try {
+    ParseBuiltinEnvironment(o.env);
+  } catch (const Error& e) {
+    args.Fail(std::string("--env: ") + e.what());
   }
 }
 
@@ -163,7 +181,7 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
   }
   SetQuiet(args.Flag("--quiet"));
   SetThreadCount(o.threads);
-  CheckInputsExist(o);
+  CheckInputs(args, o);
   if (o.lmax_auto) {
     // Measured on the environment itself (loaded here once more: the commands load it again).
     const AutoLmax choice = ChooseLmax(*LoadEnvironment(o.env, o.layout), o.tolerance, kMaxLmax);

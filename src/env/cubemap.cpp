@@ -103,10 +103,10 @@ std::string FindFace(const std::string& folder, const char* name) {
 
 }  // namespace
 
-std::unique_ptr<Environment> LoadCubemap(const std::string& folder, CubeLayout layout) {
+std::array<std::string, 6> CheckCubemapFolder(const std::string& folder, int* face_size) {
   std::array<std::string, 6> paths;
   for (int k = 0; k < 6; ++k) paths[k] = FindFace(folder, kFaceNames[k]);
-  // Check every size from the headers before decoding any pixels.
+  // Every size from the headers, before any pixel is decoded.
   int size = 0;
   for (int k = 0; k < 6; ++k) {
     int w = 0, h = 0;
@@ -123,6 +123,13 @@ std::unique_ptr<Environment> LoadCubemap(const std::string& folder, CubeLayout l
                   " but " + paths[0] + " is " + std::to_string(size) + "x" + std::to_string(size) +
                   " (expected six faces of one size)");
   }
+  if (face_size) *face_size = size;
+  return paths;
+}
+
+std::unique_ptr<Environment> LoadCubemap(const std::string& folder, CubeLayout layout) {
+  int size = 0;
+  const std::array<std::string, 6> paths = CheckCubemapFolder(folder, &size);
   const LdrDecode decode = layout == CubeLayout::kGames202 ? LdrDecode::kGamma22 : LdrDecode::kSrgb;
   std::array<ImageF, 6> faces;
   SanitizeCounts fixed;

@@ -48,6 +48,11 @@ std::array<ImageF, 6> CubemapFaceImages(const std::function<glm::dvec3(const glm
 std::unique_ptr<CubemapEnvironment> CubemapFromFunction(const std::function<glm::dvec3(const glm::dvec3&)>& radiance,
                                                        int size, CubeLayout layout = CubeLayout::kStandard);
 
+/// The six face files of a cubemap folder, in kFaceNames order, checked as far as their headers
+/// go: each face present once, square, of one size (stored in `face_size`), not oversized.
+/// Throws Error as LoadCubemap does; decodes no pixel.
+std::array<std::string, 6> CheckCubemapFolder(const std::string& folder, int* face_size = nullptr);
+
 /// Loads `folder/{posx,negx,posy,negy,posz,negz}.{jpg,png,hdr,exr}`. Throws Error naming the
 /// folder or face for a missing or ambiguous face, faces of different sizes, non-square or
 /// oversized faces (checked before decoding), or an unreadable image. LDR faces are decoded

@@ -223,7 +223,7 @@ TEST_SUITE("app") {
     ExpectFailure("light --lmax 65", 2, {"--lmax: '65'", "(see prt help light)"});
     ExpectFailure("light --frames 3", 2, {"--frames: unknown option"});
     ExpectFailure("no-such-command", 2, {"'no-such-command': unknown command"});
-    ExpectFailure("light --env sky:sun=-1", 1, {"sky:sun=-1: sun='-1' is out of range"});
+    ExpectFailure("light --env sky:sun=-1", 2, {"--env: sky:sun=-1: sun '-1' is out of range", "prt help light"});
     ExpectFailure("light --env no_such_environment", 1, {"no_such_environment: no such file, folder or built-in"});
   }
 

@@ -60,6 +60,18 @@ TEST_SUITE("app") {
     ExpectUsage(render + " --max-edge 0", "--max-edge: '0' is out of range");
     ExpectUsage(render + " --exposure bright", "--exposure: 'bright' is not a number");
     ExpectUsage("precompute --mesh " + Unloadable() + " --max-edge 2% --out " + Q(out), "--max-edge: not with precompute");
+    // Built-in environments: parameters checked as values, names with the nearest one.
+    ExpectUsage(render + " --env sky:sun=abc", "--env: sky:sun=abc: sun 'abc' is not a number");
+    ExpectUsage(render + " --env sky:sun=5e9", "--env: sky:sun=5e9: sun '5e9' is out of range");
+    ExpectUsage(render + " --env sky:sun", "--env: sky:sun: sun has no value");
+    ExpectUsage(render + " --env sky:sun=1,sun=2", "sun is given twice");
+    ExpectUsage(render + " --env furnace:0x10", "value '0x10' is not a number");
+    ExpectUsage(render + " --env skyy", "(did you mean sky?)");
+    // A cubemap folder is checked face by face (headers only) before the mesh is loaded.
+    const auto faces = test::RunPrt(render + " --env " + Q(test::Fixture("cubemaps/missing_face")));
+    CHECK(faces->exit_code == 1);
+    CHECK(faces->err.find("missing face") != std::string::npos);
+    CHECK(faces->err.find("no_faces.obj") == std::string::npos);
     ExpectUsage("reference --mesh " + Unloadable(), "--out DIR is required");
     // Input paths are checked before anything is loaded too.
     const auto missing = test::RunPrt("render --mesh /nonexistent/m.obj --out " + Q(out));
