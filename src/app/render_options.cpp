@@ -188,8 +188,20 @@ RenderOptions CompleteRenderOptions(Args& args, RenderOptions o, const SceneOpti
   if (o.view == "transport" && o.transport_index >= CoeffCount(scene.lmax))
     args.Fail("--view: transport:" + std::to_string(o.transport_index) + " is out of range (expected 0 to " +
               std::to_string(CoeffCount(scene.lmax) - 1) + " for lmax " + std::to_string(scene.lmax) + ")");
-  const bool camera_given = args.Has("--eye") || args.Has("--target") || args.Has("--up") || args.Has("--fov");
-  if (scene.mesh.empty() && !camera_given && !o.eye) o = WithDemoCamera(o);
+  if (scene.mesh.empty()) {
+    // The embedded scene: each camera value not given is the demo's (help promises them one by
+    // one), so --fov 50 alone widens the demo's view instead of refitting the camera.
+    const RenderOptions demo = WithDemoCamera(o);
+    if (!o.eye) o.eye = demo.eye;
+    if (!o.target) o.target = demo.target;
+    if (!o.fov) o.fov = demo.fov;
+    if (glm::length(*o.target - *o.eye) < 1e-12)
+      args.Fail(std::string(args.Has("--eye") ? "--eye" : "--target") +
+                ": equals the embedded scene's camera " + (args.Has("--eye") ? "target 0,1.5,0" : "eye 6,3.2,9") +
+                " (expected two different points)");
+    if (args.Has("--up") && glm::length(glm::cross(glm::normalize(*o.target - *o.eye), glm::normalize(*o.up))) < 1e-6)
+      args.Fail("--up: parallel to the view direction --target - --eye (expected a direction across it)");
+  }
   return o;
 }
 

@@ -157,6 +157,14 @@ TEST_SUITE("app") {
     CAPTURE(reference->err);
     CHECK(reference->exit_code == 0);
     CHECK(reference->err.find(demo_camera) != std::string::npos);
+    // Each value not given stays the demo's: one option changes one thing.
+    const auto fov = test::RunPrt("render --fov 50 --transport unshadowed --frames 1 --size 32x24 --out " + Q(dir + "/f"));
+    CHECK(fov->err.find("camera: --eye 6,3.2,9 --target 0,1.5,0 --up 0,1,0 --fov 50") != std::string::npos);
+    const auto eye = test::RunPrt("render --eye 0,3,9 --transport unshadowed --frames 1 --size 32x24 --out " + Q(dir + "/e"));
+    CHECK(eye->err.find("camera: --eye 0,3,9 --target 0,1.5,0 --up 0,1,0 --fov 36") != std::string::npos);
+    const auto same = test::RunPrt("render --eye 0,1.5,0 --out " + Q(dir + "/s"));
+    CHECK(same->exit_code == 2);
+    CHECK(same->err.find("--eye: equals the embedded scene's camera target 0,1.5,0") != std::string::npos);
   }
 
   TEST_CASE("defaults: the transport view is drawn on neutral grey, with a legend that grows with the image") {
