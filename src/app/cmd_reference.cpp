@@ -74,8 +74,7 @@ int RunReference(const std::vector<std::string>& tokens) {
                 ref.rms_radiance);
   Summary(line);
 
-  std::string text = "# prt reference: " + std::string(TransportModeName(ro.mode)) + ", " + env->Describe() + "\n" +
-                     std::to_string(mesh.vertex_count()) + "\n";
+  std::string text = std::to_string(mesh.vertex_count()) + "\n";
   for (const auto& c : ref.radiance) {
     char buf[96];
     std::snprintf(buf, sizeof buf, "%.9g %.9g %.9g\n", c.x, c.y, c.z);
