@@ -133,13 +133,17 @@ ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& 
   tone.exposure_ev = float(exposure_ev);
   if (o.view == "transport") tone = ToneMapOptions{};  // false colours pass through unchanged
   ToneMapped mapped = ToneMap(frame.image, tone);
-  if (o.view == "transport") {
-    double scale = 0.0;
-    for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
-      scale = std::max(scale, double(std::abs(transport.at(v, 0)[o.transport_index])));
-    DrawDivergingLegend(mapped.image, scale, "T" + std::to_string(o.transport_index));
-  }
+  if (o.view == "transport")
+    DrawDivergingLegend(mapped.image, TransportViewScale(transport, o.transport_index),
+                        "T" + std::to_string(o.transport_index));
   return mapped;
+}
+
+double TransportViewScale(const Transport& transport, int index) {
+  double scale = 0.0;
+  for (std::size_t v = 0; v < transport.vertices; ++v)
+    scale = std::max(scale, double(std::abs(transport.at(v, 0)[index])));
+  return scale;
 }
 
 double ResolveExposure(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,

@@ -31,6 +31,9 @@ struct FrameStats {
   double draw_seconds = 0, encode_seconds = 0;
 };
 
+/// The largest |T_index| over the vertices: the ends of the transport view's colour scale.
+double TransportViewScale(const Transport& transport, int index);
+
 /// The camera of the options: what they give, the rest from automatic framing of the mesh
 /// (raster/camera.h, fitted to its projected vertices), clip planes fitted to the mesh. When no
 /// --up was given and world up is parallel to the view, a perpendicular up is chosen and

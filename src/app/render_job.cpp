@@ -5,6 +5,7 @@
 
 #include "app/pipeline.h"
 #include "core/log.h"
+#include "raster/annotate.h"
 
 namespace prt {
 namespace {
@@ -46,6 +47,11 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render, OutputFol
   Summary("rotation: " + rotation.Describe() + "; only the " + std::to_string(CoeffCount(transport.lmax)) +
           " coefficients the transport has are turned");
 
+  if (render.view == "transport" &&
+      !LayoutDivergingLegend(render.width, render.height, TransportViewScale(transport, render.transport_index),
+                             "T" + std::to_string(render.transport_index)))
+    Summary("legend: left out, a " + std::to_string(render.width) + "x" + std::to_string(render.height) +
+            " frame is too small to hold it readably");
   const FrameStats stats = RenderFrames(mesh, transport, light, *env, camera, render, folder);
   if (!render.exposure && render.view != "transport")
     Summary(Format("exposure: auto -> %.1f EV, measured on frame 0's mesh pixels (--exposure %.1f repeats it)",

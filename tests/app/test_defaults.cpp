@@ -197,6 +197,9 @@ TEST_SUITE("app") {
     CAPTURE(legend_width[1]);
     CHECK(legend_width[0] >= 30);  // measured 53 and 126
     CHECK(legend_width[1] >= 2 * legend_width[0]);
+    // Too small to hold a readable legend: left out, and said.
+    const auto tiny = test::RunPrt("render --view transport:0 --samples 16 --frames 1 --size 48x32 --out " + Q(dir + "/tiny"));
+    CHECK(tiny->err.find("legend: left out, a 48x32 frame is too small") != std::string::npos);
   }
 
   TEST_CASE("defaults: the SH pole is said to be world +Z where students read the basis") {
