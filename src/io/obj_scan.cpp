@@ -93,10 +93,10 @@ class Pass {
         if (args && key == kKeyword[kind]) ++count_[kind];
     } else if (key == "v" && args) {
       ++count_[kPosition];
-      if (!Coordinates(k, e)) Skip(s, e);
+      Coordinates(k, e, "vertex");
     } else if (key == "vn" && args) {
       ++count_[kNormal];
-      if (!Coordinates(k, e)) Skip(s, e);
+      Coordinates(k, e, "normal");
     } else if (key == "vt" && args) {
       ++count_[kTexcoord];
     } else if (key == "f" && args) {
@@ -148,25 +148,25 @@ class Pass {
     }
   }
 
-  // The numbers of a v or vn line, up to a comment: false when fewer than three or one is not
-  // a number; throws for a non-finite one.
-  bool Coordinates(const char* s, const char* e) {
-    int numbers = 0;
-    bool all = true;
-    while (true) {
+  // The three coordinates of a v or vn line: each must be a finite number (the parser would read
+  // a word as 0 and put the vertex somewhere else), else an error. What follows them (a v line's
+  // w or vertex colour, anything else) is ignored, as the parser ignores it.
+  void Coordinates(const char* s, const char* e, const char* element) {
+    for (int numbers = 0; numbers < 3; ++numbers) {
       while (s < e && IsBlank(*s)) ++s;
-      if (s == e || *s == '#') break;
+      if (s == e || *s == '#')
+        Fail(std::string(element) + " has " + std::to_string(numbers) + " coordinate" + (numbers == 1 ? "" : "s"),
+             "three numbers x y z");
       const char* t = s;
       while (t < e && !IsBlank(*t)) ++t;
       const std::string_view token(s, static_cast<std::size_t>(t - s));
       const Number n = Classify(token);
       if (n == Number::kNotFinite)
         Fail("coordinate '" + QuoteLine(token) + "' is not finite", "finite numbers, below 3.4e38 in magnitude");
-      all &= n == Number::kFinite;
-      ++numbers;
+      if (n == Number::kNotNumber)
+        Fail(std::string(element) + " coordinate '" + QuoteLine(token) + "' is not a number", "three numbers x y z");
       s = t;
     }
-    return all && numbers >= 3;
   }
 
   // The corners of an f, l or p line.

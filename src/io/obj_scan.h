@@ -7,10 +7,10 @@
 /// of tinyobjloader's parse of it.
 ///
 /// What it checks, line by line (statements as in the OBJ specification [2]):
-///  - `v` and `vn`: every number must be finite as a float (an error otherwise). A line whose
-///    numbers do not all parse (fewer than three, or a word where a number belongs) is counted
-///    as not understood; it still holds its place in the numbering, as tinyobjloader reads each
-///    unreadable number as 0.
+///  - `v` and `vn`: three coordinates, each a number finite as a float; an error otherwise
+///    (fewer than three, a word where a number belongs: tinyobjloader would read it as 0 and
+///    put the vertex elsewhere without a word). What follows the three (a `w`, vertex colours,
+///    other text) is ignored, as tinyobjloader ignores it.
 ///  - `f`, `l`, `p`: each corner is `v`, `v/vt`, `v//vn` or `v/vt/vn` with whole numbers, and
 ///    each index exists: 0 is never valid; a positive i needs at least i `v` (`vt`, `vn`) lines
 ///    in the file; a negative i counts back from the line, so needs at least |i| before it.

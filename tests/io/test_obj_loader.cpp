@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "geometry/mesh_ops.h"
 #include "io/obj_loader.h"
@@ -129,16 +130,37 @@ TEST_SUITE("io") {
     CHECK(m.mesh.triangle_count() == 1);
   }
 
+  TEST_CASE("obj: a vertex or normal without three numbers is an error naming its line") {
+    const std::string dir = test::ScratchDir("obj_coordinates");
+    const struct {
+      const char* text;
+      const char* says;
+    } cases[] = {
+        {"v 0 0 0\nv abc 1 2\nv 0 1 0\nf 1 2 3\n", "line 2: vertex coordinate 'abc' is not a number (three numbers x y z)"},
+        {"v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n", "line 2: vertex has 2 coordinates (three numbers x y z)"},
+        {"v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 # up\nf 1//1 2//1 3//1\n", "line 4: normal has 2 coordinates"},
+        {"v 0 0 0\nv 1 0x1 0\nv 0 1 0\nf 1 2 3\n", "vertex coordinate '0x1' is not a number"},
+    };
+    for (const auto& c : cases) {
+      CAPTURE(c.text);
+      WriteFileAtomic(dir + "/m.obj", c.text);
+      CHECK_THROWS_WITH_AS(LoadObj(dir + "/m.obj"), doctest::Contains(c.says), Error);
+    }
+  }
+
   TEST_CASE("obj: lines that are not OBJ are counted, the first quoted with its line number") {
     const LoadedMesh m = LoadObj(test::Fixture("obj/garbage_lines.obj"));
-    // Comments, blank lines and g, s, cstype are OBJ; `hello world`, `bogus ...` and the `v` line
-    // with a word for a number are not.
+    // Comments, blank lines and g, s, cstype are OBJ; `hello world`, `bogus ...` and an `mtllib`
+    // without a file are not. Text after a vertex's coordinates is no reason to count it.
     CHECK(m.report.skipped_lines == 3);
     CHECK(m.report.first_skipped_line == 5);
     CHECK(m.report.first_skipped_text == "hello world");
     CHECK(DescribeSkippedLines(m.report) == "3 lines not understood, skipped (first: line 5: 'hello world')");
-    // The unreadable `v` line still is vertex 4 (the second face uses it): numbering unchanged.
+    // The `v` line with text after its coordinates is vertex 4, at (2, 0, 0): the second face.
     CHECK(m.mesh.triangle_count() == 2);
+    bool found = false;
+    for (const auto& p : m.mesh.positions) found |= p == glm::vec3(2.0f, 0.0f, 0.0f);
+    CHECK(found);
     CHECK(m.report.warnings.empty());  // counted for the run summary, not warned line by line
     // Windows line ends: same line numbers, and the \r is no part of the quoted text.
     const LoadedMesh crlf = LoadObj(test::Fixture("obj/crlf_garbage.obj"));
