@@ -1,6 +1,7 @@
 // LoadSceneMesh (pipeline.h): the mesh of --mesh or the embedded scene, repaired and reported.
 #include <chrono>
 #include <cstdio>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
@@ -45,11 +46,17 @@ void SplitLongTriangles(Mesh& mesh, const SceneOptions& options) {
   const Bounds3 box = MeshBounds(mesh);
   const double diagonal = glm::length(box.hi - box.lo);
   const float max_edge = static_cast<float>(MaxEdgeLength(options, diagonal));
+  if (!(max_edge > MinimumMaxEdge(mesh)))
+    throw Error("--max-edge: " + ShortestFloat(max_edge) + " is finer than float coordinates resolve on this mesh " +
+                "(expected more than " + ShortestFloat(static_cast<float>(MinimumMaxEdge(mesh))) + ")");
   const std::size_t estimate = EstimateSplitTriangles(mesh, max_edge);
-  if (estimate > kMaxSplitTriangles)
-    throw Error("--max-edge: " + ShortestFloat(max_edge) + " would split the mesh into about " +
-                std::to_string(estimate) + " triangles (expected at most " + std::to_string(kMaxSplitTriangles) +
-                ": choose a longer edge)");
+  if (estimate > kMaxSplitTriangles) {
+    char count[64];
+    if (estimate == std::numeric_limits<std::size_t>::max()) std::snprintf(count, sizeof count, "more than 1e19");
+    else std::snprintf(count, sizeof count, "about %.2g", double(estimate));
+    throw Error("--max-edge: " + ShortestFloat(max_edge) + " would split the mesh into " + count +
+                " triangles (expected at most " + std::to_string(kMaxSplitTriangles) + ": choose a longer edge)");
+  }
   const auto t0 = std::chrono::steady_clock::now();
   const SplitReport r = SplitLongEdges(mesh, max_edge);
   char line[200];

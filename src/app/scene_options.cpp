@@ -173,8 +173,8 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
       const std::string number = relative ? text->substr(0, text->size() - 1) : *text;
       const auto v = ParseNumber(number);
       if (!v || !(*v > 0.0) || (relative && *v > 100.0))
-        args.Fail("--max-edge: " + NumberProblem(*text, false, "a length > 0, or a percentage of the bounding-box "
-                                                                 "diagonal such as 2%, at most 100%"));
+        args.Fail("--max-edge: '" + *text + "' " + (v ? "is out of range" : "is not a number") +
+                  " (expected a length > 0, or a percentage of the bounding-box diagonal such as 2%, at most 100%)");
       o.max_edge = relative ? *v / 100.0 : *v;
       o.max_edge_relative = relative;
     }

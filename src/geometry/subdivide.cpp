@@ -38,11 +38,15 @@ struct Limits {
   bool resolvable = false;  // done_sq > 2 e^2 / 3, the bound's fixed point, so it converges
 };
 
-Limits MakeLimits(const Mesh& mesh, float max_edge) {
+double RoundingMargin(const Mesh& mesh) {
   double scale = 0.0;
   for (const glm::vec3& p : mesh.positions)
     scale = std::max(scale, static_cast<double>(std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z)))));
-  const double e = max_edge, m = kMarginOfScale * scale;
+  return kMarginOfScale * scale;
+}
+
+Limits MakeLimits(const Mesh& mesh, float max_edge) {
+  const double e = max_edge, m = RoundingMargin(mesh);
   Limits limits;
   limits.long_sq = e * e;
   limits.done_sq = e > m ? (e - m) * (e - m) : 0.0;
@@ -100,6 +104,8 @@ class Midpoints {
 };
 
 }  // namespace
+
+double MinimumMaxEdge(const Mesh& mesh) { return RoundingMargin(mesh) / (1.0 - std::sqrt(2.0 / 3.0)); }
 
 std::size_t EstimateSplitTriangles(const Mesh& mesh, float max_edge) {
   constexpr std::size_t kMax = std::numeric_limits<std::size_t>::max();

@@ -49,6 +49,11 @@
 
 namespace prt {
 
+/// The smallest max_edge that SplitLongEdges resolves on `mesh`: the rounding margin (2^-20 of
+/// the largest coordinate) m must leave (e - m)^2 above the bound's fixed point 2 e^2 / 3, so
+/// e > m / (1 - sqrt(2/3)), about 5.45 m.
+double MinimumMaxEdge(const Mesh& mesh);
+
 /// Upper bound on the triangle count after SplitLongEdges(mesh, max_edge), computed without
 /// splitting so that a request too fine for memory can be refused before any work. Per
 /// triangle: exact while all three of its edges are long (each pass then makes four half-size

@@ -58,6 +58,8 @@ TEST_SUITE("app") {
     ExpectUsage(render + " --size 10x0", "--size: '10x0' is not a size");
     ExpectUsage(render + " --samples lots", "--samples: 'lots' is not a number");
     ExpectUsage(render + " --max-edge 0", "--max-edge: '0' is out of range");
+    ExpectUsage(render + " --max-edge 200%", "--max-edge: '200%' is out of range");
+    ExpectUsage(render + " --max-edge 2x%", "--max-edge: '2x%' is not a number");
     ExpectUsage(render + " --exposure bright", "--exposure: 'bright' is not a number");
     ExpectUsage("precompute --mesh " + Unloadable() + " --max-edge 2% --out " + Q(out), "--max-edge: not with precompute");
     // Built-in environments: parameters checked as values, names with the nearest one.
@@ -81,6 +83,15 @@ TEST_SUITE("app") {
     CHECK(env->exit_code == 1);
     CHECK(env->err.find("/nonexistent/sky.hdr: no such file") != std::string::npos);
     CHECK_FALSE(fs::exists(out));  // nothing was created for a refused run
+    // A split too fine for the mesh is known once the mesh is loaded; the count is legible.
+    const auto fine = test::RunPrt("render --mesh " + Q(test::Fixture("obj/tetra_no_normals.obj")) +
+                                   " --max-edge 0.001% --out " + Q(out));
+    CHECK(fine->exit_code == 1);
+    CHECK(fine->err.find("would split the mesh into about ") != std::string::npos);
+    CHECK(fine->err.find("18446744073709551615") == std::string::npos);
+    const auto finer = test::RunPrt("render --max-edge 0.0000001% --out " + Q(out));
+    CHECK(finer->err.find("is finer than float coordinates resolve on this mesh (expected more than ") !=
+          std::string::npos);
   }
 
   TEST_CASE("fail fast: a camera looking along world up gets a perpendicular up, printed") {

@@ -182,6 +182,17 @@ TEST_SUITE("geometry") {
     // Finer than float positions resolve: refused by both.
     CHECK(EstimateSplitTriangles(a, 1e-30f) == std::numeric_limits<std::size_t>::max());
     CHECK_THROWS_AS(SplitLongEdges(a, 1e-30f), Error);
+    // MinimumMaxEdge is that limit: refused just below it, resolvable just above (a triangle
+    // is enough to ask; the estimate says whether a split would run).
+    Mesh one;
+    one.positions = {{0, 0, 0}, {1e-4f, 0, 0}, {0, 1e-4f, 0}, {1, 1, 1}};  // largest coordinate 1
+    one.normals.assign(4, glm::vec3(0, 0, 1));
+    one.albedo.assign(4, glm::vec3(0.5f));
+    one.triangles = {{0, 1, 2}};
+    const double limit = MinimumMaxEdge(one);
+    CHECK(limit == doctest::Approx(std::ldexp(1.0, -20) / (1.0 - std::sqrt(2.0 / 3.0))));
+    CHECK(EstimateSplitTriangles(one, static_cast<float>(0.99 * limit)) == std::numeric_limits<std::size_t>::max());
+    CHECK(EstimateSplitTriangles(one, static_cast<float>(1.01 * limit)) < std::numeric_limits<std::size_t>::max());
   }
 
   TEST_CASE("subdivide: zero-area triangles terminate") {
