@@ -26,8 +26,11 @@ void CreateFolder(const std::string& dir) {
   if (!existing.empty() && !fs::is_directory(existing, ec))
     throw Error(dir + ": cannot create the folder ('" + existing.string() + "' is a file, expected a folder)");
   fs::create_directories(dir, ec);
+  // The folder that refused is the deepest one that exists: name it, not the one to be made.
   if (ec || !fs::is_directory(dir))
-    throw Error(dir + ": cannot create the folder (" + WriteProblem(dir + "/x", ec.value() ? ec.value() : EIO) + ")");
+    throw Error(dir + ": cannot create the folder (" +
+                WriteProblem((existing.empty() ? fs::path(".") : existing).string() + "/x", ec.value() ? ec.value() : EIO) +
+                ")");
 }
 
 void CreateParentFolder(const std::string& path) {

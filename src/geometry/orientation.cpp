@@ -197,6 +197,7 @@ OrientationReport OrientMesh(Mesh& mesh, const std::vector<std::uint8_t>& normal
   // Decide per part, and gather what is left alone for the warning.
   report.closed = !parts.empty();
   std::size_t flipped_parts = 0, open_triangles = 0, mixed_triangles = 0, tangled_triangles = 0, holed_parts = 0;
+  std::size_t undecided_triangles = 0;  // open parts shaded by their winding alone
   double open_file = 0.0, open_against = 0.0, mixed_file = 0.0, mixed_against = 0.0;
   for (Part& part : parts) {
     report.signed_volume += part.volume;
@@ -223,6 +224,8 @@ OrientationReport OrientMesh(Mesh& mesh, const std::vector<std::uint8_t>& normal
         mixed_triangles += part.triangles, mixed_file += part.file_area, mixed_against += against;
     } else if (part.file_against > kMostArea * part.file_area) {
       open_triangles += part.triangles, open_file += part.file_area, open_against += part.file_against;
+    } else if (part.file_area == 0.0 && part.has_edges) {
+      undecided_triangles += part.triangles;
     }
   }
 
@@ -275,6 +278,13 @@ OrientationReport OrientMesh(Mesh& mesh, const std::vector<std::uint8_t>& normal
     warning.push_back("the file's normals point into closed parts on " + Percent(mixed_against / mixed_file) +
                       " of their area (" + std::to_string(mixed_triangles) +
                       " triangles), too little to negate them all: re-export with outward normals");
+  // An open part has no inside to measure, but one exporter wound the whole file: when its closed
+  // parts were inside out, its open ones (a floor) probably are too.
+  if (flipped_parts > 0 && undecided_triangles > 0)
+    warning.push_back(std::to_string(undecided_triangles) +
+                      " triangles of open parts without normals were left as wound, since an open surface has no "
+                      "inside; the closed parts of this file were inside out, so these may be too: if they render "
+                      "dark, reverse their winding in the modelling tool");
   if (tangled_triangles > 0)
     warning.push_back(std::to_string(tangled_triangles) +
                       " triangles form closed surfaces wound inconsistently (neighbours disagree), so their "

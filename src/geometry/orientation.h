@@ -19,7 +19,9 @@
 /// may disagree among themselves and an open surface (a floor quad) has no inside at all.
 ///
 /// The test runs per connected part (triangles linked through shared positions), so a scene of
-/// a closed statue on an open floor has its statue repaired and its floor left alone.
+/// a closed statue on an open floor has its statue repaired and its floor left alone; when
+/// closed parts were repaired, open parts shaded by their winding alone are warned about (one
+/// exporter usually winds a whole file the same way).
 ///
 /// Normals are judged against the winding area by area: a face's corner normals (summed) point
 /// against the winding when their dot product with the face's normal (p1 - p0) x (p2 - p0) is

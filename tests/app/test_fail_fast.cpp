@@ -11,6 +11,7 @@
 #include <sys/stat.h>
 
 #include "core/atomic_file.h"
+#include "core/output_folder.h"
 #include "core/error.h"
 #include "io/png_io.h"
 #include "tests/test_support.h"
@@ -196,6 +197,10 @@ TEST_SUITE("app") {
     } catch (const Error& e) {
       CHECK(std::string(e.what()) == dir + "/missing/f.txt: cannot write (folder '" + dir + "/missing' does not exist)");
     }
+    // A folder that cannot be made names the deepest existing folder, the one that refused
+    // (/proc takes no new entries, even from root).
+    CHECK_THROWS_WITH_AS(CreateFolder("/proc/prt-test/sub"),
+                         "/proc/prt-test/sub: cannot create the folder (folder '/proc' does not accept new files)", Error);
     // ENOENT is also what a folder that takes no new files answers (/proc): the folder exists.
     CHECK(WriteProblem(dir + "/f.txt", ENOENT) == "folder '" + dir + "' does not accept new files");
     std::ofstream(dir + "/plain") << "x";
