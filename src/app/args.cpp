@@ -11,7 +11,8 @@
 namespace prt {
 
 std::optional<double> ParseNumber(const std::string& text) {
-  if (text.empty()) return std::nullopt;
+  // Decimal notation only: strtod would also take hexadecimal (0x10), leading blanks, inf, nan.
+  if (text.empty() || text.find_first_not_of("0123456789+-.eE") != std::string::npos) return std::nullopt;
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
   if (end != text.c_str() + text.size() || !std::isfinite(v)) return std::nullopt;
@@ -45,6 +46,12 @@ Args::Args(std::string command, const std::vector<std::string>& tokens, CommandS
     : command_(std::move(command)), spec_(std::move(spec)) {
   for (std::size_t i = 0; i < tokens.size(); ++i) {
     const std::string& t = tokens[i];
+    // `-q`, `-frames`: an option with one dash too few (a lone `-` or a negative number is not).
+    if (t.size() >= 2 && t[0] == '-' && t[1] != '-' && !ParseNumber(t)) {
+      const std::string near = NearestName("-" + t, spec_.Names());
+      Fail("'" + t + "': unknown option (options start with --" + (near.empty() ? "" : "; did you mean " + near + "?") +
+           ")");
+    }
     if (t.size() < 3 || t.compare(0, 2, "--") != 0) {
       positionals_.push_back(t);
       continue;

@@ -79,7 +79,8 @@ class Args {
   bool positionals_taken_ = false;
 };
 
-/// Parses a finite number, or returns nullopt.
+/// Parses a finite number in decimal notation (an exponent is fine: 1e6), or returns nullopt
+/// (hexadecimal, blanks, inf and nan are not numbers here).
 std::optional<double> ParseNumber(const std::string& text);
 
 /// "'<text>' is not a number", "... is not an integer" or "... is out of range", followed by

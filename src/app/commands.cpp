@@ -33,7 +33,9 @@ std::vector<std::string> CommandNames() {
 }
 
 std::string UnknownCommandMessage(const std::string& name) {
-  const std::string near = NearestName(name, CommandNames());
+  std::vector<std::string> names = CommandNames();
+  names.insert(names.end(), {"--version", "--help"});
+  const std::string near = NearestName(name, names);
   return "'" + name + "': unknown command (" +
          (near.empty() ? std::string("expected one that prt help lists") : "did you mean " + near + "?") + ")";
 }

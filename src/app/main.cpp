@@ -20,6 +20,11 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (all[0] == "--version" || all[0] == "version") {
+    if (all.size() > 1) {
+      std::fprintf(stderr, "prt: error: '%s': unexpected argument (prt --version takes none) (see prt help)\n",
+                   all[1].c_str());
+      return 2;
+    }
     std::printf("prt %s\n", PRT_VERSION);
     return 0;
   }
@@ -37,8 +42,8 @@ int main(int argc, char** argv) {
   try {
     return command->run(tokens);
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "prt: error: %s (see prt help %s)\n", e.what(),
-                 e.command().empty() ? name.c_str() : e.command().c_str());
+    const std::string about = e.command().empty() ? name : e.command();
+    std::fprintf(stderr, "prt: error: %s (see prt help%s)\n", e.what(), about == "help" ? "" : (" " + about).c_str());
     return 2;
   } catch (const Error& e) {
     std::fprintf(stderr, "prt: error: %s\n", e.what());

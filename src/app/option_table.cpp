@@ -1,6 +1,7 @@
 #include "app/option_table.h"
 
 #include <algorithm>
+#include <cctype>
 #include <sstream>
 
 namespace prt {
@@ -32,19 +33,23 @@ void Wrap(std::string& out, const std::string& text, std::size_t indent, bool fi
   out += "\n";
 }
 
+// Edit distance with adjacent transpositions counted as one edit (optimal string alignment,
+// Damerau 1964): `lihgt` is one typo away from `light`, not two.
 std::size_t EditDistance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i)
     for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
     }
-  }
-  return row[b.size()];
+  return d[a.size()][b.size()];
+}
+
+std::string Lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
 }
 
 }  // namespace
@@ -102,7 +107,7 @@ std::string NearestName(const std::string& given, const std::vector<std::string>
   std::string best;
   std::size_t best_distance = static_cast<std::size_t>(-1);
   for (const auto& c : candidates) {
-    std::size_t d = EditDistance(given, c);
+    std::size_t d = EditDistance(Lower(given), Lower(c));  // ACES is aces in the wrong case
     // A prefix of a longer name (`--sample` for `--samples`) is a likely abbreviation.
     if (given.size() >= 4 && c.compare(0, given.size(), given) == 0) d = std::min<std::size_t>(d, 1);
     if (d < best_distance) best_distance = d, best = c;

@@ -43,7 +43,8 @@ struct CommandSpec {
 /// 100 columns.
 std::string FormatHelp(const CommandSpec& spec);
 
-/// The entry of `candidates` nearest to `given` by edit distance (Levenshtein; `given` being a
+/// The entry of `candidates` nearest to `given` by edit distance (ignoring case, an adjacent
+/// transposition counting as one edit; `given` being a
 /// prefix of a candidate, 4 characters or more, counts as distance 1), or "" when none is near
 /// enough to be a likely typo: distance at most 1 for names of up to 4 characters, else at most
 /// a third of the length, and never more than 3.

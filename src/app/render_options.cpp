@@ -67,12 +67,13 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
 void ReadSize(Args& args, RenderOptions& o) {
   const auto size = args.String("--size");
   if (!size) return;
-  int w = 0, h = 0;
-  char x = 0, extra = 0;
-  std::istringstream ss(*size);
-  if (!(ss >> w >> x >> h) || x != 'x' || (ss >> extra) || w < 1 || h < 1 || w > 16384 || h > 16384)
+  const auto x = size->find('x');
+  const auto w = ParseNumber(size->substr(0, x)), h = x == std::string::npos ? std::nullopt : ParseNumber(size->substr(x + 1));
+  if (!w || !h || std::floor(*w) != *w || std::floor(*h) != *h)
     args.Fail("--size: '" + *size + "' is not a size (expected WxH, each from 1 to 16384)");
-  o.width = w, o.height = h;
+  if (*w < 1 || *h < 1 || *w > 16384 || *h > 16384)
+    args.Fail("--size: '" + *size + "' is out of range (expected WxH, each from 1 to 16384)");
+  o.width = static_cast<int>(*w), o.height = static_cast<int>(*h);
 }
 
 void ReadBackground(Args& args, RenderOptions& o, const RenderOptions& d) {
@@ -99,7 +100,7 @@ void ReadView(Args& args, RenderOptions& o, const RenderOptions& d) {
     char* end = nullptr;
     const long index = std::strtol(k.c_str(), &end, 10);
     if (k.empty() || *end != '\0' || index < 0 || index >= CoeffCount(kMaxLmax))
-      args.Fail("--view: '" + view + "' (expected transport:K with K a coefficient index from 0)");
+      args.Fail("--view: '" + view + "' is not a coefficient index (expected transport:K with K an integer from 0)");
     o.view = "transport", o.transport_index = static_cast<int>(index);
   } else if (view == "radiance" || view == "irradiance" || view == "albedo" || view == "light") {
     o.view = view;
@@ -115,7 +116,7 @@ void ReadCamera(Args& args, RenderOptions& o) {
   if (auto v = args.Vec3("--eye")) o.eye = v;
   if (auto v = args.Vec3("--target")) o.target = v;
   if (auto v = args.Vec3("--up")) {
-    if (glm::length(*v) < 1e-12) args.Fail("--up: is zero (expected a direction, such as 0,1,0)");
+    if (glm::length(*v) < 1e-12) args.Fail("--up: '" + *args.String("--up") + "' is zero (expected a direction, such as 0,1,0)");
     o.up = v;
   }
   if (args.Has("--fov")) o.fov = args.Double("--fov", 35.0, 1e-3, 179.0);
@@ -159,7 +160,8 @@ RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
   if (has("--out")) o.out = args.String("--out", d.out);
   if (has("--axis")) {
     if (const auto axis = args.Vec3("--axis")) {
-      if (glm::length(*axis) < 1e-12) args.Fail("--axis: is zero (expected a direction, such as 0,1,0)");
+      if (glm::length(*axis) < 1e-12)
+        args.Fail("--axis: '" + *args.String("--axis") + "' is zero (expected a direction, such as 0,1,0)");
       o.axis = *axis;
     }
   }
@@ -171,8 +173,14 @@ RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
   }
   if (has("--exposure")) {
     const auto text = args.String("--exposure");
-    if (text && *text == "auto") o.exposure.reset();
-    else if (text) o.exposure = args.Double("--exposure", 0.0, -20.0, 20.0);  // reads the same value
+    if (text && *text == "auto") {
+      o.exposure.reset();
+    } else if (text) {
+      const auto v = ParseNumber(*text);
+      if (!v || *v < -20.0 || *v > 20.0)
+        args.Fail("--exposure: " + NumberProblem(*text, false, "a number from -20 to 20, or auto"));
+      o.exposure = *v;
+    }
   }
   if (has("--ssaa")) o.ssaa = args.Int("--ssaa", d.ssaa, 1, 8);
   if (static_cast<long long>(o.width) * o.ssaa > kMaxTargetSide || static_cast<long long>(o.height) * o.ssaa > kMaxTargetSide)

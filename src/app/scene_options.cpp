@@ -152,7 +152,8 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
   if (has("--albedo")) {
     if (auto albedo = args.Vec3("--albedo")) {
       for (int c = 0; c < 3; ++c)
-        if ((*albedo)[c] < 0.0 || (*albedo)[c] > 1.0) args.Fail("--albedo: each channel must be in [0, 1]");
+        if ((*albedo)[c] < 0.0 || (*albedo)[c] > 1.0)
+          args.Fail("--albedo: '" + *args.String("--albedo") + "' is out of range (expected R,G,B, each from 0 to 1)");
       o.albedo = albedo;
     }
   }

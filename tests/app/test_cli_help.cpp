@@ -79,6 +79,8 @@ TEST_SUITE("app") {
     CHECK(NearestName("--smaples", {"--samples", "--seed"}) == "--samples");
     CHECK(NearestName("rendr", {"render", "demo", "diff"}) == "render");
     CHECK(NearestName("--zzzzzz", {"--samples", "--seed"}).empty());  // nothing close: no guess
+    CHECK(NearestName("lihgt", {"light", "bvh"}) == "light");          // a transposition is one typo
+    CHECK(NearestName("ACES", {"srgb", "reinhard", "aces"}) == "aces");  // case does not count
     try {
       Args("render", {"--sampels", "64"}, RenderSpec());
       FAIL("no error");
@@ -98,7 +100,15 @@ TEST_SUITE("app") {
     CHECK(command->err == "prt: error: 'rendr': unknown command (did you mean render?) (see prt help)\n");
     const auto help_typo = test::RunPrt("help rendr");
     CHECK(help_typo->exit_code == 2);
-    CHECK(help_typo->err.find("did you mean render?") != std::string::npos);
+    CHECK(help_typo->err == "prt: error: 'rendr': unknown command (did you mean render?) (see prt help)\n");
+    CHECK(test::RunPrt("--versoin")->err.find("did you mean --version?") != std::string::npos);
+    const auto version_extra = test::RunPrt("--version extra");
+    CHECK(version_extra->exit_code == 2);
+    CHECK(version_extra->out.empty());
+    CHECK(test::RunPrt("bench lihgt")->err.find("did you mean light?") != std::string::npos);
+    const auto dash = test::RunPrt("diff a.png b.png -q");
+    CHECK(dash->exit_code == 2);
+    CHECK(dash->err.find("'-q': unknown option (options start with --)") != std::string::npos);
     const auto value = test::RunPrt("render --transport shadowd");
     CHECK(value->exit_code == 2);
     CHECK(value->err.find("did you mean shadowed?") != std::string::npos);

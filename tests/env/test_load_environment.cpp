@@ -108,9 +108,12 @@ TEST_SUITE("env") {
 
   TEST_CASE("unknown names and bad sky parameters are errors, not crashes") {
     CHECK(ErrorOf("no_such_place").find("no such file, folder or built-in") != std::string::npos);
-    CHECK(ErrorOf("sky:sun=-1").find("sun='-1' is out of range") != std::string::npos);
+    CHECK(ErrorOf("sky:sun=-1").find("sun '-1' is out of range") != std::string::npos);
     CHECK(ErrorOf("sky:moon=1").find("unknown sky parameter 'moon'") != std::string::npos);
-    CHECK(ErrorOf("furnace:abc").find("out of range") != std::string::npos);
+    CHECK(ErrorOf("furnace:abc").find("value 'abc' is not a number") != std::string::npos);
+    CHECK(ErrorOf("sky:sun").find("sun has no value") != std::string::npos);
+    CHECK(ErrorOf("sky:sun=1,sun=2").find("sun is given twice") != std::string::npos);
+    CHECK(ErrorOf("furnace:0x10").find("is not a number") != std::string::npos);
   }
 
   TEST_CASE("EXR: DWAB and ZIP files load; NaN, Inf and negative texels are sanitised to zero") {
