@@ -3,6 +3,7 @@
 // maps a plain Error to exit code 1, which for diff means "the images differ".
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <limits>
 
 #include "app/commands.h"
@@ -15,7 +16,8 @@ namespace prt {
 
 CommandSpec DiffSpec() {
   return {"prt diff A.png B.png [--max-abs N] [--mean-abs X] [--min-psnr P] [--out DIFF.png]",
-          "Compares two PNG images of the same size channel by channel (0..255) and prints one line on stdout:\n"
+          "Compares two PNG images of the same size channel by channel (R, G and B, 0..255; grey images count as "
+          "R = G = B, an alpha channel is not compared: prt's frames have none) and prints one line on stdout:\n"
           "max_abs=<0..255> mean_abs=<x> rmse=<x> psnr=<dB or inf> differing_pixels=<n>\n\n"
           "Exits like cmp: 0 within the limits, 1 outside them (stderr then says which limit failed), 2 on an error "
           "(missing or unreadable file, not a PNG, size mismatch, bad option). Without any limit option the images "
@@ -67,6 +69,10 @@ int Diff(const std::vector<std::string>& tokens) {
   if (out && (out->size() < 5 || out->compare(out->size() - 4, 4, ".png") != 0))
     args.Fail("--out: '" + *out + "' does not end in .png (expected a PNG file name: prt writes PNG only)");
 
+  for (const std::string& file : files) {
+    std::error_code ec;
+    if (!std::filesystem::exists(file, ec)) throw Error(file + ": no such file (expected a PNG image to compare)");
+  }
   const Image8 a = ReadPng(files[0]);
   const Image8 b = ReadPng(files[1]);
   if (a.width != b.width || a.height != b.height)

@@ -68,6 +68,11 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
   if (options.max_edge > 0.0)
     args.Fail("--max-edge: not with precompute (the course's transport.txt has three rows per face of the OBJ "
               "file, and split triangles are other faces; render and reference take it)");
+  if (options.lmax != kCourseLmax)  // known from the options: said before any work
+    Warn("lmax " + std::to_string(options.lmax) + ": these files will have " +
+         std::to_string(CoeffCount(options.lmax)) +
+         " numbers per row, but the course's WebGL viewer reads exactly 9 (lmax 2) and draws garbage, without an "
+         "error, from any other count");
   OutputFolder folder(*out);
   const CachePlan cache = PlanCache(cache_option, &folder);
 
@@ -77,23 +82,21 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
   const Transport transport = ComputeSceneTransport(mesh, options, cache);
 
   WriteFileAtomic(folder.Output("light.txt"), FormatLightTxt(light));
+  std::string wrote;
   if (transport.channels == 1) {
     WriteFileAtomic(folder.Output("transport.txt"), FormatTransportTxt(mesh, transport, 0));
-    Summary("wrote " + *out + "/light.txt and " + *out + "/transport.txt");
+    wrote = "wrote " + *out + "/light.txt and " + *out + "/transport.txt";
   } else {
     const char* names[3] = {"r", "g", "b"};
     for (int c = 0; c < 3; ++c)
       WriteFileAtomic(folder.Output(std::string("transport_") + names[c] + ".txt"), FormatTransportTxt(mesh, transport, c));
     WriteFileAtomic(folder.Output("transport.txt"), FormatTransportTxt(mesh, LuminanceMix(transport), 0));
-    Summary("wrote " + *out + "/light.txt, transport_r.txt, transport_g.txt, transport_b.txt (coloured "
+    wrote = "wrote " + *out + "/light.txt, transport_r.txt, transport_g.txt, transport_b.txt (coloured "
             "interreflection: the exact transport of each channel) and transport.txt (their luminance-weighted "
-            "mix 0.2126 R + 0.7152 G + 0.0722 B, for the course's viewer, which reads one vector per row)");
+            "mix 0.2126 R + 0.7152 G + 0.0722 B, for the course's viewer, which reads one vector per row)";
   }
-  if (options.lmax != kCourseLmax)
-    Warn("lmax " + std::to_string(options.lmax) + ": these files have " + std::to_string(CoeffCount(options.lmax)) +
-         " numbers per row, but the course's WebGL viewer reads exactly 9 (lmax 2) and draws garbage, without an "
-         "error, from any other count");
-  FinishOutputs(folder);
+  FinishOutputs(folder);  // the files are in place from here on
+  Summary(wrote);
   return 0;
 }
 

@@ -11,6 +11,7 @@
 #include "core/log.h"
 #include "io/png_io.h"
 #include "precompute/reference.h"
+#include "raster/exposure.h"
 
 namespace prt {
 namespace {
@@ -86,10 +87,10 @@ int RunReference(const std::vector<std::string>& tokens) {
   if (!render.exposure) {
     std::snprintf(line, sizeof line, "exposure: auto -> %.1f EV, measured on this picture (--exposure %.1f repeats it)",
                   exposure, exposure);
-    Summary(line);
+    Summary(line + AutoExposureLimitNote(exposure));
   }
-  Summary("wrote " + render.out + "/reference.txt and " + render.out + "/reference.png");
   FinishOutputs(folder);
+  Summary("wrote " + render.out + "/reference.txt and " + render.out + "/reference.png");
   return 0;
 }
 

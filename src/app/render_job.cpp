@@ -6,6 +6,7 @@
 #include "app/pipeline.h"
 #include "core/log.h"
 #include "raster/annotate.h"
+#include "raster/exposure.h"
 
 namespace prt {
 namespace {
@@ -55,7 +56,8 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render, OutputFol
   const FrameStats stats = RenderFrames(mesh, transport, light, *env, camera, render, folder);
   if (!render.exposure && render.view != "transport")
     Summary(Format("exposure: auto -> %.1f EV, measured on frame 0's mesh pixels (--exposure %.1f repeats it)",
-                   stats.exposure, stats.exposure));
+                   stats.exposure, stats.exposure) +
+            AutoExposureLimitNote(stats.exposure));
   Summary("frames: " + std::to_string(stats.frames) + " of " + std::to_string(render.width) + "x" +
           std::to_string(render.height) + " in " + folder.dir() + "/" +
           Format(" [draw %.3f s, waiting for PNG encoding %.3f s]", stats.draw_seconds, stats.encode_seconds));

@@ -29,9 +29,13 @@ std::string TimeLeft(double fraction, double elapsed_s) {
 std::chrono::duration<double> ProgressDelay() {
   static const double seconds = [] {
     const char* text = std::getenv("PRT_PROGRESS_DELAY");
+    if (!text) return kProgressDelaySeconds;
     char* end = nullptr;
-    const double v = text ? std::strtod(text, &end) : kProgressDelaySeconds;
-    return text && end != text && *end == '\0' && v >= 0.0 && v <= 3600.0 ? v : kProgressDelaySeconds;
+    const double v = std::strtod(text, &end);
+    if (end != text && *end == '\0' && v >= 0.0 && v <= 3600.0) return v;
+    Warn(std::string("PRT_PROGRESS_DELAY='") + text + "' is not a number of seconds from 0 to 3600; waiting " +
+         std::to_string(static_cast<int>(kProgressDelaySeconds)) + " s before showing progress");
+    return kProgressDelaySeconds;
   }();
   return std::chrono::duration<double>(seconds);
 }

@@ -25,8 +25,9 @@ inline constexpr double kTimeLeftFraction = 0.03;
 inline constexpr double kProgressDelaySeconds = 1.0;
 
 /// The delay in use: the environment variable PRT_PROGRESS_DELAY (seconds, 0..3600) when set
-/// to such a number, else kProgressDelaySeconds. Read once. (Tests set 0 to see bars of
-/// short work on a pseudo-terminal.)
+/// to such a number, else kProgressDelaySeconds (with a warning when it is set to anything
+/// else). Read once, when a bar is first drawn. (Tests set 0 to see bars of short work on a
+/// pseudo-terminal.)
 std::chrono::duration<double> ProgressDelay();
 
 /// "12 s left", "3 min 20 s left", "2 h 5 min left" for `fraction` of the work done in

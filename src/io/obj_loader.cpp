@@ -24,7 +24,7 @@ namespace prt {
 namespace {
 
 [[noreturn]] void Fail(const std::string& path, const std::string& problem, const std::string& expected) {
-  throw Error(path + ": " + problem + " (" + expected + ")");
+  throw Error(path + ": " + problem + " (expected " + expected + ")");
 }
 
 // The progress bar's share of each stage, per byte of the file, from a 100 MB, 1M-triangle OBJ
@@ -89,7 +89,7 @@ void TranslateWarnings(const std::string& path, const std::string& raw, std::set
     if (w.find("Empty group name") != std::string::npos) continue;              // `g` alone: legal
     if (w.find("out of bounds") != std::string::npos || w.find("Degenerated face") != std::string::npos ||
         w.find("invalid vertex index") != std::string::npos)
-      Fail(path, "tinyobjloader: " + w, "indices the scan accepts; please report this file");
+      Fail(path, "tinyobjloader: " + w, "the indices the scan accepted; please report this file");
     if (w == ".") continue;  // the tail of tinyobjloader's "Degenerated face found\n."
     warnings.push_back(path + ": " + w);
   }

@@ -68,4 +68,10 @@ double AutoExposureEv(const RasterImage& frame, ToneCurve curve) {
   return std::round(ev * steps) / steps + 0.0;
 }
 
+std::string AutoExposureLimitNote(double ev) {
+  if (ev <= -kMaxAutoEv) return "; the limit: the scene is brighter than -20 EV can show, expect white";
+  if (ev >= kMaxAutoEv) return "; the limit: the scene is darker than +20 EV can show, expect black";
+  return "";
+}
+
 }  // namespace prt

@@ -37,6 +37,8 @@
 ///  [2] E. Reinhard, M. Stark, P. Shirley, J. Ferwerda, "Photographic Tone Reproduction for
 ///      Digital Images", SIGGRAPH 2002, section 3.1.
 
+#include <string>
+
 #include "raster/rasterizer.h"
 #include "raster/tonemap.h"
 
@@ -51,6 +53,10 @@ constexpr double kHighlightPercentile = 0.99;
 constexpr double kHighlightDisplay = 0.95;
 /// Automatic exposures are clamped to [-kMaxAutoEv, kMaxAutoEv].
 constexpr double kMaxAutoEv = 20.0;
+
+/// For the run summary: empty for an EV inside the range, else a note that `ev` is the clamped
+/// limit and the picture will be too bright or too dark.
+std::string AutoExposureLimitNote(double ev);
 /// Automatic exposures are multiples of this step (one printed decimal).
 constexpr double kAutoEvStep = 0.1;
 

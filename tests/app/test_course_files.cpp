@@ -141,8 +141,10 @@ TEST_SUITE("app") {
     if (!three) return;
     CAPTURE(three->err);
     CHECK(three->exit_code == 0);
-    CHECK(three->err.find("prt: warning: lmax 3: these files have 16 numbers per row, but the course's WebGL viewer "
-                          "reads exactly 9") != std::string::npos);
+    const std::size_t warning = three->err.find("prt: warning: lmax 3: these files will have 16 numbers per row, but "
+                                                "the course's WebGL viewer reads exactly 9");
+    CHECK(warning != std::string::npos);
+    CHECK(warning < three->err.find("mesh: "));  // said before any work
     CHECK(ReadLikeTheViewer(dir + "/transport.txt", 16).size() == 12);
     const auto two = test::RunPrt(base + " --lmax 2");
     CHECK(two->exit_code == 0);

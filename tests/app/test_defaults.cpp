@@ -104,6 +104,12 @@ TEST_SUITE("app") {
     const auto plain = test::RunPrt(scene + " --out " + Q(dir + "/plain"));
     REQUIRE(plain->exit_code == 0);
     CHECK(ClippedShare(ReadPng(dir + "/plain/frame_0000.png")) == 0.0);
+    // A light far beyond what the automatic exposure's range covers: said, not silently white.
+    const auto blinding = test::RunPrt("render --env furnace:1e12 --transport unshadowed --frames 1 --size 32x24 --out " +
+                                       Q(dir + "/blinding"));
+    CHECK(blinding->err.find("auto -> -20.0 EV") != std::string::npos);
+    CHECK(blinding->err.find("the limit: the scene is brighter than -20 EV can show") != std::string::npos);
+    CHECK(plain->err.find("the limit") == std::string::npos);
     // Measured: srgb at exposure 0 clips 23 % of this frame (nearly all of the mesh).
     const auto old = test::RunPrt(scene + " --tonemap srgb --exposure 0 --ssaa 1 --out " + Q(dir + "/old"));
     REQUIRE(old->exit_code == 0);

@@ -22,11 +22,11 @@ namespace {
 std::string Q(const std::string& s) { return test::ShellQuote(s); }
 
 /// What `prt arguments` writes to the terminal (stdout and stderr together, as `script` records
-/// them), run with PRT_PROGRESS_DELAY=0; empty when the binary is not known.
-std::string OnTerminal(const std::string& arguments, const std::string& dir) {
+/// them), run with PRT_PROGRESS_DELAY=`delay`; empty when the binary is not known.
+std::string OnTerminal(const std::string& arguments, const std::string& dir, const std::string& delay = "0") {
   const char* binary = std::getenv("PRT_BINARY");
   if (!binary || !*binary) return "";
-  const std::string inner = "PRT_PROGRESS_DELAY=0 " + Q(binary) + " " + arguments;
+  const std::string inner = "PRT_PROGRESS_DELAY=" + Q(delay) + " " + Q(binary) + " " + arguments;
   // `script -qec CMD FILE` runs CMD on a new pseudo-terminal and copies what it prints to FILE.
   const std::string command = "script -qec " + Q(inner) + " " + Q(dir + "/typescript") + " >/dev/null 2>&1 </dev/null";
   const int status = std::system(command.c_str());
@@ -77,6 +77,12 @@ TEST_SUITE("app") {
                                         dir);
     CAPTURE(load);
     CHECK(load.find("loading grid.obj [") != std::string::npos);
+
+    // A value that is not a delay is said (the bar then waits the usual second).
+    const std::string bad = OnTerminal("render --transport unshadowed --frames 2 --size 32x24 --cache none --out " +
+                                           Q(dir + "/bad"),
+                                       dir, "abc");
+    CHECK(bad.find("PRT_PROGRESS_DELAY='abc' is not a number of seconds from 0 to 3600") != std::string::npos);
 
     const std::string quiet = OnTerminal(
         "render --transport unshadowed --frames 20 --size 64x48 --cache none --quiet --out " + Q(dir + "/quiet"), dir);
