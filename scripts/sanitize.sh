@@ -24,7 +24,7 @@ run_asan() {
   echo "== AddressSanitizer + UndefinedBehaviorSanitizer: prt_tests $*"
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1 \
   UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  PRT_BINARY="$PWD/build-asan/prt" build-asan/prt_tests --no-intro=true "$@"
+  build-asan/prt_tests --no-intro=true "$@"
 }
 
 run_tsan() {
@@ -33,7 +33,7 @@ run_tsan() {
   [ $# -eq 0 ] && filter=(--test-suite=core,precompute,app)
   echo "== ThreadSanitizer: prt_tests ${filter[*]} $*"
   TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
-  PRT_BINARY="$PWD/build-tsan/prt" build-tsan/prt_tests --no-intro=true "${filter[@]}" "$@"
+  build-tsan/prt_tests --no-intro=true "${filter[@]}" "$@"
 }
 
 case "$what" in

@@ -44,12 +44,18 @@ std::string ShellQuote(const std::string& text) {
   return out + "'";
 }
 
-std::optional<RunResult> RunPrt(const std::string& arguments) {
+doctest::skip NeedsSharedData() { return doctest::skip(!SharedData().has_value()); }
+
+std::string PrtBinary() {
   const char* binary = std::getenv("PRT_BINARY");
-  if (!binary || !*binary) return std::nullopt;
+  return binary && *binary ? binary : PRT_BINARY_PATH;
+}
+
+RunResult RunPrt(const std::string& arguments) { return RunCommand(ShellQuote(PrtBinary()) + " " + arguments); }
+
+RunResult RunCommand(const std::string& command) {
   const std::string dir = ScratchDir("run");
-  const std::string cmd = std::string("'") + binary + "' " + arguments + " >'" + dir +
-                          "/out' 2>'" + dir + "/err' </dev/null";
+  const std::string cmd = command + " >'" + dir + "/out' 2>'" + dir + "/err' </dev/null";
   const int status = std::system(cmd.c_str());
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);

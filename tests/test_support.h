@@ -3,6 +3,8 @@
 /// Helpers shared by the tests: where the shared course data is, scratch folders, and running the
 /// `prt` binary the way a user does.
 
+#include <doctest/doctest.h>
+
 #include <optional>
 #include <string>
 
@@ -13,9 +15,17 @@ std::string SourceDir();
 /// A fixture path: SourceDir()/tests/data/<relative>.
 std::string Fixture(const std::string& relative);
 
-/// `../shared/data` beside the project if it exists. Tests that need it skip with a message
-/// when it is absent (a user's fresh clone does not have it).
+/// `../shared/data` beside the project if it exists (a user's fresh clone does not have it).
 std::optional<std::string> SharedData();
+
+/// The decorator of a test case that needs `../shared/data`: `TEST_CASE("..." *
+/// test::NeedsSharedData())` is skipped, and counted as skipped by the runner, when it is absent.
+/// Inside such a test, SharedData() has a value.
+doctest::skip NeedsSharedData();
+
+/// The `prt` binary the command-line tests run: $PRT_BINARY if set, else the one built beside
+/// the tests (its path is compiled in, so the tests need no runner to find it).
+std::string PrtBinary();
 
 /// An empty scratch folder for one test, under the build folder's test-tmp/.
 std::string ScratchDir(const std::string& name);
@@ -28,17 +38,10 @@ struct RunResult {
 /// `text` as one single-quoted shell word (a quote inside it included).
 std::string ShellQuote(const std::string& text);
 
-/// Runs the `prt` binary (path from the PRT_BINARY environment variable, set by CTest) with a
-/// shell-quoted argument string. Returns nullopt if the binary is not known.
-std::optional<RunResult> RunPrt(const std::string& arguments);
+/// Runs a shell command line, capturing its stdout and stderr.
+RunResult RunCommand(const std::string& command);
+
+/// Runs PrtBinary() with a shell-quoted argument string.
+RunResult RunPrt(const std::string& arguments);
 
 }  // namespace prt::test
-
-/// Skips the rest of a test case with a message when `../shared/data` is absent.
-#define PRT_SHARED_DATA_OR_SKIP(var)                                      \
-  const auto var##_opt = ::prt::test::SharedData();                       \
-  if (!var##_opt) {                                                       \
-    MESSAGE("skipped: ../shared/data is absent (course data not present)"); \
-    return;                                                               \
-  }                                                                       \
-  const std::string var = *var##_opt

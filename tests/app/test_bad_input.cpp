@@ -5,6 +5,7 @@
 // texels, relative indices, 100-gons) succeed.
 #include <doctest/doctest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -33,28 +34,23 @@ std::vector<std::string> ErrorLines(const std::string& err) {
 /// every string of `parts`. Usage errors (exit 2) must point to `prt help COMMAND`.
 void ExpectFailure(const std::string& arguments, int exit_code, const std::vector<std::string>& parts) {
   const auto r = test::RunPrt(arguments);
-  if (!r) {
-    MESSAGE("skipped: PRT_BINARY is not set (run the tests through ctest)");
-    return;
-  }
   CAPTURE(arguments);
-  CAPTURE(r->err);
-  CHECK(r->exit_code == exit_code);
-  const auto lines = ErrorLines(r->err);
+  CAPTURE(r.err);
+  CHECK(r.exit_code == exit_code);
+  const auto lines = ErrorLines(r.err);
   REQUIRE(lines.size() == 1);
   for (const auto& part : parts) CHECK(lines[0].find(part) != std::string::npos);
   if (exit_code == 2) CHECK(lines[0].find("(see prt help") != std::string::npos);
-  CHECK(r->err.find("terminate") == std::string::npos);
-  CHECK(r->err.find("internal error") == std::string::npos);
+  CHECK(r.err.find("terminate") == std::string::npos);
+  CHECK(r.err.find("internal error") == std::string::npos);
 }
 
 void ExpectSuccess(const std::string& arguments) {
   const auto r = test::RunPrt(arguments);
-  if (!r) return;
   CAPTURE(arguments);
-  CAPTURE(r->err);
-  CHECK(r->exit_code == 0);
-  CHECK(ErrorLines(r->err).empty());
+  CAPTURE(r.err);
+  CHECK(r.exit_code == 0);
+  CHECK(ErrorLines(r.err).empty());
 }
 
 /// `prt light` on an environment (image file, cubemap folder or built-in name).
@@ -83,18 +79,38 @@ TEST_SUITE("app") {
     std::ofstream(dir + "/a_file") << "x";
     ExpectFailure(Precompute(Obj("quad.obj"), dir + "/a_file"), 1, {dir + "/a_file"});
 
+  }
+
+  TEST_CASE("bad input: files the user may not read") {
+    // chmod 000 keeps out everyone but root. As root (CI), prt runs as nobody (util-linux's
+    // setpriv, on every Debian system), from a copy of the binary in a fresh folder under /tmp
+    // that nobody can reach and write.
+    char folder[] = "/tmp/prt-unreadable-XXXXXX";
+    REQUIRE(::mkdtemp(folder) != nullptr);
+    const std::string dir = folder;
+    fs::permissions(dir, fs::perms::all);
+    std::string prt = Quote(test::PrtBinary());
     if (::geteuid() == 0) {
-      MESSAGE("skipped: unreadable files (running as root, chmod 000 does not block reads)");
-    } else {
-      const std::string locked = dir + "/locked.png";
-      fs::copy_file(Image("grey8.png"), locked);
-      fs::permissions(locked, fs::perms::none);
-      ExpectFailure(Light(locked), 1, {locked, "cannot open"});
-      const std::string locked_obj = dir + "/locked.obj";
-      fs::copy_file(Obj("quad.obj"), locked_obj);
-      fs::permissions(locked_obj, fs::perms::none);
-      ExpectFailure(Precompute(locked_obj, dir + "/out"), 1, {locked_obj});
+      fs::copy_file(test::PrtBinary(), dir + "/prt");
+      fs::permissions(dir + "/prt", fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+      prt = "setpriv --reuid=65534 --regid=65534 --clear-groups " + Quote(dir + "/prt");
     }
+    const std::string locked = dir + "/locked.png";
+    fs::copy_file(Image("grey8.png"), locked);
+    fs::permissions(locked, fs::perms::none);
+    const auto image = test::RunCommand(prt + " light --env " + Quote(locked));
+    CAPTURE(image.err);
+    CHECK(image.exit_code == 1);
+    CHECK(image.err == "prt: error: " + locked + ": cannot open (Permission denied)\n");
+    const std::string locked_obj = dir + "/locked.obj";
+    fs::copy_file(Obj("quad.obj"), locked_obj);
+    fs::permissions(locked_obj, fs::perms::none);
+    const auto mesh = test::RunCommand(prt + " precompute --mesh " + Quote(locked_obj) + " --out " + Quote(dir + "/out"));
+    CAPTURE(mesh.err);
+    CHECK(mesh.exit_code == 1);
+    CHECK(mesh.err.find("prt: error: " + locked_obj + ": cannot be opened: Permission denied (expected a readable OBJ "
+                        "file)") != std::string::npos);
+    fs::remove_all(dir);
   }
 
   TEST_CASE("bad input: empty, truncated and wrong-format images behind the right extension") {
@@ -132,13 +148,12 @@ TEST_SUITE("app") {
     // NaN, +-Inf, negative and 1e30 texels are replaced with a warning, and the light is finite.
     for (const char* name : {"extreme_texels.exr", "extreme_1e30.hdr"}) {
       const auto r = test::RunPrt(Light(Image(name)));
-      if (!r) return;
       CAPTURE(name);
-      CAPTURE(r->err);
-      CHECK(r->exit_code == 0);
-      CHECK(r->err.find("prt: warning: " + Image(name)) != std::string::npos);
-      CHECK(r->out.find("nan") == std::string::npos);
-      CHECK(r->out.find("inf") == std::string::npos);
+      CAPTURE(r.err);
+      CHECK(r.exit_code == 0);
+      CHECK(r.err.find("prt: warning: " + Image(name)) != std::string::npos);
+      CHECK(r.out.find("nan") == std::string::npos);
+      CHECK(r.out.find("inf") == std::string::npos);
     }
   }
 
@@ -162,10 +177,9 @@ TEST_SUITE("app") {
     // A missing or unreadable .mtl is a warning: the default albedo applies.
     for (const char* name : {"missing_mtl.obj", "garbage_mtl.obj"}) {
       const auto r = test::RunPrt(Precompute(Obj(name), out));
-      if (!r) return;
-      CAPTURE(r->err);
-      CHECK(r->exit_code == 0);
-      CHECK(r->err.find("prt: warning: " + Obj(name)) != std::string::npos);
+      CAPTURE(r.err);
+      CHECK(r.exit_code == 0);
+      CHECK(r.err.find("prt: warning: " + Obj(name)) != std::string::npos);
     }
     // 1e7 coordinates render too (the camera frames them).
     ExpectSuccess("render --env furnace --transport unshadowed --frames 1 --size 16x16 --mesh " +
@@ -233,8 +247,7 @@ TEST_SUITE("app") {
     const std::string run = "render --env furnace --transport shadowed --samples 16 --frames 1 --size 16x16 --mesh " +
                             Quote(Obj("tetra_no_normals.obj")) + " --out " + Quote(out);
     const auto first = test::RunPrt(run);
-    if (!first) return;
-    REQUIRE(first->exit_code == 0);
+    REQUIRE(first.exit_code == 0);
     std::string good;
     {
       std::ifstream in(cache, std::ios::binary);
@@ -272,30 +285,26 @@ TEST_SUITE("app") {
       CAPTURE(c.what);
       { std::ofstream(cache, std::ios::binary | std::ios::trunc) << c.bytes; }
       const auto r = test::RunPrt(run);
-      REQUIRE(r);
-      CAPTURE(r->err);
-      CHECK(r->exit_code == 0);
-      CHECK(ErrorLines(r->err).empty());
-      CHECK(r->err.find("cache: " + cache + " ignored (") != std::string::npos);
-      CHECK(r->err.find(c.reason) != std::string::npos);
+      CAPTURE(r.err);
+      CHECK(r.exit_code == 0);
+      CHECK(ErrorLines(r.err).empty());
+      CHECK(r.err.find("cache: " + cache + " ignored (") != std::string::npos);
+      CHECK(r.err.find(c.reason) != std::string::npos);
       // Recomputed and rewritten: the next run takes it.
       const auto again = test::RunPrt(run);
-      REQUIRE(again);
-      CHECK(again->err.find("taken from the cache") != std::string::npos);
+      CHECK(again.err.find("taken from the cache") != std::string::npos);
     }
     // Other options (a different seed) make a different key: ignored, not trusted.
     const auto other = test::RunPrt(run + " --seed 7");
-    REQUIRE(other);
-    CHECK(other->exit_code == 0);
-    CHECK(other->err.find("made from other inputs") != std::string::npos);
+    CHECK(other.exit_code == 0);
+    CHECK(other.err.find("made from other inputs") != std::string::npos);
     // A cache path that is a folder cannot be used: the cache is an optimisation, so a warning
     // naming it, and the frames are still written.
     fs::remove(cache);
     fs::create_directories(cache);
     const auto folder = test::RunPrt(run);
-    REQUIRE(folder);
-    CHECK(folder->exit_code == 0);
-    CHECK(folder->err.find("prt: warning: cache: " + cache + ": is a folder (expected a file name); going on without "
+    CHECK(folder.exit_code == 0);
+    CHECK(folder.err.find("prt: warning: cache: " + cache + ": is a folder (expected a file name); going on without "
                            "the cache") != std::string::npos);
     CHECK(fs::exists(out + "/frame_0000.png"));
   }

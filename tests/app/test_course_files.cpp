@@ -90,10 +90,9 @@ TEST_SUITE("app") {
     const std::string out = dir + "/out";
     const auto r = test::RunPrt("precompute --mesh " + Q(mesh) +
                                 " --env furnace --transport interreflection --samples 256 --out " + Q(out));
-    if (!r) return;
-    CAPTURE(r->err);
-    REQUIRE(r->exit_code == 0);
-    CHECK(r->err.find("luminance-weighted mix 0.2126 R + 0.7152 G + 0.0722 B") != std::string::npos);
+    CAPTURE(r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.err.find("luminance-weighted mix 0.2126 R + 0.7152 G + 0.0722 B") != std::string::npos);
 
     const auto light = ReadLikeTheViewer(out + "/light.txt", 3, Header::kNone);
     CHECK(light.size() == 9);
@@ -127,8 +126,7 @@ TEST_SUITE("app") {
     const std::string mesh = WriteRedWallScene(dir);
     const auto r = test::RunPrt("precompute --mesh " + Q(mesh) + " --albedo 0.5,0.5,0.5 --env furnace " +
                                 "--transport interreflection --samples 64 --out " + Q(dir + "/out"));
-    if (!r) return;
-    REQUIRE(r->exit_code == 0);
+    REQUIRE(r.exit_code == 0);
     CHECK(ReadLikeTheViewer(dir + "/out/transport.txt", 9).size() == 3 * (FloorFaces() + 6 * 2 * 16));
     CHECK_FALSE(fs::exists(dir + "/out/transport_r.txt"));
   }
@@ -138,45 +136,42 @@ TEST_SUITE("app") {
     const std::string base = "precompute --mesh " + Q(test::Fixture("obj/tetra_no_normals.obj")) +
                              " --env furnace --transport unshadowed --out " + Q(dir);
     const auto three = test::RunPrt(base + " --lmax 3");
-    if (!three) return;
-    CAPTURE(three->err);
-    CHECK(three->exit_code == 0);
-    const std::size_t warning = three->err.find("prt: warning: lmax 3: these files will have 16 numbers per row, but "
+    CAPTURE(three.err);
+    CHECK(three.exit_code == 0);
+    const std::size_t warning = three.err.find("prt: warning: lmax 3: these files will have 16 numbers per row, but "
                                                 "the course's WebGL viewer reads exactly 9");
     CHECK(warning != std::string::npos);
-    CHECK(warning < three->err.find("mesh: "));  // said before any work
+    CHECK(warning < three.err.find("mesh: "));  // said before any work
     CHECK(ReadLikeTheViewer(dir + "/transport.txt", 16).size() == 12);
     const auto two = test::RunPrt(base + " --lmax 2");
-    CHECK(two->exit_code == 0);
-    CHECK(two->err.find("viewer") == std::string::npos);
+    CHECK(two.exit_code == 0);
+    CHECK(two.err.find("viewer") == std::string::npos);
     CHECK(ReadLikeTheViewer(dir + "/transport.txt", 9).size() == 12);
   }
 
   TEST_CASE("course files: a material the .mtl does not define is one warning in prt's words") {
     const auto r = test::RunPrt("precompute --mesh " + Q(test::Fixture("obj/missing_material.obj")) +
                                 " --env furnace --transport unshadowed --out " + Q(test::ScratchDir("course_mtl")));
-    if (!r) return;
-    CAPTURE(r->err);
-    CHECK(r->exit_code == 0);
-    CHECK(r->err.find("not found in .mtl") == std::string::npos);  // tinyobjloader's own words
-    const std::size_t first = r->err.find("is not defined in missing_material.mtl");
+    CAPTURE(r.err);
+    CHECK(r.exit_code == 0);
+    CHECK(r.err.find("not found in .mtl") == std::string::npos);  // tinyobjloader's own words
+    const std::size_t first = r.err.find("is not defined in missing_material.mtl");
     CHECK(first != std::string::npos);
-    CHECK(r->err.find("is not defined in", first + 1) == std::string::npos);
+    CHECK(r.err.find("is not defined in", first + 1) == std::string::npos);
   }
 
-  TEST_CASE("course files: mary's undefined material is said once, and her files load in the viewer") {
-    PRT_SHARED_DATA_OR_SKIP(data);
+  TEST_CASE("course files: mary's undefined material is said once, and her files load in the viewer" * test::NeedsSharedData()) {
+    const std::string data = *test::SharedData();
     const std::string out = test::ScratchDir("course_mary");
     const auto r = test::RunPrt("precompute --mesh " + Q(data + "/games202/mary/mary.obj") + " --env " +
                                 Q(data + "/games202/cubemap/GraceCathedral") + " --samples 64 --out " + Q(out));
-    if (!r) return;
-    CAPTURE(r->err);
-    REQUIRE(r->exit_code == 0);
-    CHECK(r->err.find("not found in .mtl") == std::string::npos);
+    CAPTURE(r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.err.find("not found in .mtl") == std::string::npos);
     const std::string said = "material 'MC003_Kozakura_Mari' is not defined in mary.mtl";
-    const std::size_t first = r->err.find(said);
+    const std::size_t first = r.err.find(said);
     CHECK(first != std::string::npos);
-    CHECK(r->err.find("MC003_Kozakura_Mari", first + said.size()) == std::string::npos);
+    CHECK(r.err.find("MC003_Kozakura_Mari", first + said.size()) == std::string::npos);
     CHECK(ReadLikeTheViewer(out + "/transport.txt", 9).size() == 30522);  // three rows per face of the file
     CHECK(ReadLikeTheViewer(out + "/light.txt", 3, Header::kNone).size() == 9);
   }

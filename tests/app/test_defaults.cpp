@@ -77,42 +77,40 @@ TEST_SUITE("app") {
     const std::string dir = test::ScratchDir("defaults");
     const std::string scene = "render --samples 64 --frames 1 --size 160x120";
     const auto plain = test::RunPrt(scene + " --out " + Q(dir + "/plain"));
-    if (!plain) return;
-    CAPTURE(plain->err);
-    REQUIRE(plain->exit_code == 0);
-    const std::string ev = PrintedExposure(plain->err);
+    CAPTURE(plain.err);
+    REQUIRE(plain.exit_code == 0);
+    const std::string ev = PrintedExposure(plain.err);
     REQUIRE_FALSE(ev.empty());
-    CHECK(plain->err.find("exposure: auto -> " + ev + " EV") != std::string::npos);
+    CHECK(plain.err.find("exposure: auto -> " + ev + " EV") != std::string::npos);
     const auto spelled = test::RunPrt(scene + " --tonemap aces --ssaa 2 --exposure " + ev + " --out " + Q(dir + "/spelled"));
-    REQUIRE(spelled->exit_code == 0);
+    REQUIRE(spelled.exit_code == 0);
     CHECK(ReadFile(dir + "/plain/frame_0000.png") == ReadFile(dir + "/spelled/frame_0000.png"));
 
     // The old defaults (srgb, exposure 0, no supersampling) clip 14 % of this frame; these none.
     CHECK(ClippedShare(ReadPng(dir + "/plain/frame_0000.png")) == 0.0);
     const auto old = test::RunPrt(scene + " --tonemap srgb --exposure 0 --ssaa 1 --out " + Q(dir + "/old"));
-    REQUIRE(old->exit_code == 0);
+    REQUIRE(old.exit_code == 0);
     CHECK(ClippedShare(ReadPng(dir + "/old/frame_0000.png")) > 0.05);
   }
 
   TEST_CASE("defaults: a bright HDR sun does not blow the mesh to white") {
     const std::string dir = test::ScratchDir("defaults_sun");
     const auto samples = test::RunPrt("sample-files --quiet --out " + Q(dir + "/samples"));
-    if (!samples) return;
-    REQUIRE(samples->exit_code == 0);
+    REQUIRE(samples.exit_code == 0);
     const std::string scene = "render --mesh " + Q(dir + "/samples/scene.obj") + " --env " +
                               Q(dir + "/samples/sky.hdr") + " --samples 64 --frames 1 --size 160x120 --background black";
     const auto plain = test::RunPrt(scene + " --out " + Q(dir + "/plain"));
-    REQUIRE(plain->exit_code == 0);
+    REQUIRE(plain.exit_code == 0);
     CHECK(ClippedShare(ReadPng(dir + "/plain/frame_0000.png")) == 0.0);
     // A light far beyond what the automatic exposure's range covers: said, not silently white.
     const auto blinding = test::RunPrt("render --env furnace:1e12 --transport unshadowed --frames 1 --size 32x24 --out " +
                                        Q(dir + "/blinding"));
-    CHECK(blinding->err.find("auto -> -20.0 EV") != std::string::npos);
-    CHECK(blinding->err.find("the limit: the scene is brighter than -20 EV can show") != std::string::npos);
-    CHECK(plain->err.find("the limit") == std::string::npos);
+    CHECK(blinding.err.find("auto -> -20.0 EV") != std::string::npos);
+    CHECK(blinding.err.find("the limit: the scene is brighter than -20 EV can show") != std::string::npos);
+    CHECK(plain.err.find("the limit") == std::string::npos);
     // Measured: srgb at exposure 0 clips 23 % of this frame (nearly all of the mesh).
     const auto old = test::RunPrt(scene + " --tonemap srgb --exposure 0 --ssaa 1 --out " + Q(dir + "/old"));
-    REQUIRE(old->exit_code == 0);
+    REQUIRE(old.exit_code == 0);
     CHECK(ClippedShare(ReadPng(dir + "/old/frame_0000.png")) > 0.1);
   }
 
@@ -132,8 +130,7 @@ TEST_SUITE("app") {
       const auto r = test::RunPrt(std::string("render --mesh ") + Q(dir + "/" + c.mesh + ".obj") +
                                   " --env furnace --transport unshadowed --background black --frames 1 --size " + c.size +
                                   " --out " + Q(out));
-      if (!r) return;
-      REQUIRE(r->exit_code == 0);
+      REQUIRE(r.exit_code == 0);
       const Image8 image = ReadPng(out + "/frame_0000.png");
       const Covered box = CoveredBox(image);
       CAPTURE(box.top);
@@ -154,23 +151,22 @@ TEST_SUITE("app") {
     const std::string dir = test::ScratchDir("demo_camera");
     const std::string demo_camera = "camera: --eye 6,3.2,9 --target 0,1.5,0 --up 0,1,0 --fov 36";
     const auto render = test::RunPrt("render --transport unshadowed --frames 1 --size 32x24 --out " + Q(dir + "/r"));
-    if (!render) return;
-    CAPTURE(render->err);
-    CHECK(render->exit_code == 0);
-    CHECK(render->err.find(demo_camera) != std::string::npos);
+    CAPTURE(render.err);
+    CHECK(render.exit_code == 0);
+    CHECK(render.err.find(demo_camera) != std::string::npos);
     const auto reference = test::RunPrt("reference --transport unshadowed --reference-samples 2 --size 32x24 --out " +
                                         Q(dir + "/ref"));
-    CAPTURE(reference->err);
-    CHECK(reference->exit_code == 0);
-    CHECK(reference->err.find(demo_camera) != std::string::npos);
+    CAPTURE(reference.err);
+    CHECK(reference.exit_code == 0);
+    CHECK(reference.err.find(demo_camera) != std::string::npos);
     // Each value not given stays the demo's: one option changes one thing.
     const auto fov = test::RunPrt("render --fov 50 --transport unshadowed --frames 1 --size 32x24 --out " + Q(dir + "/f"));
-    CHECK(fov->err.find("camera: --eye 6,3.2,9 --target 0,1.5,0 --up 0,1,0 --fov 50") != std::string::npos);
+    CHECK(fov.err.find("camera: --eye 6,3.2,9 --target 0,1.5,0 --up 0,1,0 --fov 50") != std::string::npos);
     const auto eye = test::RunPrt("render --eye 0,3,9 --transport unshadowed --frames 1 --size 32x24 --out " + Q(dir + "/e"));
-    CHECK(eye->err.find("camera: --eye 0,3,9 --target 0,1.5,0 --up 0,1,0 --fov 36") != std::string::npos);
+    CHECK(eye.err.find("camera: --eye 0,3,9 --target 0,1.5,0 --up 0,1,0 --fov 36") != std::string::npos);
     const auto same = test::RunPrt("render --eye 0,1.5,0 --out " + Q(dir + "/s"));
-    CHECK(same->exit_code == 2);
-    CHECK(same->err.find("--eye: equals the embedded scene's camera target 0,1.5,0") != std::string::npos);
+    CHECK(same.exit_code == 2);
+    CHECK(same.err.find("--eye: equals the embedded scene's camera target 0,1.5,0") != std::string::npos);
   }
 
   TEST_CASE("defaults: the transport view is drawn on neutral grey, with a legend that grows with the image") {
@@ -181,8 +177,7 @@ TEST_SUITE("app") {
       const std::string out = dir + "/" + sizes[i];
       const auto r = test::RunPrt(std::string("render --view transport:0 --samples 16 --frames 1 --size ") + sizes[i] +
                                   " --out " + Q(out));
-      if (!r) return;
-      REQUIRE(r->exit_code == 0);
+      REQUIRE(r.exit_code == 0);
       const Image8 image = ReadPng(out + "/frame_0000.png");
       // The top-left corner shows background: the default --background env would be sky blue.
       CHECK(image.rgb[0] == image.rgb[1]);
@@ -205,14 +200,13 @@ TEST_SUITE("app") {
     CHECK(legend_width[1] >= 2 * legend_width[0]);
     // Too small to hold a readable legend: left out, and said.
     const auto tiny = test::RunPrt("render --view transport:0 --samples 16 --frames 1 --size 48x32 --out " + Q(dir + "/tiny"));
-    CHECK(tiny->err.find("legend: left out, a 48x32 frame is too small") != std::string::npos);
+    CHECK(tiny.err.find("legend: left out, a 48x32 frame is too small") != std::string::npos);
   }
 
   TEST_CASE("defaults: the SH pole is said to be world +Z where students read the basis") {
     const auto help = test::RunPrt("help basis");
-    if (!help) return;
-    CHECK(help->exit_code == 0);
-    CHECK(help->out.find("world +Z, while scenes are Y-up") != std::string::npos);
+    CHECK(help.exit_code == 0);
+    CHECK(help.out.find("world +Z, while scenes are Y-up") != std::string::npos);
     CHECK(ReadFile(test::SourceDir() + "/README.md").find("The SH pole is world +Z") != std::string::npos);
   }
 }

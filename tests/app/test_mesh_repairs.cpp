@@ -82,9 +82,8 @@ TEST_SUITE("app") {
     WriteFileAtomic(dir + "/inward_normals.obj", ObjText(sphere, false, Normals::kNegated));
     WriteFileAtomic(dir + "/both.obj", ObjText(sphere, true, Normals::kNegated));
     const auto good = test::RunPrt(SphereFrame(dir + "/good.obj", dir + "/good"));
-    if (!good) return;
-    REQUIRE(good->exit_code == 0);
-    CHECK(good->err.find("orientation:") == std::string::npos);
+    REQUIRE(good.exit_code == 0);
+    CHECK(good.err.find("orientation:") == std::string::npos);
     const Image8 expected = ReadPng(dir + "/good/frame_0000.png");
     CHECK(std::abs(CentreRed(expected) - kAlbedoSrgb) <= kShadingSlack);
 
@@ -100,10 +99,10 @@ TEST_SUITE("app") {
       CAPTURE(c.name);
       const std::string out = dir + "/" + c.name;
       const auto r = test::RunPrt(SphereFrame(dir + "/" + c.name + ".obj", out));
-      CAPTURE(r->err);
-      REQUIRE(r->exit_code == 0);
-      CHECK(r->err.find(c.says) != std::string::npos);
-      CHECK(r->err.find("see almost no sky") == std::string::npos);
+      CAPTURE(r.err);
+      REQUIRE(r.exit_code == 0);
+      CHECK(r.err.find(c.says) != std::string::npos);
+      CHECK(r.err.find("see almost no sky") == std::string::npos);
       const Image8 image = ReadPng(out + "/frame_0000.png");
       CHECK(std::abs(CentreRed(image) - kAlbedoSrgb) <= kShadingSlack);
       CHECK(CompareImages(expected, image).max_abs <= kShadingSlack);
@@ -115,12 +114,11 @@ TEST_SUITE("app") {
     WriteFileAtomic(dir + "/floor.obj", ObjText(MakePlane(2.0f, 4), false, Normals::kNegated));
     const auto r = test::RunPrt("render --mesh " + Q(dir + "/floor.obj") +
                                 " --env furnace --transport unshadowed --frames 1 --size 32x24 --out " + Q(dir + "/out"));
-    if (!r) return;
-    CAPTURE(r->err);
-    CHECK(r->exit_code == 0);
-    CHECK(r->err.find("prt: warning: " + dir + "/floor.obj: the file's normals point against the triangle winding on 100% "
+    CAPTURE(r.err);
+    CHECK(r.exit_code == 0);
+    CHECK(r.err.find("prt: warning: " + dir + "/floor.obj: the file's normals point against the triangle winding on 100% "
                       "of the area") != std::string::npos);
-    CHECK(r->err.find("orientation:") == std::string::npos);
+    CHECK(r.err.find("orientation:") == std::string::npos);
   }
 
   TEST_CASE("mesh repairs: --max-edge splits a one-quad floor so that it shows the contact shadow") {
@@ -137,13 +135,12 @@ TEST_SUITE("app") {
                              " --env furnace --samples 256 --background black --tonemap srgb --exposure 0 --ssaa 1 " +
                              "--size 96x72 --frames 1 --eye 0,4,3 --target 0,0,0";
     const auto whole = test::RunPrt(base + " --out " + Q(dir + "/whole"));
-    if (!whole) return;
     const auto split = test::RunPrt(base + " --max-edge 2% --out " + Q(dir + "/split"));
-    CAPTURE(split->err);
-    REQUIRE(whole->exit_code == 0);
-    REQUIRE(split->exit_code == 0);
-    CHECK(whole->err.find("split:") == std::string::npos);
-    CHECK(split->err.find("split: no edge longer than") != std::string::npos);
+    CAPTURE(split.err);
+    REQUIRE(whole.exit_code == 0);
+    REQUIRE(split.exit_code == 0);
+    CHECK(whole.err.find("split:") == std::string::npos);
+    CHECK(split.err.find("split: no edge longer than") != std::string::npos);
 
     // The darkest and brightest floor pixel: the floor is grey (R = G = B), the block red.
     const auto floor_range = [](const Image8& image) {
@@ -172,15 +169,14 @@ TEST_SUITE("app") {
     const auto garbage = test::RunPrt("render --mesh " + Q(test::Fixture("obj/garbage_lines.obj")) +
                                       " --env furnace --transport unshadowed --frames 1 --size 32x24 --out " +
                                       Q(test::ScratchDir("garbage_lines")));
-    if (!garbage) return;
-    CAPTURE(garbage->err);
-    CHECK(garbage->exit_code == 0);
-    CHECK(garbage->err.find("3 lines not understood and skipped (first: line 5: 'hello world')") != std::string::npos);
+    CAPTURE(garbage.err);
+    CHECK(garbage.exit_code == 0);
+    CHECK(garbage.err.find("3 lines not understood and skipped (first: line 5: 'hello world')") != std::string::npos);
     const auto index = test::RunPrt("render --mesh " + Q(test::Fixture("obj/index_written.obj")) + " --out " +
                                     Q(test::ScratchDir("index_written")));
-    CAPTURE(index->err);
-    CHECK(index->exit_code == 1);
-    CHECK(index->err.find("line 9: face uses vertex -7, out of bounds") != std::string::npos);
+    CAPTURE(index.err);
+    CHECK(index.exit_code == 1);
+    CHECK(index.err.find("line 9: face uses vertex -7, out of bounds") != std::string::npos);
   }
 }
 

@@ -61,11 +61,7 @@ std::map<std::string, std::string> FillWithMarkers(const std::string& dir, int n
 
 TEST_SUITE("app") {
   TEST_CASE("no data lost: a render killed mid-run leaves every earlier frame as it was") {
-    const char* binary = std::getenv("PRT_BINARY");
-    if (!binary || !*binary) {
-      MESSAGE("skipped: PRT_BINARY is not set (run the tests through ctest)");
-      return;
-    }
+    const std::string binary = test::PrtBinary();
     const std::string dir = test::ScratchDir("no_data_loss_kill");
     constexpr int kMarkers = 400;
     const auto old = FillWithMarkers(dir, kMarkers);
@@ -79,7 +75,7 @@ TEST_SUITE("app") {
       // Only async-signal-safe calls between fork and exec (the test process has threads).
       const int null = ::open("/dev/null", O_WRONLY);
       if (null >= 0) ::dup2(null, 2);
-      ::execl(binary, binary, "render", "--mesh", mesh.c_str(), "--env", "furnace", "--transport", "unshadowed",
+      ::execl(binary.c_str(), binary.c_str(), "render", "--mesh", mesh.c_str(), "--env", "furnace", "--transport", "unshadowed",
               "--frames", "9999", "--size", "48x32", "--threads", "1", "--out", dir.c_str(), "--quiet",
               static_cast<char*>(nullptr));
       ::_exit(127);
@@ -134,8 +130,7 @@ TEST_SUITE("app") {
     // The killed run's lock blocks nothing, and the next successful run removes its staging folder.
     const auto later = test::RunPrt("render --mesh '" + mesh + "' --env furnace --transport unshadowed --frames 1 "
                                     "--size 8x8 --quiet --out '" + dir + "'");
-    REQUIRE(later);
-    CHECK(later->exit_code == 0);
+    CHECK(later.exit_code == 0);
     CHECK_FALSE(fs::exists(staging));
     for (const auto& entry : fs::directory_iterator(dir)) CHECK_FALSE(IsTemp(entry.path().filename().string()));
     CHECK(Slurp(dir + "/frame_0001.png") == old.at("frame_0001.png"));  // not prt's: never removed
@@ -143,17 +138,15 @@ TEST_SUITE("app") {
 
   TEST_CASE("no data lost: frames prt did not write are never removed; failed runs keep old outputs") {
     const auto r0 = test::RunPrt("--version");
-    if (!r0) return;
     const std::string dir = test::ScratchDir("no_data_loss_fewer");
     const auto old = FillWithMarkers(dir, 10);
     const std::string run = "render --env furnace --transport unshadowed --frames 3 --size 16x16 --mesh '" +
                             test::Fixture("obj/quad.obj") + "' --out '" + dir + "'";
     const auto r = test::RunPrt(run);
-    REQUIRE(r);
-    CAPTURE(r->err);
-    CHECK(r->exit_code == 0);
+    CAPTURE(r.err);
+    CHECK(r.exit_code == 0);
     // The markers were not written by prt: frames 3..9 are left, and the run says so.
-    CHECK(r->err.find("note: 7 frame files in " + dir + " not written by this run were left untouched") !=
+    CHECK(r.err.find("note: 7 frame files in " + dir + " not written by this run were left untouched") !=
           std::string::npos);
     for (const auto& [name, bytes] : old) {
       CAPTURE(name);
@@ -167,12 +160,10 @@ TEST_SUITE("app") {
     const std::string cache_before = Slurp(dir + "/transport.cache");
     const auto failed = test::RunPrt("render --env furnace --frames 2 --mesh '" + test::Fixture("obj/no_faces.obj") +
                                      "' --out '" + dir + "'");
-    REQUIRE(failed);
-    CHECK(failed->exit_code == 1);
+    CHECK(failed.exit_code == 1);
     const auto failed_pre = test::RunPrt("precompute --env '" + test::Fixture("images/truncated.png") +
                                          "' --out '" + dir + "'");
-    REQUIRE(failed_pre);
-    CHECK(failed_pre->exit_code == 1);
+    CHECK(failed_pre.exit_code == 1);
     CHECK(Slurp(dir + "/light.txt") == "earlier light\n");
     CHECK(Slurp(dir + "/transport.cache") == cache_before);
     for (const auto& [name, bytes] : old)

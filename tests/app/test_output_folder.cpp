@@ -55,28 +55,19 @@ TEST_SUITE("app") {
     REQUIRE(fd >= 0);
     REQUIRE(::flock(fd, LOCK_EX | LOCK_NB) == 0);
     const auto refused = test::RunPrt(Quick(dir, 2));
-    if (!refused) {
-      ::close(fd);
-      MESSAGE("skipped: PRT_BINARY is not set (run the tests through ctest)");
-      return;
-    }
-    CHECK(refused->exit_code == 1);
-    CHECK(refused->err.find(dir + ": in use by another prt run") != std::string::npos);
+    CHECK(refused.exit_code == 1);
+    CHECK(refused.err.find(dir + ": in use by another prt run") != std::string::npos);
     CHECK_FALSE(fs::exists(dir + "/frame_0000.png"));
     // The lock file stays where a killed run left it, but unheld: the next run goes ahead.
     ::close(fd);
     const auto after = test::RunPrt(Quick(dir, 2));
-    CHECK(after->exit_code == 0);
+    CHECK(after.exit_code == 0);
     CHECK(fs::exists(dir + "/frame_0001.png"));
     CHECK_FALSE(fs::exists(dir + "/" + OutputFolder::kLockName));  // a finished run removes its lock
   }
 
   TEST_CASE("output folder: two renders into one folder at the same time, the second is refused") {
-    const char* binary = std::getenv("PRT_BINARY");
-    if (!binary || !*binary) {
-      MESSAGE("skipped: PRT_BINARY is not set (run the tests through ctest)");
-      return;
-    }
+    const std::string binary = test::PrtBinary();
     const std::string dir = test::ScratchDir("folder_two_runs");
     const std::string mesh = test::Fixture("obj/tetra_no_normals.obj");
     const pid_t pid = ::fork();
@@ -84,7 +75,7 @@ TEST_SUITE("app") {
     if (pid == 0) {
       const int null = ::open("/dev/null", O_WRONLY);
       if (null >= 0) ::dup2(null, 2);
-      ::execl(binary, binary, "render", "--mesh", mesh.c_str(), "--env", "furnace", "--transport", "unshadowed",
+      ::execl(binary.c_str(), binary.c_str(), "render", "--mesh", mesh.c_str(), "--env", "furnace", "--transport", "unshadowed",
               "--frames", "9999", "--size", "16x12", "--out", dir.c_str(), static_cast<char*>(nullptr));
       ::_exit(127);
     }
@@ -100,8 +91,8 @@ TEST_SUITE("app") {
     int status = 0;
     ::waitpid(pid, &status, 0);
     REQUIRE(holding);
-    CHECK(second->exit_code == 1);
-    CHECK(second->err.find("in use by another prt run (process " + std::to_string(pid) + ")") != std::string::npos);
+    CHECK(second.exit_code == 1);
+    CHECK(second.err.find("in use by another prt run (process " + std::to_string(pid) + ")") != std::string::npos);
   }
 
   TEST_CASE("output folder: after a run the folder holds exactly its outputs; other files are untouched") {
@@ -109,21 +100,20 @@ TEST_SUITE("app") {
     std::ofstream(dir + "/notes.txt") << "mine";
     std::ofstream(dir + "/frame_0007.png") << "a frame prt did not write";
     const auto first = test::RunPrt(Quick(dir, 5) + " --quiet");
-    if (!first) return;
-    CHECK(first->exit_code == 0);
+    CHECK(first.exit_code == 0);
     CHECK(fs::exists(dir + "/frame_0004.png"));
     const auto second = test::RunPrt(Quick(dir, 3) + " --quiet");  // what CI runs: nothing printed
-    CHECK(second->exit_code == 0);
-    CHECK(second->err.empty());
+    CHECK(second.exit_code == 0);
+    CHECK(second.err.empty());
     CHECK(Files(dir) == std::set<std::string>{".prt-outputs", "frame_0000.png", "frame_0001.png", "frame_0002.png",
                                               "frame_0007.png", "notes.txt", "transport.cache"});
     CHECK(Slurp(dir + "/notes.txt") == "mine");
     CHECK(Slurp(dir + "/frame_0007.png") == "a frame prt did not write");
     // Without --quiet the run says what it removed and what it left.
     const auto third = test::RunPrt(Quick(dir, 1));
-    CHECK(third->err.find("outputs: removed 2 files an earlier run wrote in " + dir +
+    CHECK(third.err.find("outputs: removed 2 files an earlier run wrote in " + dir +
                           " and this one did not (frame_0001.png ... frame_0002.png)") != std::string::npos);
-    CHECK(third->err.find("note: 1 frame file in " + dir + " not written by this run was left untouched") !=
+    CHECK(third.err.find("note: 1 frame file in " + dir + " not written by this run was left untouched") !=
           std::string::npos);
   }
 
@@ -132,30 +122,28 @@ TEST_SUITE("app") {
     const std::string scene = "precompute --env furnace --samples 16 --mesh " + Q(test::Fixture("obj/quad.obj")) +
                               " --out " + Q(dir);
     const auto coloured = test::RunPrt(scene + " --transport interreflection --albedo 0.9,0.2,0.1");
-    if (!coloured) return;
-    CHECK(coloured->exit_code == 0);
+    CHECK(coloured.exit_code == 0);
     CHECK(fs::exists(dir + "/transport_r.txt"));
     const auto shadowed = test::RunPrt(scene + " --transport shadowed");
-    CHECK(shadowed->exit_code == 0);
+    CHECK(shadowed.exit_code == 0);
     CHECK(Files(dir) == std::set<std::string>{".prt-outputs", "light.txt", "transport.txt", "transport.cache"});
   }
 
   TEST_CASE("output folder: rendering from sample files into their own folder keeps them, run after run") {
     const std::string dir = test::ScratchDir("folder_own_inputs");
     const auto samples = test::RunPrt("sample-files --quiet --out '" + dir + "'");
-    if (!samples) return;
-    REQUIRE(samples->exit_code == 0);
+    REQUIRE(samples.exit_code == 0);
     const std::string run = "render --mesh '" + dir + "/scene.obj' --env '" + dir +
                             "/sky.hdr' --samples 16 --frames 2 --size 32x24 --quiet --out '" + dir + "'";
     for (int i = 0; i < 2; ++i) {
       CAPTURE(i);
       const auto r = test::RunPrt(run);
-      CAPTURE(r->err);
-      CHECK(r->exit_code == 0);
+      CAPTURE(r.err);
+      CHECK(r.exit_code == 0);
       for (const char* input : {"scene.obj", "scene.mtl", "sky.hdr"}) CHECK(std::filesystem::exists(dir + "/" + input));
     }
     const auto cube = test::RunPrt("light --env '" + dir + "/sky_cubemap'");
-    CHECK(cube->exit_code == 0);
+    CHECK(cube.exit_code == 0);
   }
 
   TEST_CASE("output folder: a failed run leaves the earlier outputs exactly; only its in-place files stay") {

@@ -22,11 +22,9 @@ namespace {
 std::string Q(const std::string& s) { return test::ShellQuote(s); }
 
 /// What `prt arguments` writes to the terminal (stdout and stderr together, as `script` records
-/// them), run with PRT_PROGRESS_DELAY=`delay`; empty when the binary is not known.
+/// them), run with PRT_PROGRESS_DELAY=`delay`.
 std::string OnTerminal(const std::string& arguments, const std::string& dir, const std::string& delay = "0") {
-  const char* binary = std::getenv("PRT_BINARY");
-  if (!binary || !*binary) return "";
-  const std::string inner = "PRT_PROGRESS_DELAY=" + Q(delay) + " " + Q(binary) + " " + arguments;
+  const std::string inner = "PRT_PROGRESS_DELAY=" + Q(delay) + " " + Q(test::PrtBinary()) + " " + arguments;
   // `script -qec CMD FILE` runs CMD on a new pseudo-terminal and copies what it prints to FILE.
   const std::string command = "script -qec " + Q(inner) + " " + Q(dir + "/typescript") + " >/dev/null 2>&1 </dev/null";
   const int status = std::system(command.c_str());
@@ -57,10 +55,6 @@ std::string GridObj(int n) {
 
 TEST_SUITE("app") {
   TEST_CASE("progress: on a terminal a render shows the time left and an OBJ its loading") {
-    if (!std::getenv("PRT_BINARY")) {
-      MESSAGE("skipped: PRT_BINARY is not set (run the tests through ctest)");
-      return;
-    }
     REQUIRE(std::system("command -v script >/dev/null") == 0);  // util-linux: always on Debian
     const std::string dir = test::ScratchDir("progress_bar");
     const std::string render = OnTerminal(
@@ -92,8 +86,8 @@ TEST_SUITE("app") {
     const auto piped = test::RunPrt("render --transport unshadowed --frames 100 --size 320x240 --threads 1 --cache none "
                                     "--out " + Q(dir + "/piped"));
     ::unsetenv("PRT_PROGRESS_DELAY");
-    CHECK(piped->exit_code == 0);
-    CHECK(piped->err.find("rendering [") == std::string::npos);
+    CHECK(piped.exit_code == 0);
+    CHECK(piped.err.find("rendering [") == std::string::npos);
   }
 }
 

@@ -155,8 +155,8 @@ TEST_SUITE("render") {
     CHECK(m.mean_abs < 0.2);
   }
 
-  TEST_CASE("golden frame of the course scene: mary under Grace Cathedral") {
-    PRT_SHARED_DATA_OR_SKIP(data);
+  TEST_CASE("golden frame of the course scene: mary under Grace Cathedral" * test::NeedsSharedData()) {
+    const std::string data = *test::SharedData();
     Scene s;
     s.mesh = LoadObj(data + "/games202/mary/mary.obj").mesh;
     s.env = LoadEnvironment(data + "/games202/cubemap/GraceCathedral", CubeLayout::kStandard);

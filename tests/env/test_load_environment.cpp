@@ -149,8 +149,8 @@ TEST_SUITE("env") {
     CHECK(ErrorOf(dir + "/folder.exr").find("missing face") != std::string::npos);
   }
 
-  TEST_CASE("course cubemaps with --games202-faces reproduce the published light.txt to 5e-4") {
-    PRT_SHARED_DATA_OR_SKIP(data);
+  TEST_CASE("course cubemaps with --games202-faces reproduce the published light.txt to 5e-4" * test::NeedsSharedData()) {
+    const std::string data = *test::SharedData();
     // JPEG decoders differ in their last bit; the course used float arithmetic throughout.
     constexpr double kCourseTolerance = 5e-4;
     for (const char* name : {"GraceCathedral", "Indoor", "Skybox", "CornellBox"}) {
@@ -167,8 +167,8 @@ TEST_SUITE("env") {
     }
   }
 
-  TEST_CASE("the standard face table is the one whose faces join without seams") {
-    PRT_SHARED_DATA_OR_SKIP(data);
+  TEST_CASE("the standard face table is the one whose faces join without seams" * test::NeedsSharedData()) {
+    const std::string data = *test::SharedData();
     // Compare radiance just either side of every cube edge: with the right table the two
     // sides show the same scene. CONVENTIONS.md: 0.006-0.027 (right) vs 0.14-0.37 (course).
     for (const char* name : {"GraceCathedral", "Indoor"}) {
@@ -199,8 +199,8 @@ TEST_SUITE("env") {
     }
   }
 
-  TEST_CASE("Grace Cathedral is bright above with the standard faces, below with the course's") {
-    PRT_SHARED_DATA_OR_SKIP(data);
+  TEST_CASE("Grace Cathedral is bright above with the standard faces, below with the course's" * test::NeedsSharedData()) {
+    const std::string data = *test::SharedData();
     // Irradiance on a surface facing n: E(n) = sum_lm A_l L_lm Y_lm(n) (R&H 2001). The
     // cathedral's lamps and windows are overhead, so E(up) > E(down); the course's face table
     // swaps up and down (CONVENTIONS.md) and must show the opposite.

@@ -243,8 +243,8 @@ TEST_SUITE("io") {
     CHECK(m.report.warnings.size() == 2);  // unknown material, Kd above 1
   }
 
-  TEST_CASE("obj: the course's mary has 7905 vertices and its two colours") {
-    PRT_SHARED_DATA_OR_SKIP(data);
+  TEST_CASE("obj: the course's mary has 7905 vertices and its two colours" * test::NeedsSharedData()) {
+    const std::string data = *test::SharedData();
     const std::string path = data + "/games202/mary/mary.obj";
     const LoadedMesh m = LoadObj(path);
     CHECK(m.mesh.vertex_count() == 7905);
@@ -271,8 +271,8 @@ TEST_SUITE("io") {
     CHECK(b.hi.y == doctest::Approx(3.41).epsilon(0.01));
   }
 
-  TEST_CASE("obj: the course's bunny loads") {
-    PRT_SHARED_DATA_OR_SKIP(data);
+  TEST_CASE("obj: the course's bunny loads" * test::NeedsSharedData()) {
+    const std::string data = *test::SharedData();
     const LoadedMesh m = LoadObj(data + "/games202/bunny/bunny.obj");
     CHECK(m.mesh.triangle_count() > 1000);
     CHECK(m.mesh.normals.size() == m.mesh.vertex_count());

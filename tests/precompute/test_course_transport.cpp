@@ -58,8 +58,8 @@ Agreement Compare(const std::vector<std::vector<double>>& ours, const std::vecto
 }  // namespace
 
 TEST_SUITE("precompute") {
-  TEST_CASE("mary: our transport.txt matches the published course files (rows, and means within noise)") {
-    PRT_SHARED_DATA_OR_SKIP(data);
+  TEST_CASE("mary: our transport.txt matches the published course files (rows, and means within noise)" * test::NeedsSharedData()) {
+    const std::string data = *test::SharedData();
     const Mesh mary = LoadObj(data + "/games202/mary/mary.obj").mesh;
     const std::string peers = data + "/games202/peer-outputs/Remyuu_GAMES202-Homework/";
     // Both published files: 100 directions per vertex (the course's stratified sampler).

@@ -164,9 +164,9 @@ TEST_SUITE("raster") {
     CHECK(framed_fill > 1.5f * sphere_fill);
   }
 
-  TEST_CASE("FramePoints frames the course's mary tightly") {
-    PRT_SHARED_DATA_OR_SKIP(data);
-    const std::vector<glm::vec3> mary = ObjVertices(*data_opt + "/games202/mary/mary.obj");
+  TEST_CASE("FramePoints frames the course's mary tightly" * prt::test::NeedsSharedData()) {
+    const std::string data = *prt::test::SharedData();
+    const std::vector<glm::vec3> mary = ObjVertices(data + "/games202/mary/mary.obj");
     REQUIRE(mary.size() > 1000);
     const float aspect = 360.f / 1000.f;
     const Projected r = Project(prt::FramePoints(mary, aspect), aspect, mary);
