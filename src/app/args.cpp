@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace prt {
 
@@ -30,11 +31,7 @@ std::string NumberProblem(const std::string& text, bool integer, const std::stri
 namespace {
 
 // Integers in full (16777216, not 1.67772e+07); other bounds as %g writes them.
-std::string Bound(double v, bool integer) {
-  char text[64];
-  std::snprintf(text, sizeof text, integer ? "%.0f" : "%g", v);
-  return text;
-}
+std::string Bound(double v, bool integer) { return integer ? Formatted("%.0f", v) : Formatted("%g", v); }
 
 std::string Range(double lo, double hi, bool integer) {
   return std::string(integer ? "an integer" : "a number") + " from " + Bound(lo, integer) + " to " + Bound(hi, integer);
@@ -76,6 +73,11 @@ Args::Args(std::string command, const std::vector<std::string>& tokens, CommandS
 }
 
 void Args::Fail(const std::string& message) const { throw UsageError(message, command_); }
+
+void Args::RequirePngName(const std::string& option, const std::string& path) const {
+  if (path.size() < 5 || path.compare(path.size() - 4, 4, ".png") != 0)
+    Fail(option + ": '" + path + "' does not end in .png (expected a PNG file name: prt writes PNG only)");
+}
 
 bool Args::Has(const std::string& name) const {
   for (const auto& o : options_)

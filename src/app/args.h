@@ -68,6 +68,9 @@ class Args {
   /// Throws UsageError `message` for this command (pointing to its help).
   [[noreturn]] void Fail(const std::string& message) const;
 
+  /// Refuses a file name for `option` that does not end in .png: prt writes PNG only.
+  void RequirePngName(const std::string& option, const std::string& path) const;
+
  private:
   std::optional<std::string> Take(const std::string& name);
 

@@ -1,5 +1,4 @@
 #include "app/commands.h"
-#include "core/error.h"
 #include "core/log.h"
 #include "core/output_folder.h"
 #include "io/png_io.h"
@@ -28,8 +27,7 @@ int RunBasis(const std::vector<std::string>& tokens) {
   SetQuiet(args.Flag("--quiet"));
   args.Finish();
   if (!out) args.Fail("--out FILE.png is required");
-  if (out->size() < 5 || out->compare(out->size() - 4, 4, ".png") != 0)
-    args.Fail("--out: '" + *out + "' does not end in .png (expected a PNG file name: prt writes PNG only)");
+  args.RequirePngName("--out", *out);
   CreateParentFolder(*out);
   WritePng(*out, DrawBasisChart(lmax, cell));
   Summary("wrote " + *out);

@@ -1,11 +1,13 @@
 #include <sys/resource.h>
 
-#include <map>
+#include <algorithm>
 #include <set>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "app/commands.h"
 #include "bench/bench.h"
-#include "core/error.h"
 
 namespace prt {
 
@@ -32,14 +34,31 @@ struct Bench {
   std::set<std::string> options;  ///< what it reads, validated before it runs
 };
 
-const std::map<std::string, Bench>& Benches() {
-  static const std::map<std::string, Bench> benches = {
+/// The benchmarks in the order `all` runs them.
+const std::vector<std::pair<std::string, Bench>>& Benches() {
+  static const std::vector<std::pair<std::string, Bench>> benches = {
       {"light", {bench::BenchLight, {"--runs", "--threads", "--quiet"}}},
       {"bvh", {bench::BenchBvh, {"--runs", "--threads", "--mesh", "--quiet"}}},
       {"raster", {bench::BenchRaster, {"--runs", "--threads", "--size", "--quiet"}}},
       {"transport", {bench::BenchTransport, {"--runs", "--threads", "--mesh", "--samples", "--quiet"}}},
   };
   return benches;
+}
+
+/// What WHAT may be: every benchmark's name, then `all`.
+std::vector<std::string> BenchNames() {
+  std::vector<std::string> names;
+  for (const auto& b : Benches()) names.push_back(b.first);
+  names.push_back("all");
+  return names;
+}
+
+/// "light, bvh, raster, transport or all".
+std::string NameList() {
+  const std::vector<std::string> names = BenchNames();
+  std::string list;
+  for (std::size_t i = 0; i < names.size(); ++i) list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  return list;
 }
 
 /// Peak resident memory of this process so far, in MiB (Linux reports ru_maxrss in KiB).
@@ -54,15 +73,13 @@ double PeakMemoryMiB() {
 int RunBench(const std::vector<std::string>& tokens) {
   Args probe("bench", tokens, BenchSpec());
   const auto what = probe.TakePositionals();
-  if (what.size() != 1) probe.Fail("expected one benchmark: light, bvh, raster, transport or all");
+  if (what.size() != 1) probe.Fail("expected one benchmark: " + NameList());
   if (what[0] != "all") {
-    const auto it = Benches().find(what[0]);
-    if (it == Benches().end())
-    {
-      const std::string near = NearestName(what[0], {"light", "bvh", "raster", "transport", "all"});
+    const auto it = std::find_if(Benches().begin(), Benches().end(), [&](const auto& b) { return b.first == what[0]; });
+    if (it == Benches().end()) {
+      const std::string near = NearestName(what[0], BenchNames());
       probe.Fail("'" + what[0] + "': unknown benchmark (" +
-                 (near.empty() ? std::string("expected light, bvh, raster, transport or all") : "did you mean " + near + "?") +
-                 ")");
+                 (near.empty() ? "expected " + NameList() : "did you mean " + near + "?") + ")");
     }
     probe.RejectOutside(it->second.options, "not used by prt bench " + what[0]);
     Args args("bench", tokens, BenchSpec());
@@ -76,11 +93,11 @@ int RunBench(const std::vector<std::string>& tokens) {
   std::set<std::string> any;
   for (const auto& [name, b] : Benches()) any.insert(b.options.begin(), b.options.end());
   int rc = 0;
-  for (const char* name : {"light", "bvh", "raster", "transport"}) {
+  for (const auto& [name, b] : Benches()) {
     Args args("bench", tokens, BenchSpec());
     args.TakePositionals();
     args.Allow(any);
-    rc |= Benches().at(name).run(args);
+    rc |= b.run(args);
   }
   bench::Print("peak_memory_mib", PeakMemoryMiB());
   return rc;

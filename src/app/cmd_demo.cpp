@@ -38,10 +38,7 @@ int RunDemo(const std::vector<std::string>& tokens) {
   const SceneOptions scene = ReadSceneOptions(args, DemoScene());
   const RenderOptions render = CompleteRenderOptions(args, ReadRenderOptions(args, DemoRender()), scene);
   args.Finish();
-  OutputFolder folder(render.out);
-  RenderJob(scene, render, folder);
-  FinishOutputs(folder);
-  NoteForeignFrames(folder);
+  RenderJob(scene, render);
   return 0;
 }
 

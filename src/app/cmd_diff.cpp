@@ -3,7 +3,6 @@
 // maps a plain Error to exit code 1, which for diff means "the images differ".
 #include <cstdio>
 #include <exception>
-#include <filesystem>
 #include <limits>
 
 #include "app/commands.h"
@@ -66,13 +65,8 @@ int Diff(const std::vector<std::string>& tokens) {
   const auto files = args.TakePositionals();
   args.Finish();
   if (files.size() != 2) args.Fail("expected two images, A.png B.png (got " + std::to_string(files.size()) + ")");
-  if (out && (out->size() < 5 || out->compare(out->size() - 4, 4, ".png") != 0))
-    args.Fail("--out: '" + *out + "' does not end in .png (expected a PNG file name: prt writes PNG only)");
+  if (out) args.RequirePngName("--out", *out);
 
-  for (const std::string& file : files) {
-    std::error_code ec;
-    if (!std::filesystem::exists(file, ec)) throw Error(file + ": no such file (expected a PNG image to compare)");
-  }
   const Image8 a = ReadPng(files[0]);
   const Image8 b = ReadPng(files[1]);
   if (a.width != b.width || a.height != b.height)

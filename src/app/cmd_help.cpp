@@ -1,7 +1,6 @@
 #include <cstdio>
 
 #include "app/commands.h"
-#include "core/error.h"
 
 namespace prt {
 

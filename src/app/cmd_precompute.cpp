@@ -2,7 +2,7 @@
 #include "app/pipeline.h"
 #include "app/render_options.h"
 #include "core/atomic_file.h"
-#include "core/error.h"
+#include "core/color.h"
 #include "core/log.h"
 #include "io/light_txt.h"
 #include "io/transport_txt.h"
@@ -13,10 +13,8 @@ namespace {
 /// The course's viewer reads exactly this many numbers per row of light.txt and transport.txt.
 constexpr int kCourseLmax = 2;
 
-/// Rec. 709 luminance weights: the one transfer vector that best stands for three coloured
-/// ones in the course's single-vector transport.txt, weighted as the eye weighs R, G and B.
-constexpr float kLuminance[3] = {0.2126f, 0.7152f, 0.0722f};
-
+/// The one transfer vector that best stands for three coloured ones in the course's
+/// single-vector transport.txt: weighted as the eye weighs R, G and B (core/color.h).
 Transport LuminanceMix(const Transport& t) {
   Transport mix;
   mix.lmax = t.lmax;
@@ -26,17 +24,17 @@ Transport LuminanceMix(const Transport& t) {
   mix.coeffs.assign(t.vertices * n, 0.0f);
   for (std::size_t v = 0; v < t.vertices; ++v)
     for (int c = 0; c < 3; ++c)
-      for (std::size_t k = 0; k < n; ++k) mix.coeffs[v * n + k] += kLuminance[c] * t.at(v, c)[k];
+      for (std::size_t k = 0; k < n; ++k) mix.coeffs[v * n + k] += static_cast<float>(kLuminanceWeights[c]) * t.at(v, c)[k];
   return mix;
 }
 
 }  // namespace
 
 CommandSpec PrecomputeSpec() {
-  OptionGroup output{"output options",
-                     {RenderOptionGroup(RenderOptions{}, {"--out"}).options[0],
-                      RenderOptionGroup(RenderOptions{}, {"--cache"}).options[0], QuietOption()}};
-  output.options[0].default_text = "required";
+  RenderOptions no_out;
+  no_out.out.clear();  // its help then says "required"
+  OptionGroup output = RenderOptionGroup(no_out, {"--out", "--cache"}, "output options");
+  output.options.push_back(QuietOption());
   output.options[0].help = "output folder, created if missing; one run at a time, and after a successful run it "
                            "holds exactly that run's files";
   OptionGroup scene = SceneOptionGroup(SceneOptions{}, AllSceneOptionNames());

@@ -7,11 +7,9 @@
 #include "app/pipeline.h"
 #include "app/report_image.h"
 #include "core/atomic_file.h"
-#include "core/error.h"
 #include "core/log.h"
 #include "io/png_io.h"
 #include "precompute/reference.h"
-#include "raster/exposure.h"
 
 namespace prt {
 namespace {
@@ -54,9 +52,7 @@ int RunReference(const std::vector<std::string>& tokens) {
   OutputFolder folder(render.out);
 
   const Mesh mesh = LoadSceneMesh(scene, &folder);
-  std::string up_note;
-  const Camera camera = ChooseCamera(mesh, render, &up_note);
-  Summary("camera: " + CameraArgs(camera) + (up_note.empty() ? "" : " (" + up_note + ")"));
+  const Camera camera = SceneCamera(mesh, render);
   const auto env = LoadSceneEnvironment(scene, &folder);
   ReferenceOptions ro;
   ro.mode = TransportModeFromName(scene.transport);
@@ -65,7 +61,7 @@ int RunReference(const std::vector<std::string>& tokens) {
   ro.seed = scene.seed;
   const auto t0 = std::chrono::steady_clock::now();
   const Reference ref = ComputeReference(mesh, *env, ro);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = SecondsSince(t0);
   char line[400];
   std::snprintf(line, sizeof line,
                 "reference: %s, %d importance-sampled lattice directions per vertex in two halves, %llu rays "
@@ -84,11 +80,7 @@ int RunReference(const std::vector<std::string>& tokens) {
   WriteFileAtomic(folder.Output("reference.txt"), text);
   double exposure = 0.0;
   WritePng(folder.Output("reference.png"), DrawVertexColors(mesh, ToFloat(ref.radiance), *env, camera, render, &exposure));
-  if (!render.exposure) {
-    std::snprintf(line, sizeof line, "exposure: auto -> %.1f EV, measured on this picture (--exposure %.1f repeats it)",
-                  exposure, exposure);
-    Summary(line + AutoExposureLimitNote(exposure));
-  }
+  if (!render.exposure) ReportAutoExposure(exposure, "this picture");
   FinishOutputs(folder);
   Summary("wrote " + render.out + "/reference.txt and " + render.out + "/reference.png");
   return 0;

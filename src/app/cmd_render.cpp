@@ -19,10 +19,7 @@ int RunRender(const std::vector<std::string>& tokens) {
   const SceneOptions scene = ReadSceneOptions(args);
   const RenderOptions render = CompleteRenderOptions(args, ReadRenderOptions(args, RenderOptions{}), scene);
   args.Finish();
-  OutputFolder folder(render.out);
-  RenderJob(scene, render, folder);
-  FinishOutputs(folder);
-  NoteForeignFrames(folder);
+  RenderJob(scene, render);
   return 0;
 }
 

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/commands.h"
+#include "app/pipeline.h"
 #include "core/atomic_file.h"
 #include "core/log.h"
 #include "core/output_folder.h"
@@ -13,7 +14,6 @@
 #include "env/cubemap.h"
 #include "env/equirect.h"
 #include "env/procedural.h"
-#include "geometry/mesh_ops.h"
 #include "geometry/procedural.h"
 #include "io/hdr_writer.h"
 #include "io/obj_writer.h"
@@ -23,9 +23,7 @@ namespace {
 
 std::vector<ObjPart> SampleScene() {
   Mesh knot = MakeTorusKnot(2, 3, 0.16f, 192, 20);
-  const Bounds3 b = MeshBounds(knot);
-  const float scale = 2.0f / (b.hi.y - b.lo.y);
-  TransformMesh(knot, scale, glm::vec3(0.0f, 0.05f - scale * b.lo.y, 0.0f));
+  StandUpright(knot, 2.0f, 0.05f);
   return {{"knot", knot, glm::vec3(0.80f, 0.30f, 0.20f)}, {"ground", MakePlane(8.0f, 1), glm::vec3(0.75f)}};
 }
 
@@ -53,12 +51,12 @@ int RunSampleFiles(const std::vector<std::string>& tokens) {
     OutputFolder cube(out + "/sky_cubemap");
     const auto faces = CubemapFaceImages(radiance, 128);
     for (int f = 0; f < 6; ++f) WriteFileAtomic(cube.Output(std::string(kFaceNames[f]) + ".hdr"), EncodeHdr(faces[f]));
-    cube.Finish();
+    FinishOutputs(cube);
   }
   const auto parts = SampleScene();
   WriteFileAtomic(folder.Output("scene.obj"), FormatObj(parts, "scene.mtl"));
   WriteFileAtomic(folder.Output("scene.mtl"), FormatMtl(parts));
-  folder.Finish();
+  FinishOutputs(folder);
   Summary("wrote " + out + "/sky.hdr, " + out + "/sky_cubemap/ (posx ... negz .hdr) and " + out +
           "/scene.obj with scene.mtl");
   return 0;

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <sstream>
 
+#include "core/text.h"
+
 namespace prt {
 namespace {
 
@@ -121,6 +123,17 @@ std::string UnknownMessage(const std::string& given, const std::string& what,
                            const std::vector<std::string>& candidates) {
   const std::string near = NearestName(given, candidates);
   return given + ": unknown " + what + (near.empty() ? "" : " (did you mean " + near + "?)");
+}
+
+OptionGroup PickOptions(const std::map<std::string, OptionSpec>& specs, const std::vector<std::string>& names,
+                        const std::string& title) {
+  OptionGroup group{title, {}};
+  for (const auto& n : names) group.options.push_back(specs.at(n));
+  return group;
+}
+
+std::string VecText(const glm::dvec3& v) {
+  return Formatted("%g", v.x) + "," + Formatted("%g", v.y) + "," + Formatted("%g", v.z);
 }
 
 OptionSpec QuietOption() { return {"--quiet", "", "no progress, warnings or run summary on stderr (errors are still printed)", ""}; }

@@ -8,8 +8,11 @@
 ///   Args args("light", tokens, spec);      // unknown options: a usage error with a suggestion
 ///   std::printf("%s", FormatHelp(spec).c_str());
 
+#include <map>
 #include <string>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 namespace prt {
 
@@ -53,6 +56,13 @@ std::string NearestName(const std::string& given, const std::vector<std::string>
 /// "--x: unknown option" with " (did you mean --y?)" when a near name exists.
 std::string UnknownMessage(const std::string& given, const std::string& what,
                            const std::vector<std::string>& candidates);
+
+/// The options `names` of `specs`, in that order, as a help group titled `title`.
+OptionGroup PickOptions(const std::map<std::string, OptionSpec>& specs, const std::vector<std::string>& names,
+                        const std::string& title);
+
+/// X,Y,Z as an option value is written (%g each), for defaults in help texts.
+std::string VecText(const glm::dvec3& v);
 
 /// The `--quiet` option every command accepts.
 OptionSpec QuietOption();

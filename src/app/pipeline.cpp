@@ -9,23 +9,15 @@
 #include "core/error.h"
 #include "core/atomic_file.h"  // WriteProblem
 #include "core/log.h"
+#include "core/text.h"
 #include "env/load_environment.h"
 #include "io/transport_cache.h"
 #include "precompute/light.h"
+#include "raster/exposure.h"
 #include "sh/window.h"
 
 namespace prt {
 namespace {
-
-double SecondsSince(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-std::string Format(const char* fmt, double a, double b = 0.0) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, fmt, a, b);
-  return buf;
-}
 
 /// A vertex whose T_0 is below this share of the unoccluded T_0 sees (almost) no light: inside
 /// an inside-out mesh only what leaks through holes in it, a few percent.
@@ -53,7 +45,7 @@ std::unique_ptr<Environment> LoadSceneEnvironment(const SceneOptions& options, O
   auto env = LoadEnvironment(options.env, options.layout);
   std::error_code ec;
   if (folder && std::filesystem::exists(options.env, ec)) folder->KeepInput(options.env);  // not a built-in
-  Summary("environment: " + env->Describe() + Format(" [%.3f s]", SecondsSince(t0)));
+  Summary("environment: " + env->Describe() + Formatted(" [%.3f s]", SecondsSince(t0)));
   return env;
 }
 
@@ -62,12 +54,12 @@ ShRgb ComputeLight(const Environment& env, const SceneOptions& options) {
   ShRgb light = ProjectLight(env, options.lmax);
   std::string line = "light: lmax " + std::to_string(options.lmax) + " (" +
                      std::to_string(CoeffCount(options.lmax)) + " coefficients)" +
-                     Format(" [%.3f s]", SecondsSince(t0));
+                     Formatted(" [%.3f s]", SecondsSince(t0));
   if (options.window == "auto") {
     const AutoWindow choice = ChooseWindow(light);
     ApplyWindow(choice.window, light);
     line += std::string("; window auto -> ") + WindowName(choice.window) +
-            Format(" (lowest reconstructed radiance %.3g without, %.3g with)", choice.min_before,
+            Formatted(" (lowest reconstructed radiance %.3g without, %.3g with)", choice.min_before,
                    choice.min_after);
     if (choice.window == Window::kNone) line += ", no windowing needed: already non-negative";
   } else if (options.window != "none") {
@@ -76,6 +68,18 @@ ShRgb ComputeLight(const Environment& env, const SceneOptions& options) {
   }
   Summary(line);
   return light;
+}
+
+Camera SceneCamera(const Mesh& mesh, const RenderOptions& render) {
+  std::string up_note;
+  const Camera camera = ChooseCamera(mesh, render, &up_note);
+  Summary("camera: " + CameraArgs(camera) + (up_note.empty() ? "" : " (" + up_note + ")"));
+  return camera;
+}
+
+void ReportAutoExposure(double ev, const std::string& what) {
+  Summary(Formatted("exposure: auto -> %.1f EV, measured on %s (--exposure %.1f repeats it)", ev, what.c_str(), ev) +
+          AutoExposureLimitNote(ev));
 }
 
 TransportOptions TransportOptionsOf(const SceneOptions& options) {
@@ -143,11 +147,11 @@ Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, c
   Transport transport = ComputeTransport(mesh, topts, &r);
   const double seconds = SecondsSince(t0);
   std::string line = std::string("transport: ") + TransportModeName(topts.mode) + ", lmax " +
-                     std::to_string(topts.lmax) + Format(" [%.3f s]", seconds);
+                     std::to_string(topts.lmax) + Formatted(" [%.3f s]", seconds);
   if (topts.mode == TransportMode::kUnshadowed) {
     line += "; closed form at every vertex: no BVH, no rays";
   } else {
-    line += Format("; BVH %.3f s; ", r.bvh_seconds) + std::to_string(r.directions_per_vertex) + " " +
+    line += Formatted("; BVH %.3f s; ", r.bvh_seconds) + std::to_string(r.directions_per_vertex) + " " +
             SamplerName(topts.sampler) + " directions per vertex, " + std::to_string(r.rays) +
             " rays (none below the horizon); " + std::to_string(r.closed_form_vertices) + " of " +
             std::to_string(mesh.vertex_count()) + " vertices unoccluded, given the exact closed form";
@@ -156,9 +160,9 @@ Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, c
   if (topts.mode == TransportMode::kInterreflection) {
     std::string bounces = "bounces: ";
     for (std::size_t b = 0; b < r.bounce_share.size(); ++b)
-      bounces += Format(b ? ", %.3g" : "%.3g", r.bounce_share[b]);
+      bounces += Formatted(b ? ", %.3g" : "%.3g", r.bounce_share[b]);
     if (r.bounce_share.empty()) bounces += "none";
-    bounces += " of the direct energy; " + r.bounce_stop + Format(" [%.3f s]", r.bounce_seconds);
+    bounces += " of the direct energy; " + r.bounce_stop + Formatted(" [%.3f s]", r.bounce_seconds);
     if (transport.channels == 3) bounces += "; coloured albedo: one transport vector per colour channel";
     Summary(bounces);
   }

@@ -4,7 +4,7 @@
 ///
 ///   args -> SceneOptions, RenderOptions            (checked before any work)
 ///        -> OutputFolder (created, locked)
-///        -> LoadSceneMesh -> Mesh (oriented, split)  -> ChooseCamera
+///        -> LoadSceneMesh -> Mesh (oriented, split)  -> SceneCamera
 ///        -> LoadSceneEnvironment -> ComputeLight -> light SH
 ///        -> ComputeSceneTransport (or the cache) -> Transport
 ///        -> RenderFrames -> frame_0000.png ...     -> OutputFolder::Finish
@@ -21,6 +21,7 @@
 #include "env/environment.h"
 #include "geometry/mesh.h"
 #include "precompute/transport.h"
+#include "raster/camera.h"
 #include "sh/coeffs.h"
 
 namespace prt {
@@ -28,6 +29,14 @@ namespace prt {
 /// The environment named by the options, described on the run summary. With a `folder`, the
 /// file or cubemap folder read is recorded as an input of its run (OutputFolder::KeepInput).
 std::unique_ptr<Environment> LoadSceneEnvironment(const SceneOptions& options, OutputFolder* folder = nullptr);
+
+/// The camera of the options for `mesh` (ChooseCamera), said on the run summary in option syntax
+/// (with the up chosen when world up was parallel to the view).
+Camera SceneCamera(const Mesh& mesh, const RenderOptions& render);
+
+/// Says the automatic exposure `ev` on the run summary, measured on `what`, in the option
+/// syntax that repeats it (and when it hit its limit).
+void ReportAutoExposure(double ev, const std::string& what);
 
 /// The environment's SH coefficients for bands 0..options.lmax, windowed as asked
 /// (`auto` picks the mildest window that keeps the reconstruction non-negative and says why).
@@ -66,12 +75,9 @@ Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, c
 /// wrote there and this one did not, and says so on the run summary.
 void FinishOutputs(OutputFolder& folder);
 
-/// Says how many frame files in `folder` this run did not write and prt has no record of
-/// (after FinishOutputs, which removes those it has): they are left as they are.
-void NoteForeignFrames(OutputFolder& folder);
-
-/// The whole main job: mesh, camera, light, transport, frames into `folder`; each stage
-/// reports on the run summary. Used by `render` and `demo`.
-void RenderJob(const SceneOptions& scene, const RenderOptions& render, OutputFolder& folder);
+/// The whole main job: the output folder (render.out), mesh, camera, light, transport, frames,
+/// then the folder finished; each stage reports on the run summary, and frame files there that
+/// prt has no record of are counted. Used by `render` and `demo`.
+void RenderJob(const SceneOptions& scene, const RenderOptions& render);
 
 }  // namespace prt

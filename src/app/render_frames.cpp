@@ -8,7 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
-#include "core/error.h"
+#include "core/log.h"
 #include "core/progress.h"
 #include "geometry/mesh_ops.h"
 #include "io/image_load.h"
@@ -23,10 +23,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double Since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 /// Radiance of the SH reconstruction sum_k L_k Y_k(d).
 glm::vec3 Reconstruct(const ShRgb& light, const glm::dvec3& d) {
   const int lmax = LmaxOfCount(light.size());
@@ -37,9 +33,9 @@ glm::vec3 Reconstruct(const ShRgb& light, const glm::dvec3& d) {
   return glm::vec3(sum);
 }
 
-/// Per-vertex colours of the chosen view; `scale` receives max |T_K| for the transport view.
+/// Per-vertex colours of the chosen view; `scale` is TransportViewScale for the transport view.
 std::vector<glm::vec3> ViewColors(const Mesh& mesh, const Transport& transport, const ShRgb& lit,
-                                  const RenderOptions& o, double& scale) {
+                                  const RenderOptions& o, double scale) {
   if (o.view == "irradiance") return ShadeVertices(mesh, transport, lit, false);
   if (o.view == "albedo") return mesh.albedo;
   std::vector<glm::vec3> colors(mesh.vertex_count());
@@ -48,8 +44,6 @@ std::vector<glm::vec3> ViewColors(const Mesh& mesh, const Transport& transport, 
     return colors;
   }
   if (o.view == "transport") {
-    scale = 0.0;
-    for (std::size_t v = 0; v < colors.size(); ++v) scale = std::max(scale, double(std::abs(transport.at(v, 0)[o.transport_index])));
     const double s = scale > 0 ? scale : 1.0;
     for (std::size_t v = 0; v < colors.size(); ++v) {
       // Palette colours are display values: decode them so the sRGB tone curve restores them.
@@ -78,7 +72,9 @@ std::string FrameName(int i, int count) {
 Camera ChooseCamera(const Mesh& mesh, const RenderOptions& o, std::string* note) {
   const Bounds3 b = MeshBounds(mesh);
   const float aspect = float(o.width) / float(o.height);
-  Camera c = FramePoints(mesh.positions, aspect, o.fov ? float(*o.fov) : Camera{}.fov_deg);
+  // Fitted only when the eye is not given (a given eye decides the view; the target then
+  // defaults to the mesh's centre).
+  Camera c = o.eye ? Camera{} : FramePoints(mesh.positions, aspect, o.fov ? float(*o.fov) : Camera{}.fov_deg);
   if (o.eye) c.eye = glm::vec3(*o.eye);
   if (o.target) c.target = glm::vec3(*o.target);
   else if (o.eye) c.target = 0.5f * (b.lo + b.hi);
@@ -103,13 +99,12 @@ Camera ChooseCamera(const Mesh& mesh, const RenderOptions& o, std::string* note)
 
 const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport,
                                   const ShRgb& light, const AxisRotation& rotation, const Environment& env,
-                                  const Camera& camera, const RenderOptions& o, double angle) {
+                                  const Camera& camera, const RenderOptions& o, double angle, double view_scale) {
   // The light, and the environment behind the mesh, turned by R: L'(d) = L(R^T d). Only the
   // bands the transport has are turned.
   const ShRgb used(light.begin(), light.begin() + std::min(light.size(), std::size_t(CoeffCount(transport.lmax))));
   const ShRgb lit = rotation.Rotate(used, angle);
-  double scale = 0.0;
-  const std::vector<glm::vec3> colors = ViewColors(mesh, transport, lit, o, scale);
+  const std::vector<glm::vec3> colors = ViewColors(mesh, transport, lit, o, view_scale);
   RasterOptions ro;
   ro.ssaa = o.ssaa;
   ro.background.color = o.background_color;
@@ -124,18 +119,13 @@ const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, cons
   return rasterizer.Draw(camera, o.width, o.height, mesh.positions, mesh.triangles, colors, ro);
 }
 
-ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                     const AxisRotation& rotation, const Environment& env, const Camera& camera,
-                     const RenderOptions& o, double angle, double exposure_ev) {
-  const RasterImage& frame = RasterizeFrame(rasterizer, mesh, transport, light, rotation, env, camera, o, angle);
+ToneMapped ToneMapFrame(const RasterImage& frame, const RenderOptions& o, double exposure_ev, double view_scale) {
   ToneMapOptions tone;
   tone.curve = o.tonemap;
   tone.exposure_ev = float(exposure_ev);
   if (o.view == "transport") tone = ToneMapOptions{};  // false colours pass through unchanged
   ToneMapped mapped = ToneMap(frame.image, tone);
-  if (o.view == "transport")
-    DrawDivergingLegend(mapped.image, TransportViewScale(transport, o.transport_index),
-                        "T" + std::to_string(o.transport_index));
+  if (o.view == "transport") DrawDivergingLegend(mapped.image, view_scale, "T" + std::to_string(o.transport_index));
   return mapped;
 }
 
@@ -146,12 +136,12 @@ double TransportViewScale(const Transport& transport, int index) {
   return scale;
 }
 
-double ResolveExposure(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                       const AxisRotation& rotation, const Environment& env, const Camera& camera,
-                       const RenderOptions& o) {
-  if (o.exposure) return *o.exposure;
-  if (o.view == "transport") return 0.0;
-  return AutoExposureEv(RasterizeFrame(rasterizer, mesh, transport, light, rotation, env, camera, o, 0.0), o.tonemap);
+ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
+                     const AxisRotation& rotation, const Environment& env, const Camera& camera,
+                     const RenderOptions& o, double angle, double exposure_ev) {
+  const double scale = o.view == "transport" ? TransportViewScale(transport, o.transport_index) : 0.0;
+  return ToneMapFrame(RasterizeFrame(rasterizer, mesh, transport, light, rotation, env, camera, o, angle, scale), o,
+                      exposure_ev, scale);
 }
 
 FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Environment& env,
@@ -160,28 +150,36 @@ FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRg
   stats.frames = o.frames;
   Rasterizer rasterizer;
   const AxisRotation rotation(o.axis, transport.lmax);
-  stats.exposure = ResolveExposure(rasterizer, mesh, transport, light, rotation, env, camera, o);
+  const bool transport_view = o.view == "transport";
+  const double view_scale = transport_view ? TransportViewScale(transport, o.transport_index) : 0.0;
+  stats.legend_left_out =
+      transport_view && !LayoutDivergingLegend(o.width, o.height, view_scale, "T" + std::to_string(o.transport_index));
+  // The automatic exposure is measured on frame 0 (its light at angle 0) and used for all frames.
+  const bool measure = !o.exposure && !transport_view;
+  stats.exposure = o.exposure.value_or(0.0);
   std::future<void> writing;  // the previous frame's encode-and-write
   Progress progress("rendering", static_cast<std::size_t>(o.frames));
   for (int i = 0; i < o.frames; ++i) {
     // Each frame from its absolute angle: no accumulated drift.
     const double angle = 2.0 * kPi * o.turns * double(i) / double(o.frames);
     const auto t0 = std::chrono::steady_clock::now();
-    ToneMapped mapped = DrawFrame(rasterizer, mesh, transport, light, rotation, env, camera, o, angle, stats.exposure);
-    stats.draw_seconds += Since(t0);
+    const RasterImage& frame = RasterizeFrame(rasterizer, mesh, transport, light, rotation, env, camera, o, angle, view_scale);
+    if (i == 0 && measure) stats.exposure = AutoExposureEv(frame, o.tonemap);
+    ToneMapped mapped = ToneMapFrame(frame, o, stats.exposure, view_scale);
+    stats.draw_seconds += SecondsSince(t0);
     stats.negative_pixels += mapped.negative_pixels;
     stats.nan_pixels += mapped.nan_pixels;
 
     const auto t1 = std::chrono::steady_clock::now();
     if (writing.valid()) writing.get();  // rethrows a write error
-    stats.encode_seconds += Since(t1);
+    stats.encode_seconds += SecondsSince(t1);
     const std::string path = folder.Output(FrameName(i, o.frames));
     writing = std::async(std::launch::async, [path, image = std::move(mapped.image)] { WritePng(path, image); });
     progress.Advance(1);
   }
   const auto t1 = std::chrono::steady_clock::now();
   if (writing.valid()) writing.get();
-  stats.encode_seconds += Since(t1);
+  stats.encode_seconds += SecondsSince(t1);
   return stats;
 }
 

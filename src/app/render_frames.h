@@ -29,6 +29,7 @@ struct FrameStats {
   std::size_t negative_pixels = 0;  ///< summed over frames: pixels whose radiance was < 0 (ringing)
   std::size_t nan_pixels = 0;
   double draw_seconds = 0, encode_seconds = 0;
+  bool legend_left_out = false;     ///< transport view: the frame is too small for a readable legend
 };
 
 /// The largest |T_index| over the vertices: the ends of the transport view's colour scale.
@@ -42,23 +43,26 @@ Camera ChooseCamera(const Mesh& mesh, const RenderOptions& options, std::string*
 
 /// The linear frame with the light turned by `angle` radians by `rotation` (about the options'
 /// axis, built once per run for the transport's lmax): shading, rasterizing over the turned
-/// environment (the teaching view transport:K over a neutral grey instead). `rasterizer` keeps
-/// its buffers; the result is valid until its next call.
+/// environment (the teaching view transport:K over a neutral grey instead, its colours scaled
+/// by `view_scale`, TransportViewScale). `rasterizer` keeps its buffers; the result is valid
+/// until its next call.
 const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport,
                                   const ShRgb& light, const AxisRotation& rotation, const Environment& env,
-                                  const Camera& camera, const RenderOptions& options, double angle);
+                                  const Camera& camera, const RenderOptions& options, double angle,
+                                  double view_scale);
 
-/// RasterizeFrame, then tone mapping with `exposure_ev` (and the legend of transport:K).
+/// A rasterized frame tone mapped with `exposure_ev` (the transport view: passed through, with
+/// its legend from -view_scale to +view_scale).
+ToneMapped ToneMapFrame(const RasterImage& frame, const RenderOptions& options, double exposure_ev, double view_scale);
+
+/// One frame, RasterizeFrame then ToneMapFrame (for tests: RenderFrames does the same once per
+/// frame, with the scale computed once).
 ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
                      const AxisRotation& rotation, const Environment& env, const Camera& camera,
                      const RenderOptions& options, double angle, double exposure_ev);
 
-/// The exposure of the options, or for `auto` the one measured on frame 0 (raster/exposure.h).
-double ResolveExposure(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                       const AxisRotation& rotation, const Environment& env, const Camera& camera,
-                       const RenderOptions& options);
-
-/// Renders all frames into `folder`, each named through folder.Output().
+/// Renders all frames into `folder`, each named through folder.Output(); the automatic
+/// exposure (raster/exposure.h) is measured on frame 0 and used for every frame.
 FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Environment& env,
                         const Camera& camera, const RenderOptions& options, OutputFolder& folder);
 

@@ -5,17 +5,10 @@
 
 #include "app/pipeline.h"
 #include "core/log.h"
-#include "raster/annotate.h"
-#include "raster/exposure.h"
+#include "core/text.h"
 
 namespace prt {
 namespace {
-
-std::string Format(const char* fmt, double a, double b = 0.0) {
-  char buf[256];
-  std::snprintf(buf, sizeof buf, fmt, a, b);
-  return buf;
-}
 
 /// Frame files in the folder that this run did not write and prt's list did not name (written
 /// by someone else, or by a prt older than the list): never removed, but worth a word.
@@ -30,16 +23,24 @@ std::size_t ForeignFrames(OutputFolder& folder) {
   return n;
 }
 
+/// Says how many frame files in `folder` this run did not write and prt has no record of
+/// (after FinishOutputs, which removes those it has): they are left as they are.
+void NoteForeignFrames(OutputFolder& folder) {
+  if (const std::size_t n = ForeignFrames(folder))
+    Summary("note: " + std::to_string(n) + " frame file" + (n > 1 ? "s" : "") + " in " + folder.dir() +
+            " not written by this run " + (n > 1 ? "were" : "was") + " left untouched (prt has no record of writing " +
+            (n > 1 ? "them)" : "it)"));
+}
+
 }  // namespace
 
-void RenderJob(const SceneOptions& scene, const RenderOptions& render, OutputFolder& folder) {
+void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
+  OutputFolder folder(render.out);
   const CachePlan cache = PlanCache(render.cache, &folder);
 
   // Mesh and camera first: a camera that cannot see is refused before any light is loaded.
   const Mesh mesh = LoadSceneMesh(scene, &folder);
-  std::string up_note;
-  const Camera camera = ChooseCamera(mesh, render, &up_note);
-  Summary("camera: " + CameraArgs(camera) + (up_note.empty() ? "" : " (" + up_note + ")"));
+  const Camera camera = SceneCamera(mesh, render);
 
   const auto env = LoadSceneEnvironment(scene, &folder);
   const ShRgb light = ComputeLight(*env, scene);
@@ -48,30 +49,20 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render, OutputFol
   Summary("rotation: " + rotation.Describe() + "; only the " + std::to_string(CoeffCount(transport.lmax)) +
           " coefficients the transport has are turned");
 
-  if (render.view == "transport" &&
-      !LayoutDivergingLegend(render.width, render.height, TransportViewScale(transport, render.transport_index),
-                             "T" + std::to_string(render.transport_index)))
+  const FrameStats stats = RenderFrames(mesh, transport, light, *env, camera, render, folder);
+  if (stats.legend_left_out)
     Summary("legend: left out, a " + std::to_string(render.width) + "x" + std::to_string(render.height) +
             " frame is too small to hold it readably");
-  const FrameStats stats = RenderFrames(mesh, transport, light, *env, camera, render, folder);
-  if (!render.exposure && render.view != "transport")
-    Summary(Format("exposure: auto -> %.1f EV, measured on frame 0's mesh pixels (--exposure %.1f repeats it)",
-                   stats.exposure, stats.exposure) +
-            AutoExposureLimitNote(stats.exposure));
+  if (!render.exposure && render.view != "transport") ReportAutoExposure(stats.exposure, "frame 0's mesh pixels");
   Summary("frames: " + std::to_string(stats.frames) + " of " + std::to_string(render.width) + "x" +
           std::to_string(render.height) + " in " + folder.dir() + "/" +
-          Format(" [draw %.3f s, waiting for PNG encoding %.3f s]", stats.draw_seconds, stats.encode_seconds));
+          Formatted(" [draw %.3f s, waiting for PNG encoding %.3f s]", stats.draw_seconds, stats.encode_seconds));
   if (stats.negative_pixels > 0)
     Summary("ringing: " + std::to_string(stats.negative_pixels) +
             " pixels over all frames had negative radiance (SH ringing), clamped to 0; --window auto reduces it");
   if (stats.nan_pixels > 0) Summary("warning: " + std::to_string(stats.nan_pixels) + " NaN pixels set to 0");
-}
-
-void NoteForeignFrames(OutputFolder& folder) {
-  if (const std::size_t n = ForeignFrames(folder))
-    Summary("note: " + std::to_string(n) + " frame file" + (n > 1 ? "s" : "") + " in " + folder.dir() +
-            " not written by this run " + (n > 1 ? "were" : "was") + " left untouched (prt has no record of writing " +
-            (n > 1 ? "them)" : "it)"));
+  FinishOutputs(folder);
+  NoteForeignFrames(folder);
 }
 
 }  // namespace prt

@@ -7,21 +7,17 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/text.h"
+#include "raster/camera.h"
 #include "raster/rasterizer.h"
 #include "sh/coeffs.h"
 
 namespace prt {
 namespace {
 
-std::string Number(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", v);
-  return buffer;
-}
-
-std::string Vec(const glm::dvec3& v) { return Number(v.x) + "," + Number(v.y) + "," + Number(v.z); }
 
 std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
+  const RenderOptions demo = WithDemoCamera({});  // the embedded scene's camera
   std::map<std::string, OptionSpec> s;
   auto add = [&s](OptionSpec o) { s[o.name] = std::move(o); };
   add({"--frames", "N", "frames over the turns, 1..100000 (frame i shows the light turned by 360 * turns * i / N degrees)",
@@ -31,8 +27,8 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
        "output folder, created if missing; one run at a time, and after a successful run it holds exactly that "
        "run's outputs (older prt outputs it did not rewrite are removed, other files are never touched)",
        d.out.empty() ? "required" : d.out});
-  add({"--axis", "X,Y,Z", "rotation axis of the light", Vec(d.axis) + ", world up"});
-  add({"--turns", "T", "full turns of the light over all frames, -1e6..1e6", Number(d.turns)});
+  add({"--axis", "X,Y,Z", "rotation axis of the light", VecText(d.axis) + ", world up"});
+  add({"--turns", "T", "full turns of the light over all frames, -1e6..1e6", Formatted("%g", double(d.turns))});
   add({"--background", "B", "env | black | R,G,B (linear, each >= 0): env draws the environment, turning with the light",
        d.env_background ? "env" : "black"});
   add({"--tonemap", "T", "srgb (clamp) | reinhard | aces (a filmic curve that keeps bright suns from clipping)",
@@ -40,7 +36,7 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
   add({"--exposure", "EV",
        "radiance is scaled by 2^EV before tone mapping, -20..20; auto: chosen from frame 0's mesh pixels and "
        "printed on the run summary, so a run can be repeated exactly",
-       d.exposure ? Number(*d.exposure) : "auto"});
+       d.exposure ? Formatted("%g", double(*d.exposure)) : "auto"});
   add({"--ssaa", "K", "K x K supersampling per pixel, 1..8", std::to_string(d.ssaa)});
   add({"--view", "V",
        "radiance | irradiance | albedo | transport:K | light: the final colour; the lighting alone (albedo 1); "
@@ -48,14 +44,18 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
        "light as the SH coefficients reconstruct it (on the mesh: in the normal's direction)",
        d.view == "transport" ? "transport:" + std::to_string(d.transport_index) : d.view});
   add({"--eye", "X,Y,Z", "camera position",
-       d.eye ? Vec(*d.eye) : "a three-quarter view fitted to the mesh's projected bounds; 6,3.2,9 for the embedded scene"});
+       d.eye ? VecText(*d.eye)
+             : "a three-quarter view fitted to the mesh's projected bounds; " + VecText(*demo.eye) + " for the embedded scene"});
   add({"--target", "X,Y,Z", "point the camera looks at (the image centre)",
-       d.target ? Vec(*d.target) : "fitted with --eye; the mesh's centre when only --eye is given; 0,1.5,0 for the embedded scene"});
+       d.target ? VecText(*d.target)
+                : "fitted with --eye; the mesh's centre when only --eye is given; " + VecText(*demo.target) +
+                      " for the embedded scene"});
   add({"--up", "X,Y,Z",
        "camera up direction (when the default 0,1,0 is parallel to the view, a perpendicular one is chosen and "
        "printed)",
-       d.up ? Vec(*d.up) : "0,1,0"});
-  add({"--fov", "DEGREES", "vertical field of view, 0.001..179", d.fov ? Number(*d.fov) : "35; 36 for the embedded scene"});
+       d.up ? VecText(*d.up) : "0,1,0"});
+  add({"--fov", "DEGREES", "vertical field of view, 0.001..179", d.fov ? Formatted("%g", double(*d.fov))
+             : Formatted("%g; %g for the embedded scene", double(Camera{}.fov_deg), *demo.fov)});
   add({"--cache", "PATH",
        "transport cache to reuse and update, so a re-run with the same mesh and options skips the precompute; "
        "`none` disables it; a path that cannot be used is a warning, not an error",
@@ -146,10 +146,7 @@ const std::vector<std::string>& AllRenderOptionNames() {
 
 OptionGroup RenderOptionGroup(const RenderOptions& defaults, const std::vector<std::string>& names,
                               const std::string& title) {
-  const auto specs = RenderSpecs(defaults);
-  OptionGroup group{title, {}};
-  for (const auto& n : names) group.options.push_back(specs.at(n));
-  return group;
+  return PickOptions(RenderSpecs(defaults), names, title);
 }
 
 RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
@@ -205,7 +202,8 @@ RenderOptions CompleteRenderOptions(Args& args, RenderOptions o, const SceneOpti
     if (!o.fov) o.fov = demo.fov;
     if (glm::length(*o.target - *o.eye) < 1e-12)
       args.Fail(std::string(args.Has("--eye") ? "--eye" : "--target") +
-                ": equals the embedded scene's camera " + (args.Has("--eye") ? "target 0,1.5,0" : "eye 6,3.2,9") +
+                ": equals the embedded scene's camera " +
+                (args.Has("--eye") ? "target " + VecText(*demo.target) : "eye " + VecText(*demo.eye)) +
                 " (expected two different points)");
     if (args.Has("--up") && glm::length(glm::cross(glm::normalize(*o.target - *o.eye), glm::normalize(*o.up))) < 1e-6)
       args.Fail("--up: parallel to the view direction --target - --eye (expected a direction across it)");

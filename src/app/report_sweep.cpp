@@ -19,7 +19,6 @@ namespace prt {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-double Since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 ShRgb Prefix(const ShRgb& light, int lmax) { return ShRgb(light.begin(), light.begin() + CoeffCount(lmax)); }
 
@@ -64,7 +63,7 @@ Transport Timed(const Mesh& mesh, TransportOptions o, double& seconds, int& dire
   TransportReport r;
   const auto t0 = Clock::now();
   Transport t = ComputeTransport(mesh, o, &r);
-  seconds = Since(t0);
+  seconds = SecondsSince(t0);
   directions = r.directions_per_vertex;
   return t;
 }
@@ -73,9 +72,7 @@ Transport Timed(const Mesh& mesh, TransportOptions o, double& seconds, int& dire
 
 Mesh MakeReportScene() {
   Mesh knot = MakeTorusKnot(2, 3, 0.16f, 128, 16, glm::vec3(0.80f, 0.38f, 0.20f));
-  const Bounds3 b = MeshBounds(knot);
-  const float scale = 3.4f / (b.hi.y - b.lo.y);
-  TransformMesh(knot, scale, glm::vec3(0.0f, -scale * b.lo.y, 0.0f));
+  StandUpright(knot, 3.4f);
   Mesh scene = MakePlane(12.0f, 24, 0.0f, glm::vec3(0.7f, 0.7f, 0.7f));
   AppendMesh(scene, knot);
   return scene;
@@ -104,7 +101,7 @@ ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::s
     ro.seed = c.seed + 1000;
     auto t0 = Clock::now();
     const Reference reference = ComputeReference(mesh, env, ro);
-    base.reference_seconds = Since(t0);
+    base.reference_seconds = SecondsSince(t0);
     base.reference_rms_error = reference.rms_error;
     base.reference_rms_radiance = reference.rms_radiance;
     base.reference_samples = c.reference_samples;
@@ -170,7 +167,7 @@ ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::s
     row.face_size = size;
     const auto t0 = Clock::now();
     const ShRgb projected = ProjectLight(*cube, c.max_lmax);
-    row.seconds = Since(t0);
+    row.seconds = SecondsSince(t0);
     row.coeff_error = RelativeL2(projected, light);
     data.light.push_back(row);
   }

@@ -8,12 +8,12 @@
 #include "app/pipeline.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/text.h"
 #include "geometry/mesh_ops.h"
 #include "geometry/orientation.h"
 #include "geometry/procedural.h"
 #include "geometry/subdivide.h"
 #include "io/obj_loader.h"
-#include "raster/camera.h"  // ShortestFloat
 
 namespace prt {
 namespace {
@@ -22,23 +22,13 @@ namespace {
 /// and the mesh would not fit comfortably in memory (about 100 bytes a triangle with its BVH).
 constexpr std::size_t kMaxSplitTriangles = 20'000'000;
 
-std::string Seconds(std::chrono::steady_clock::time_point t0) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, " [%.3f s]",
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  return buf;
-}
-
 /// What loading repaired or skipped, for the mesh's summary line.
 std::string LoadNotes(const MeshReport& report) {
   std::string notes;
   if (report.dropped_degenerate)
     notes += ", " + std::to_string(report.dropped_degenerate) + " zero-area triangles dropped";
   if (report.recomputed_normals) notes += ", " + std::to_string(report.recomputed_normals) + " normals computed";
-  if (report.skipped_lines)
-    notes += ", " + std::to_string(report.skipped_lines) + " line" + (report.skipped_lines > 1 ? "s" : "") +
-             " not understood and skipped (first: line " +
-             std::to_string(report.first_skipped_line) + ": '" + report.first_skipped_text + "')";
+  if (report.skipped_lines) notes += ", " + DescribeSkippedLines(report);
   return notes;
 }
 
@@ -46,9 +36,10 @@ void SplitLongTriangles(Mesh& mesh, const SceneOptions& options) {
   const Bounds3 box = MeshBounds(mesh);
   const double diagonal = glm::length(box.hi - box.lo);
   const float max_edge = static_cast<float>(MaxEdgeLength(options, diagonal));
-  if (!(max_edge > MinimumMaxEdge(mesh)))
+  const double finest = MinimumMaxEdge(mesh);
+  if (!(max_edge > finest))
     throw Error("--max-edge: " + ShortestFloat(max_edge) + " is finer than float coordinates resolve on this mesh " +
-                "(expected more than " + ShortestFloat(static_cast<float>(MinimumMaxEdge(mesh))) + ")");
+                "(expected more than " + ShortestFloat(static_cast<float>(finest)) + ")");
   const std::size_t estimate = EstimateSplitTriangles(mesh, max_edge);
   if (estimate > kMaxSplitTriangles) {
     char count[64];
@@ -62,7 +53,7 @@ void SplitLongTriangles(Mesh& mesh, const SceneOptions& options) {
   char line[200];
   std::snprintf(line, sizeof line, "split: no edge longer than %.4g: %zu triangles -> %zu, %zu vertices added", max_edge,
                 r.triangles_before, r.triangles_after, r.vertices_added);
-  Summary(line + Seconds(t0));
+  Summary(line + Formatted(" [%.3f s]", SecondsSince(t0)));
 }
 
 }  // namespace
@@ -85,7 +76,7 @@ Mesh LoadSceneMesh(const SceneOptions& options, OutputFolder* folder) {
     mesh = std::move(loaded.mesh);
   }
   Summary("mesh: " + what + ": " + std::to_string(mesh.vertex_count()) + " vertices, " +
-          std::to_string(mesh.triangle_count()) + " triangles" + Seconds(t0));
+          std::to_string(mesh.triangle_count()) + " triangles" + Formatted(" [%.3f s]", SecondsSince(t0)));
   if (!orientation.fixed.empty()) Summary("orientation: " + orientation.fixed);
   if (!orientation.warning.empty()) Warn(options.mesh + ": " + orientation.warning);
   ApplySceneEdits(mesh, options);

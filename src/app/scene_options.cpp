@@ -7,6 +7,7 @@
 
 #include "app/report_auto_lmax.h"
 #include "core/error.h"
+#include "core/text.h"
 #include "core/log.h"
 #include "core/parallel.h"
 #include "env/cubemap.h"
@@ -16,15 +17,9 @@
 namespace prt {
 namespace {
 
-std::string Number(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", v);
-  return buffer;
-}
-
 std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
   const std::string albedo =
-      d.albedo ? Number(d.albedo->x) + "," + Number(d.albedo->y) + "," + Number(d.albedo->z)
+      d.albedo ? VecText(*d.albedo)
                : "the materials' Kd; 0.8 grey without materials";
   std::map<std::string, OptionSpec> s;
   auto add = [&s](OptionSpec o) { s[o.name] = std::move(o); };
@@ -38,7 +33,7 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
   add({"--lmax", "L", "highest SH band, 0.." + std::to_string(kMaxLmax) +
                           ": (L+1)^2 coefficients; `auto`: the smallest whose irradiance error is within --tolerance",
        std::to_string(d.lmax) + ", " + std::to_string(CoeffCount(d.lmax)) + " coefficients"});
-  add({"--tolerance", "X", "relative irradiance error that --lmax auto must reach, 1e-12..1", Number(d.tolerance)});
+  add({"--tolerance", "X", "relative irradiance error that --lmax auto must reach, 1e-12..1", Formatted("%g", double(d.tolerance))});
   add({"--transport", "MODE",
        "unshadowed (closed form, no rays) | shadowed (visibility by ray casting) | interreflection (shadowed "
        "plus --bounces bounces of light between surfaces)",
@@ -66,7 +61,7 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
   add({"--max-edge", "L",
        "split triangles until no edge is longer than L world units (`2%`: 2 % of the bounding-box diagonal), so "
        "per-vertex transport can show shadows inside large triangles",
-       d.max_edge > 0 ? Number(d.max_edge) + (d.max_edge_relative ? "%" : "") : "none"});
+       d.max_edge > 0 ? Formatted("%g", double(d.max_edge)) + (d.max_edge_relative ? "%" : "") : "none"});
   return s;
 }
 
@@ -120,10 +115,7 @@ const std::vector<std::string>& LightOptionNames() {
 
 OptionGroup SceneOptionGroup(const SceneOptions& defaults, const std::vector<std::string>& names,
                              const std::string& title) {
-  const auto specs = SceneSpecs(defaults);
-  OptionGroup group{title, {}};
-  for (const auto& n : names) group.options.push_back(specs.at(n));
-  return group;
+  return PickOptions(SceneSpecs(defaults), names, title);
 }
 
 SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include <fcntl.h>
@@ -22,6 +23,14 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   const std::string name = "." + p.filename().string() + ".tmp" + std::to_string(::getpid()) +
                            "_" + std::to_string(counter++);
   temp_ = (p.parent_path() / name).string();
+}
+
+bool AtomicFile::IsTemporaryName(const std::string& name, long* pid) {
+  static const std::regex pattern("\\..+\\.tmp([0-9]{1,9})_[0-9]+");
+  std::smatch m;
+  if (!std::regex_match(name, m, pattern)) return false;
+  if (pid) *pid = std::stol(m[1].str());
+  return true;
 }
 
 AtomicFile::~AtomicFile() {

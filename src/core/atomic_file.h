@@ -18,6 +18,10 @@ class AtomicFile {
 
   /// Where to write the content before Commit().
   const std::string& temp_path() const { return temp_; }
+
+  /// True if `name` (a file name without folder) is one of these temporary files,
+  /// `.<name>.tmp<pid>_<n>`; `pid` then receives the process that made it.
+  static bool IsTemporaryName(const std::string& name, long* pid = nullptr);
   /// Renames the temporary file over the destination. Throws Error on failure.
   void Commit();
 

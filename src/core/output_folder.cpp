@@ -7,7 +7,6 @@
 
 #include <fcntl.h>
 #include <csignal>
-#include <regex>
 #include <sys/file.h>
 #include <unistd.h>
 
@@ -150,12 +149,11 @@ std::vector<std::string> OutputFolder::Finish() {
   // Temporary files of prt runs that were killed mid-write (core/atomic_file.h names them
   // `.<name>.tmp<pid>_<n>`): removed once their process is gone. This run holds the folder, so
   // no live run of prt can be writing them here.
-  static const std::regex temp_name("\\..+\\.tmp([0-9]{1,9})_[0-9]+");
   for (const auto& entry : fs::directory_iterator(dir_, ec)) {
-    std::smatch m;
+    long maker = 0;
     const std::string name = entry.path().filename().string();
-    if (!std::regex_match(name, m, temp_name)) continue;
-    const auto pid = static_cast<pid_t>(std::stol(m[1].str()));
+    if (!AtomicFile::IsTemporaryName(name, &maker)) continue;
+    const auto pid = static_cast<pid_t>(maker);
     const bool gone = pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH;
     if (gone && fs::remove(entry.path(), ec)) removed.push_back(name);
   }

@@ -142,13 +142,16 @@ Mesh MakeTorusKnot(int p, int q, float tube_radius, int segments, int sides, con
   return m;
 }
 
+void StandUpright(Mesh& mesh, float height, float lift) {
+  const Bounds3 b = MeshBounds(mesh);
+  const float scale = height / (b.hi.y - b.lo.y);
+  TransformMesh(mesh, scale, glm::vec3(0.0f, lift - scale * b.lo.y, 0.0f));
+}
+
 Mesh MakeDemoScene() {
   // A warm terracotta knot on a light grey ground: colour bleeding shows in the bounces.
   Mesh knot = MakeTorusKnot(2, 3, 0.16f, 512, 48, glm::vec3(0.80f, 0.38f, 0.20f));
-  // Stand it on the ground: scale to about 3.4 units tall, lowest point at y = 0.
-  const Bounds3 b = MeshBounds(knot);
-  const float scale = 3.4f / (b.hi.y - b.lo.y);
-  TransformMesh(knot, scale, glm::vec3(0.0f, -scale * b.lo.y, 0.0f));
+  StandUpright(knot, 3.4f);
   // Per-vertex shading: the ground needs vertices about as dense as its shadows are sharp.
   Mesh scene = MakePlane(12.0f, 96, 0.0f, glm::vec3(0.7f, 0.7f, 0.7f));
   AppendMesh(scene, knot);

@@ -47,6 +47,10 @@ Mesh MakeBox(const glm::vec3& lo, const glm::vec3& hi, BoxFacing facing = BoxFac
 Mesh MakeTorusKnot(int p = 2, int q = 3, float tube_radius = 0.16f, int segments = 512,
                    int sides = 48, const glm::vec3& albedo = glm::vec3(kDefaultAlbedo));
 
+/// Scales `mesh` uniformly to `height` units tall and moves it up or down so that its lowest
+/// point is at y = `lift`: an object standing on (or `lift` above) a ground at y = 0.
+void StandUpright(Mesh& mesh, float height, float lift = 0.0f);
+
 /// The embedded demo scene: a (2, 3) torus knot about 3.4 units tall standing upright (facing
 /// +Z) on a 12 x 12 ground plane at y = 0, merged into one mesh. Sized like the course's mary
 /// model so the course camera (0, 8, 22) -> (0, 1, 1) frames it.

@@ -35,7 +35,7 @@ struct Limits {
   double long_sq = 0.0;     // e^2: longer edges are split
   double done_sq = 0.0;     // (e - m)^2: below it an edge stays short after rounding
   double certain_sq = 0.0;  // (e + m)^2: above it an edge is long after rounding too
-  bool resolvable = false;  // done_sq > 2 e^2 / 3, the bound's fixed point, so it converges
+  bool resolvable = false;  // e > FinestEdge(m): done_sq above the bound's fixed point 2 e^2 / 3
 };
 
 double RoundingMargin(const Mesh& mesh) {
@@ -45,13 +45,16 @@ double RoundingMargin(const Mesh& mesh) {
   return kMarginOfScale * scale;
 }
 
+// The smallest max_edge that the rounding margin m leaves resolvable: (e - m)^2 > 2 e^2 / 3.
+double FinestEdge(double m) { return m / (1.0 - std::sqrt(2.0 / 3.0)); }
+
 Limits MakeLimits(const Mesh& mesh, float max_edge) {
   const double e = max_edge, m = RoundingMargin(mesh);
   Limits limits;
   limits.long_sq = e * e;
   limits.done_sq = e > m ? (e - m) * (e - m) : 0.0;
   limits.certain_sq = (e + m) * (e + m);
-  limits.resolvable = std::isinf(e) || limits.done_sq > 2.0 / 3.0 * limits.long_sq;
+  limits.resolvable = std::isinf(e) || e > FinestEdge(m);
   return limits;
 }
 
@@ -105,7 +108,7 @@ class Midpoints {
 
 }  // namespace
 
-double MinimumMaxEdge(const Mesh& mesh) { return RoundingMargin(mesh) / (1.0 - std::sqrt(2.0 / 3.0)); }
+double MinimumMaxEdge(const Mesh& mesh) { return FinestEdge(RoundingMargin(mesh)); }
 
 std::size_t EstimateSplitTriangles(const Mesh& mesh, float max_edge) {
   constexpr std::size_t kMax = std::numeric_limits<std::size_t>::max();

@@ -1,14 +1,12 @@
 #include "io/obj_loader.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <istream>
 #include <set>
-#include <sstream>
 
 #include <glm/geometric.hpp>
 #include <tiny_obj_loader.h>

@@ -101,7 +101,6 @@ class Pass {
       ++count_[kTexcoord];
     } else if (key == "f" && args) {
       Corners(k, e, "face");
-      ++scan_.faces;
       if (material_faces_) ++*material_faces_;
     } else if (key == "l" && args) {
       Corners(k, e, "polyline");
@@ -128,12 +127,7 @@ class Pass {
     return true;
   }
 
-  ObjScan Finish() {
-    scan_.positions = count_[kPosition];
-    scan_.texcoords = count_[kTexcoord];
-    scan_.normals = count_[kNormal];
-    return std::move(scan_);
-  }
+  ObjScan Finish() { return std::move(scan_); }
   const std::size_t* counts() const { return count_; }
 
  private:

@@ -38,10 +38,6 @@ namespace prt {
 
 /// What one pass over an OBJ file found.
 struct ObjScan {
-  std::size_t positions = 0;  ///< `v` lines
-  std::size_t normals = 0;    ///< `vn` lines
-  std::size_t texcoords = 0;  ///< `vt` lines
-  std::size_t faces = 0;      ///< `f` lines
   std::size_t skipped_lines = 0;       ///< lines not understood (see the file comment)
   std::size_t first_skipped_line = 0;  ///< 1-based; 0 when none
   std::string first_skipped_text;      ///< cut to kQuotedLineLength bytes, printable

@@ -1,6 +1,7 @@
 #include "io/png_io.h"
 
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
 #include <stb_image.h>
@@ -60,6 +61,10 @@ Image8 DecodePng(const std::string& bytes, const std::string& name) {
   return image;
 }
 
-Image8 ReadPng(const std::string& path) { return DecodePng(ReadFile(path), path); }
+Image8 ReadPng(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw Error(path + ": no such file (expected a PNG image)");
+  return DecodePng(ReadFile(path), path);
+}
 
 }  // namespace prt

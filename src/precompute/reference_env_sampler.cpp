@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/color.h"
 #include "core/parallel.h"
 
 namespace prt {
@@ -10,7 +11,6 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-double Luminance(const glm::dvec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
 /// The unit direction at height y (= cos theta about +Y) and azimuth phi.
 glm::dvec3 Direction(double y, double phi) {

@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace prt {
 namespace {
@@ -202,20 +203,6 @@ std::string CameraArgs(const Camera& c) {
   };
   return "--eye " + vec(c.eye) + " --target " + vec(c.target) + " --up " + vec(c.up) + " --fov " +
          ShortestFloat(c.fov_deg);
-}
-
-std::string ShortestFloat(float v) {
-  // %.9g round-trips every float; fewer digits often do (3.2, not 3.20000005). %g switches to
-  // an exponent when the integer part has more digits than the precision (40 at one digit is
-  // 4e+01), so the precision covers the integer digits, up to 9 of them.
-  const double magnitude = std::fabs(double(v));
-  const int integer_digits = magnitude >= 1.0 && magnitude < 1e9 ? int(std::floor(std::log10(magnitude))) + 1 : 0;
-  char text[32];
-  for (int digits = 1; digits <= 9; ++digits) {
-    std::snprintf(text, sizeof text, "%.*g", std::max(digits, integer_digits), double(v));
-    if (std::strtof(text, nullptr) == v) break;
-  }
-  return text;
 }
 
 }  // namespace prt

@@ -115,7 +115,4 @@ Camera FramePoints(const std::vector<glm::vec3>& points, float aspect, float fov
 /// `--eye X,Y,Z --target X,Y,Z --up X,Y,Z --fov DEGREES`.
 std::string CameraArgs(const Camera& camera);
 
-/// The shortest decimal (at most 9 significant digits) that reads back as exactly `v`.
-std::string ShortestFloat(float v);
-
 }  // namespace prt

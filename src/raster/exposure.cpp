@@ -4,17 +4,16 @@
 #include <cmath>
 #include <vector>
 
+#include "core/color.h"
+
 namespace prt {
 namespace {
-
-// Rec. 709 luminance of a linear pixel [1].
-double Luminance(const glm::vec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
 // A pixel's luminance when it can be measured (finite, no negative channel, not black), else 0.
 double Measurable(const glm::vec3& c) {
   for (int i = 0; i < 3; ++i)
     if (!std::isfinite(c[i]) || c[i] < 0.f) return 0.0;
-  const double y = Luminance(c);
+  const double y = Luminance(glm::dvec3(c));  // Rec. 709 [1]
   return y > 0.0 && std::isfinite(y) ? y : 0.0;
 }
 

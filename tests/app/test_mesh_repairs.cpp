@@ -171,7 +171,7 @@ TEST_SUITE("app") {
                                       Q(test::ScratchDir("garbage_lines")));
     CAPTURE(garbage.err);
     CHECK(garbage.exit_code == 0);
-    CHECK(garbage.err.find("3 lines not understood and skipped (first: line 5: 'hello world')") != std::string::npos);
+    CHECK(garbage.err.find("3 lines not understood, skipped (first: line 5: 'hello world')") != std::string::npos);
     const auto index = test::RunPrt("render --mesh " + Q(test::Fixture("obj/index_written.obj")) + " --out " +
                                     Q(test::ScratchDir("index_written")));
     CAPTURE(index.err);

@@ -237,26 +237,6 @@ TEST_SUITE("raster") {
     CHECK(prt::CameraArgs(c).rfind("--eye 6,3.2,-0.1 ", 0) == 0);  // not 3.20000005
   }
 
-  TEST_CASE("ShortestFloat reads back exactly, with no more digits than needed") {
-    CHECK(prt::ShortestFloat(3.2f) == "3.2");
-    CHECK(prt::ShortestFloat(-1e-7f) == "-1e-07");
-    CHECK(prt::ShortestFloat(16777216.f) == "16777216");
-    CHECK(prt::ShortestFloat(40.f) == "40");  // not 4e+01
-    CHECK(prt::ShortestFloat(1e7f) == "10000000");
-    CHECK(prt::ShortestFloat(0.f) == "0");
-    prt::Pcg32 rng(7, 1);
-    for (int i = 0; i < 20000; ++i) {
-      // Random bit patterns cover every exponent; NaN and infinity are skipped.
-      const std::uint32_t bits = rng.NextU32();
-      float v;
-      std::memcpy(&v, &bits, sizeof v);
-      if (!std::isfinite(v)) continue;
-      const std::string text = prt::ShortestFloat(v);
-      CAPTURE(text);
-      REQUIRE(std::strtof(text.c_str(), nullptr) == v);
-    }
-  }
-
   TEST_CASE("CheckCamera names the option at fault") {
     prt::Camera c;
     c.up = glm::vec3(0.f, 0.f, 1.f);  // along the view direction (0, 0, -5)

@@ -1,0 +1,34 @@
+#include "core/text.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
+
+namespace prt {
+
+std::string Formatted(const char* format, ...) {
+  char text[1024];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(text, sizeof text, format, args);
+  va_end(args);
+  return text;
+}
+
+std::string ShortestFloat(float v) {
+  // %.9g round-trips every float; fewer digits often do. %g switches to an exponent when the
+  // integer part has more digits than the precision (40 at one digit is 4e+01), so the
+  // precision covers the integer digits, up to 9 of them.
+  const double magnitude = std::fabs(double(v));
+  const int integer_digits = magnitude >= 1.0 && magnitude < 1e9 ? int(std::floor(std::log10(magnitude))) + 1 : 0;
+  char text[32];
+  for (int digits = 1; digits <= 9; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", std::max(digits, integer_digits), double(v));
+    if (std::strtof(text, nullptr) == v) break;
+  }
+  return text;
+}
+
+}  // namespace prt

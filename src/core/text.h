@@ -1,0 +1,16 @@
+#pragma once
+/// \file
+/// Numbers as text for messages, help and the run summary.
+
+#include <string>
+
+namespace prt {
+
+/// printf-style formatting into a string (at most 1023 characters).
+std::string Formatted(const char* format, ...) __attribute__((format(printf, 1, 2)));
+
+/// The shortest decimal (at most 9 significant digits) that reads back as exactly `v`: 3.2, not
+/// 3.20000005; integers up to 9 digits in full (40, not 4e+01).
+std::string ShortestFloat(float v);
+
+}  // namespace prt
