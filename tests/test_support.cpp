@@ -10,6 +10,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "core/atomic_file.h"
+
 namespace prt::test {
 namespace fs = std::filesystem;
 
@@ -31,13 +33,6 @@ std::string ScratchDir(const std::string& name) {
   return p.string();
 }
 
-static std::string Slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 std::string ShellQuote(const std::string& text) {
   std::string out = "'";
   for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -51,6 +46,10 @@ std::string PrtBinary() {
   return binary && *binary ? binary : PRT_BINARY_PATH;
 }
 
+std::string QuickScene() {
+  return "--mesh " + Q(Fixture("obj/tetra_no_normals.obj")) + " --env furnace --transport unshadowed";
+}
+
 RunResult RunPrt(const std::string& arguments) { return RunCommand(ShellQuote(PrtBinary()) + " " + arguments); }
 
 RunResult RunCommand(const std::string& command) {
@@ -59,8 +58,8 @@ RunResult RunCommand(const std::string& command) {
   const int status = std::system(cmd.c_str());
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  r.out = Slurp(dir + "/out");
-  r.err = Slurp(dir + "/err");
+  r.out = ReadFile(dir + "/out");
+  r.err = ReadFile(dir + "/err");
   fs::remove_all(dir);
   return r;
 }

@@ -38,6 +38,13 @@ struct RunResult {
 /// `text` as one single-quoted shell word (a quote inside it included).
 std::string ShellQuote(const std::string& text);
 
+/// ShellQuote under a short name, for the paths in command lines: "render --out " + Q(dir).
+inline std::string Q(const std::string& text) { return ShellQuote(text); }
+
+/// Scene options of a render that takes milliseconds: a tetrahedron (no normals) under the
+/// furnace, closed-form transport.
+std::string QuickScene();
+
 /// Runs a shell command line, capturing its stdout and stderr.
 RunResult RunCommand(const std::string& command);
 

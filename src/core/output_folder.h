@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// An output folder that never mixes two runs (CLI.md, "Exit codes and messages"):
+/// An output folder that never mixes two runs (docs/CLI.md, "Conventions": Outputs, and Output
+/// folders serve one run at a time):
 ///
 /// - One run at a time. The folder's lock file `.prt-lock` is held with flock(2) for the whole
 ///   run; a second run into the same folder is refused at once. The kernel releases the lock

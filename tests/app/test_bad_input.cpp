@@ -20,7 +20,7 @@ namespace prt {
 namespace {
 namespace fs = std::filesystem;
 
-std::string Quote(const std::string& s) { return "'" + s + "'"; }
+using test::Q;
 
 std::vector<std::string> ErrorLines(const std::string& err) {
   std::vector<std::string> lines;
@@ -54,11 +54,11 @@ void ExpectSuccess(const std::string& arguments) {
 }
 
 /// `prt light` on an environment (image file, cubemap folder or built-in name).
-std::string Light(const std::string& env) { return "light --lmax 1 --env " + Quote(env); }
+std::string Light(const std::string& env) { return "light --lmax 1 --env " + Q(env); }
 
 /// `prt precompute` of a mesh under the furnace (closed form: no rays, fast).
 std::string Precompute(const std::string& mesh, const std::string& out) {
-  return "precompute --env furnace --transport unshadowed --mesh " + Quote(mesh) + " --out " + Quote(out);
+  return "precompute --env furnace --transport unshadowed --mesh " + Q(mesh) + " --out " + Q(out);
 }
 
 std::string Image(const std::string& name) { return test::Fixture("images/" + name); }
@@ -89,23 +89,23 @@ TEST_SUITE("app") {
     REQUIRE(::mkdtemp(folder) != nullptr);
     const std::string dir = folder;
     fs::permissions(dir, fs::perms::all);
-    std::string prt = Quote(test::PrtBinary());
+    std::string prt = Q(test::PrtBinary());
     if (::geteuid() == 0) {
       fs::copy_file(test::PrtBinary(), dir + "/prt");
       fs::permissions(dir + "/prt", fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
-      prt = "setpriv --reuid=65534 --regid=65534 --clear-groups " + Quote(dir + "/prt");
+      prt = "setpriv --reuid=65534 --regid=65534 --clear-groups " + Q(dir + "/prt");
     }
     const std::string locked = dir + "/locked.png";
     fs::copy_file(Image("grey8.png"), locked);
     fs::permissions(locked, fs::perms::none);
-    const auto image = test::RunCommand(prt + " light --env " + Quote(locked));
+    const auto image = test::RunCommand(prt + " light --env " + Q(locked));
     CAPTURE(image.err);
     CHECK(image.exit_code == 1);
     CHECK(image.err == "prt: error: " + locked + ": cannot open (Permission denied)\n");
     const std::string locked_obj = dir + "/locked.obj";
     fs::copy_file(Obj("quad.obj"), locked_obj);
     fs::permissions(locked_obj, fs::perms::none);
-    const auto mesh = test::RunCommand(prt + " precompute --mesh " + Quote(locked_obj) + " --out " + Quote(dir + "/out"));
+    const auto mesh = test::RunCommand(prt + " precompute --mesh " + Q(locked_obj) + " --out " + Q(dir + "/out"));
     CAPTURE(mesh.err);
     CHECK(mesh.exit_code == 1);
     CHECK(mesh.err.find("prt: error: " + locked_obj + ": cannot be opened: Permission denied (expected a readable OBJ "
@@ -183,12 +183,12 @@ TEST_SUITE("app") {
     }
     // 1e7 coordinates render too (the camera frames them).
     ExpectSuccess("render --env furnace --transport unshadowed --frames 1 --size 16x16 --mesh " +
-                  Quote(Obj("huge_coordinates.obj")) + " --out " + Quote(out + "/frames"));
+                  Q(Obj("huge_coordinates.obj")) + " --out " + Q(out + "/frames"));
   }
 
   TEST_CASE("bad input: every numeric option out of range, unknown and conflicting options, missing values") {
     const std::string out = test::ScratchDir("bad_input_options");
-    const std::string render = "render --env furnace --transport unshadowed --out " + Quote(out) + " ";
+    const std::string render = "render --env furnace --transport unshadowed --out " + Q(out) + " ";
     struct Case {
       const char* args;
       const char* part;
@@ -245,7 +245,7 @@ TEST_SUITE("app") {
     const std::string out = test::ScratchDir("bad_input_cache");
     const std::string cache = out + "/transport.cache";
     const std::string run = "render --env furnace --transport shadowed --samples 16 --frames 1 --size 16x16 --mesh " +
-                            Quote(Obj("tetra_no_normals.obj")) + " --out " + Quote(out);
+                            Q(Obj("tetra_no_normals.obj")) + " --out " + Q(out);
     const auto first = test::RunPrt(run);
     REQUIRE(first.exit_code == 0);
     std::string good;

@@ -11,17 +11,11 @@
 #include "app/args.h"
 #include "app/commands.h"
 #include "core/error.h"
+#include "core/atomic_file.h"
 #include "tests/test_support.h"
 
 namespace prt {
 namespace {
-
-std::string ReadText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 /// The section `## prt <command>` of docs/CLI.md, up to the next `## ` heading.
 std::string DocSection(const std::string& doc, const std::string& command) {
@@ -45,8 +39,7 @@ bool Mentions(const std::string& text, const std::string& name) {
 
 TEST_SUITE("app") {
   TEST_CASE("cli: every option the parser accepts is in the command's help and in docs/CLI.md") {
-    const std::string doc = ReadText(test::SourceDir() + "/docs/CLI.md");
-    REQUIRE_FALSE(doc.empty());
+    const std::string doc = ReadFile(test::SourceDir() + "/docs/CLI.md");
     for (const Command& c : Commands()) {
       CAPTURE(c.name);
       const CommandSpec spec = c.spec();
@@ -81,12 +74,8 @@ TEST_SUITE("app") {
     CHECK(NearestName("--zzzzzz", {"--samples", "--seed"}).empty());  // nothing close: no guess
     CHECK(NearestName("lihgt", {"light", "bvh"}) == "light");          // a transposition is one typo
     CHECK(NearestName("ACES", {"srgb", "reinhard", "aces"}) == "aces");  // case does not count
-    try {
-      Args("render", {"--sampels", "64"}, RenderSpec());
-      FAIL("no error");
-    } catch (const UsageError& e) {
-      CHECK(std::string(e.what()) == "--sampels: unknown option (did you mean --samples?)");
-    }
+    CHECK_THROWS_WITH_AS(Args("render", {"--sampels", "64"}, RenderSpec()),
+                         "--sampels: unknown option (did you mean --samples?)", UsageError);
 
     const auto typo = test::RunPrt("render --sample 64");
     CHECK(typo.exit_code == 2);
@@ -137,13 +126,9 @@ TEST_SUITE("app") {
   TEST_CASE("cli: a value that is not a number says so; one out of range gives the range") {
     const auto check = [](const std::string& value, const std::string& problem) {
       CAPTURE(value);
-      try {
-        Args args("render", {"--samples", value}, RenderSpec());
-        args.Int("--samples", 1, 1, 100);
-        FAIL("no error");
-      } catch (const UsageError& e) {
-        CHECK(std::string(e.what()) == "--samples: '" + value + "' " + problem + " (expected an integer from 1 to 100)");
-      }
+      Args args("render", {"--samples", value}, RenderSpec());
+      const std::string message = "--samples: '" + value + "' " + problem + " (expected an integer from 1 to 100)";
+      CHECK_THROWS_WITH_AS(args.Int("--samples", 1, 1, 100), message.c_str(), UsageError);
     };
     check("abc", "is not a number");
     check("2.5", "is not an integer");

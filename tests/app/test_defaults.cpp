@@ -12,14 +12,15 @@
 
 #include "core/atomic_file.h"
 #include "core/image.h"
+#include "geometry/procedural.h"
+#include "io/obj_writer.h"
 #include "io/png_io.h"
 #include "tests/test_support.h"
 
 namespace prt {
 namespace {
 
-/// A path as one shell word.
-std::string Q(const std::string& s) { return test::ShellQuote(s); }
+using test::Q;
 
 /// The value printed after `--exposure ` in "(--exposure X repeats it)" on the summary.
 std::string PrintedExposure(const std::string& err) {
@@ -60,14 +61,9 @@ constexpr double kFilledShare = 0.9;
 // Centred: the two margins differ by the pixel rounding of the projected box.
 constexpr int kCentringPixels = 2;
 
-/// A box [lo, hi] as OBJ text, faces wound counter-clockwise seen from outside.
-std::string BoxObj(float x, float y, float z) {
-  char text[512];
-  std::snprintf(text, sizeof text,
-                "v %g 0 %g\nv %g 0 %g\nv %g 0 %g\nv %g 0 %g\nv %g %g %g\nv %g %g %g\nv %g %g %g\nv %g %g %g\n"
-                "f 1 2 3 4\nf 8 7 6 5\nf 1 5 6 2\nf 2 6 7 3\nf 3 7 8 4\nf 4 8 5 1\n",
-                -x, -z, -x, z, x, z, x, -z, -x, y, -z, -x, y, z, x, y, z, x, y, -z);
-  return text;
+/// An upright box, half-width x and half-depth z, `height` tall on y = 0, as OBJ text.
+std::string BoxObj(float x, float height, float z) {
+  return FormatObj({{"box", MakeBox(glm::vec3(-x, 0.0f, -z), glm::vec3(x, height, z))}}, "box.mtl");
 }
 
 }  // namespace
@@ -118,11 +114,17 @@ TEST_SUITE("app") {
     const std::string dir = test::ScratchDir("framing");
     WriteFileAtomic(dir + "/post.obj", BoxObj(0.25f, 3.0f, 0.25f));
     WriteFileAtomic(dir + "/beam.obj", BoxObj(2.0f, 0.4f, 0.25f));
+    // Which direction limits the fit: the post's height in a tall or square frame; the beam's
+    // height (with its depth, seen from above) in a 400x90 strip; its length in a square.
+    enum class Fills { kRows, kColumns };
     const struct {
       const char* mesh;
       const char* size;
-      bool tall;
-    } cases[] = {{"post", "90x300", true}, {"post", "300x300", true}, {"beam", "400x90", false}, {"beam", "300x300", false}};
+      Fills fills;
+    } cases[] = {{"post", "90x300", Fills::kRows},
+                 {"post", "300x300", Fills::kRows},
+                 {"beam", "400x90", Fills::kRows},
+                 {"beam", "300x300", Fills::kColumns}};
     for (const auto& c : cases) {
       CAPTURE(c.mesh);
       CAPTURE(c.size);
@@ -137,11 +139,9 @@ TEST_SUITE("app") {
       CAPTURE(box.bottom);
       CAPTURE(box.left);
       CAPTURE(box.right);
-      // Filled in one direction (the one the shape and the frame make limiting), centred in both.
-      const bool rows_filled = box.bottom - box.top + 1 >= kFilledShare * image.height;
-      const bool columns_filled = box.right - box.left + 1 >= kFilledShare * image.width;
-      CHECK((rows_filled || columns_filled));
-      if (c.tall) CHECK(rows_filled);
+      // Filled in the limiting direction, centred in both.
+      if (c.fills == Fills::kRows) CHECK(box.bottom - box.top + 1 >= kFilledShare * image.height);
+      else CHECK(box.right - box.left + 1 >= kFilledShare * image.width);
       CHECK(std::abs(box.top - (image.height - 1 - box.bottom)) <= kCentringPixels);
       CHECK(std::abs(box.left - (image.width - 1 - box.right)) <= kCentringPixels);
     }

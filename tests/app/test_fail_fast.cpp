@@ -13,23 +13,20 @@
 #include "core/atomic_file.h"
 #include "core/output_folder.h"
 #include "core/error.h"
-#include "io/png_io.h"
 #include "tests/test_support.h"
 
 namespace prt {
 namespace {
 namespace fs = std::filesystem;
 
-/// A path as one shell word.
-std::string Q(const std::string& s) { return test::ShellQuote(s); }
+using test::Q;
 
 /// A mesh whose loading fails: any error about it means it was loaded before the options.
 std::string Unloadable() { return Q(test::Fixture("obj/no_faces.obj")); }
 
 /// A quick scene: closed-form transport of a small mesh under the furnace, one tiny frame.
 std::string Quick(const std::string& out) {
-  return "--mesh " + Q(test::Fixture("obj/tetra_no_normals.obj")) +
-         " --env furnace --transport unshadowed --frames 1 --size 32x24 --out " + Q(out);
+  return test::QuickScene() + " --frames 1 --size 32x24 --out " + Q(out);
 }
 
 void ExpectUsage(const std::string& arguments, const std::string& message) {
@@ -188,12 +185,8 @@ TEST_SUITE("app") {
     CHECK(WriteProblem("/x/y/z.png", EROFS) == "folder '/x/y' is on a read-only file system");
     CHECK(WriteProblem("/x/y/z.png", ENOSPC) == "disk full: no space left on the device of '/x/y'");
     const std::string dir = test::ScratchDir("write_cause");
-    try {
-      WriteFileAtomic(dir + "/missing/f.txt", "x");
-      FAIL("no error");
-    } catch (const Error& e) {
-      CHECK(std::string(e.what()) == dir + "/missing/f.txt: cannot write (folder '" + dir + "/missing' does not exist)");
-    }
+    const std::string missing = dir + "/missing/f.txt: cannot write (folder '" + dir + "/missing' does not exist)";
+    CHECK_THROWS_WITH_AS(WriteFileAtomic(dir + "/missing/f.txt", "x"), missing.c_str(), Error);
     // A folder that cannot be made names the deepest existing folder, the one that refused
     // (/proc takes no new entries, even from root).
     CHECK_THROWS_WITH_AS(CreateFolder("/proc/prt-test/sub"),

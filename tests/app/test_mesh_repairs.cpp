@@ -7,9 +7,8 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <string>
-
-#include <glm/geometric.hpp>
 
 #include "core/atomic_file.h"
 #include "core/image.h"
@@ -23,34 +22,43 @@
 namespace prt {
 namespace {
 
-/// A path as one shell word.
-std::string Q(const std::string& s) { return test::ShellQuote(s); }
+using test::Q;
 
-enum class Normals { kNone, kAsGiven, kNegated };
+/// `mesh` with every triangle's winding reversed (clockwise seen from outside).
+Mesh Reversed(Mesh mesh) {
+  for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+  return mesh;
+}
 
-/// OBJ text of `mesh`, its triangles reversed when `reverse`, with its normals as asked.
-std::string ObjText(const Mesh& mesh, bool reverse, Normals normals) {
+/// `mesh` with every normal negated (pointing inward).
+Mesh Inward(Mesh mesh) {
+  for (auto& n : mesh.normals) n = -n;
+  return mesh;
+}
+
+enum class Normals { kNone, kWritten };
+
+/// Writes `mesh` to `path` (an .obj, its .mtl beside it): with its normals as prt writes OBJ
+/// files (io/obj_writer.h), or positions and faces only (the loader then computes normals from
+/// the winding).
+void WriteObj(const std::string& path, const Mesh& mesh, Normals normals) {
+  if (normals == Normals::kWritten) {
+    const std::string mtl = std::filesystem::path(path).stem().string() + ".mtl";
+    WriteFileAtomic(path, FormatObj({{"part", mesh}}, mtl));
+    WriteFileAtomic(std::filesystem::path(path).replace_filename(mtl).string(), FormatMtl({{"part", mesh}}));
+    return;
+  }
   std::string text;
   char line[128];
   for (const auto& p : mesh.positions) {
     std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", double(p.x), double(p.y), double(p.z));
     text += line;
   }
-  if (normals != Normals::kNone)
-    for (const auto& n : mesh.normals) {
-      const glm::vec3 m = normals == Normals::kNegated ? -n : n;
-      std::snprintf(line, sizeof line, "vn %.9g %.9g %.9g\n", double(m.x), double(m.y), double(m.z));
-      text += line;
-    }
-  for (auto t : mesh.triangles) {
-    if (reverse) std::swap(t[1], t[2]);
-    if (normals == Normals::kNone) std::snprintf(line, sizeof line, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
-    else
-      std::snprintf(line, sizeof line, "f %u//%u %u//%u %u//%u\n", t[0] + 1, t[0] + 1, t[1] + 1, t[1] + 1, t[2] + 1,
-                    t[2] + 1);
+  for (const auto& t : mesh.triangles) {
+    std::snprintf(line, sizeof line, "f %u %u %u\n", t[0] + 1, t[1] + 1, t[2] + 1);
     text += line;
   }
-  return text;
+  WriteFileAtomic(path, text);
 }
 
 /// A sphere of radius 1 under the furnace, seen head-on on black, untouched by tone mapping
@@ -77,10 +85,10 @@ TEST_SUITE("app") {
   TEST_CASE("mesh repairs: an inside-out sphere renders like the right-way-out one, and says so") {
     const std::string dir = test::ScratchDir("inside_out");
     const Mesh sphere = MakeSphere(32);
-    WriteFileAtomic(dir + "/good.obj", ObjText(sphere, false, Normals::kNone));
-    WriteFileAtomic(dir + "/clockwise.obj", ObjText(sphere, true, Normals::kNone));
-    WriteFileAtomic(dir + "/inward_normals.obj", ObjText(sphere, false, Normals::kNegated));
-    WriteFileAtomic(dir + "/both.obj", ObjText(sphere, true, Normals::kNegated));
+    WriteObj(dir + "/good.obj", sphere, Normals::kNone);
+    WriteObj(dir + "/clockwise.obj", Reversed(sphere), Normals::kNone);
+    WriteObj(dir + "/inward_normals.obj", Inward(sphere), Normals::kWritten);
+    WriteObj(dir + "/both.obj", Reversed(Inward(sphere)), Normals::kWritten);
     const auto good = test::RunPrt(SphereFrame(dir + "/good.obj", dir + "/good"));
     REQUIRE(good.exit_code == 0);
     CHECK(good.err.find("orientation:") == std::string::npos);
@@ -111,7 +119,7 @@ TEST_SUITE("app") {
 
   TEST_CASE("mesh repairs: an open mesh whose normals oppose its winding is warned about, not changed") {
     const std::string dir = test::ScratchDir("open_inward");
-    WriteFileAtomic(dir + "/floor.obj", ObjText(MakePlane(2.0f, 4), false, Normals::kNegated));
+    WriteObj(dir + "/floor.obj", Inward(MakePlane(2.0f, 4)), Normals::kWritten);
     const auto r = test::RunPrt("render --mesh " + Q(dir + "/floor.obj") +
                                 " --env furnace --transport unshadowed --frames 1 --size 32x24 --out " + Q(dir + "/out"));
     CAPTURE(r.err);

@@ -29,6 +29,7 @@
 namespace prt {
 namespace {
 namespace fs = std::filesystem;
+using test::Q;
 
 /// A complete 8x8 PNG of one grey level: the "earlier output" a new run may replace.
 std::string MarkerPng(unsigned char level) {
@@ -36,11 +37,6 @@ std::string MarkerPng(unsigned char level) {
   image.width = image.height = 8;
   image.rgb.assign(3 * 8 * 8, level);
   return EncodePng(image);
-}
-
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 bool IsTemp(const std::string& name) { return name[0] == '.' && name.find(".tmp") != std::string::npos; }
@@ -104,7 +100,7 @@ TEST_SUITE("app") {
       if (name == "transport.cache" || name.rfind(".prt-", 0) == 0) continue;  // the cache; lock, staging
       CAPTURE(name);
       REQUIRE(old.count(name) == 1);
-      CHECK(Slurp(entry.path().string()) == old.at(name));
+      CHECK(ReadFile(entry.path().string()) == old.at(name));
       ++kept;
     }
     CHECK(kept == kMarkers);
@@ -118,7 +114,7 @@ TEST_SUITE("app") {
       }
       CAPTURE(name);
       Image8 image;
-      CHECK_NOTHROW(image = DecodePng(Slurp(entry.path().string()), name));  // complete, never truncated
+      CHECK_NOTHROW(image = ReadPng(entry.path().string()));  // complete, never truncated
       CHECK(image.width == 48);
       ++staged;
     }
@@ -128,20 +124,19 @@ TEST_SUITE("app") {
     CHECK(temps <= 1);
 
     // The killed run's lock blocks nothing, and the next successful run removes its staging folder.
-    const auto later = test::RunPrt("render --mesh '" + mesh + "' --env furnace --transport unshadowed --frames 1 "
-                                    "--size 8x8 --quiet --out '" + dir + "'");
+    const auto later = test::RunPrt("render --mesh " + Q(mesh) + " --env furnace --transport unshadowed --frames 1 "
+                                    "--size 8x8 --quiet --out " + Q(dir));
     CHECK(later.exit_code == 0);
     CHECK_FALSE(fs::exists(staging));
     for (const auto& entry : fs::directory_iterator(dir)) CHECK_FALSE(IsTemp(entry.path().filename().string()));
-    CHECK(Slurp(dir + "/frame_0001.png") == old.at("frame_0001.png"));  // not prt's: never removed
+    CHECK(ReadFile(dir + "/frame_0001.png") == old.at("frame_0001.png"));  // not prt's: never removed
   }
 
   TEST_CASE("no data lost: frames prt did not write are never removed; failed runs keep old outputs") {
-    const auto r0 = test::RunPrt("--version");
     const std::string dir = test::ScratchDir("no_data_loss_fewer");
     const auto old = FillWithMarkers(dir, 10);
-    const std::string run = "render --env furnace --transport unshadowed --frames 3 --size 16x16 --mesh '" +
-                            test::Fixture("obj/quad.obj") + "' --out '" + dir + "'";
+    const std::string run = "render --env furnace --transport unshadowed --frames 3 --size 16x16 --mesh " +
+                            Q(test::Fixture("obj/quad.obj")) + " --out " + Q(dir);
     const auto r = test::RunPrt(run);
     CAPTURE(r.err);
     CHECK(r.exit_code == 0);
@@ -151,23 +146,23 @@ TEST_SUITE("app") {
     for (const auto& [name, bytes] : old) {
       CAPTURE(name);
       REQUIRE(fs::exists(dir + "/" + name));
-      if (name >= "frame_0003.png") CHECK(Slurp(dir + "/" + name) == bytes);  // untouched
-      else CHECK(Slurp(dir + "/" + name) != bytes);                           // replaced
+      if (name >= "frame_0003.png") CHECK(ReadFile(dir + "/" + name) == bytes);  // untouched
+      else CHECK(ReadFile(dir + "/" + name) != bytes);                           // replaced
     }
 
     // A run that fails (bad mesh) leaves the earlier frames, cache and text files as they were.
     std::ofstream(dir + "/light.txt") << "earlier light\n";
-    const std::string cache_before = Slurp(dir + "/transport.cache");
-    const auto failed = test::RunPrt("render --env furnace --frames 2 --mesh '" + test::Fixture("obj/no_faces.obj") +
-                                     "' --out '" + dir + "'");
+    const std::string cache_before = ReadFile(dir + "/transport.cache");
+    const auto failed =
+        test::RunPrt("render --env furnace --frames 2 --mesh " + Q(test::Fixture("obj/no_faces.obj")) + " --out " + Q(dir));
     CHECK(failed.exit_code == 1);
-    const auto failed_pre = test::RunPrt("precompute --env '" + test::Fixture("images/truncated.png") +
-                                         "' --out '" + dir + "'");
+    const auto failed_pre =
+        test::RunPrt("precompute --env " + Q(test::Fixture("images/truncated.png")) + " --out " + Q(dir));
     CHECK(failed_pre.exit_code == 1);
-    CHECK(Slurp(dir + "/light.txt") == "earlier light\n");
-    CHECK(Slurp(dir + "/transport.cache") == cache_before);
+    CHECK(ReadFile(dir + "/light.txt") == "earlier light\n");
+    CHECK(ReadFile(dir + "/transport.cache") == cache_before);
     for (const auto& [name, bytes] : old)
-      if (name >= "frame_0003.png") CHECK(Slurp(dir + "/" + name) == bytes);
+      if (name >= "frame_0003.png") CHECK(ReadFile(dir + "/" + name) == bytes);
     for (const auto& entry : fs::directory_iterator(dir)) CHECK_FALSE(IsTemp(entry.path().filename().string()));
   }
 }

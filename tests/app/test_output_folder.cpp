@@ -25,12 +25,10 @@ namespace prt {
 namespace {
 namespace fs = std::filesystem;
 
-/// A path as one shell word.
-std::string Q(const std::string& s) { return test::ShellQuote(s); }
+using test::Q;
 
 std::string Quick(const std::string& out, int frames) {
-  return "render --mesh " + Q(test::Fixture("obj/tetra_no_normals.obj")) +
-         " --env furnace --transport unshadowed --size 16x12 --frames " + std::to_string(frames) + " --out " + Q(out);
+  return "render " + test::QuickScene() + " --size 16x12 --frames " + std::to_string(frames) + " --out " + Q(out);
 }
 
 /// Names of the files in `dir`, hidden ones included.
@@ -40,9 +38,10 @@ std::set<std::string> Files(const std::string& dir) {
   return names;
 }
 
-std::string Slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
+/// The file's bytes, or "" while it does not exist yet (polling for another process's lock).
+std::string ReadIfPresent(const std::string& path) {
+  std::error_code ec;
+  return fs::exists(path, ec) ? ReadFile(path) : std::string();
 }
 
 }  // namespace
@@ -83,7 +82,7 @@ TEST_SUITE("app") {
     const std::string lock = dir + "/" + OutputFolder::kLockName;
     bool holding = false;
     for (int tries = 0; tries < 20000 && !holding; ++tries) {
-      holding = Slurp(lock) == std::to_string(pid);
+      holding = ReadIfPresent(lock) == std::to_string(pid);
       if (!holding) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
     const auto second = test::RunPrt(Quick(dir, 3));
@@ -107,8 +106,8 @@ TEST_SUITE("app") {
     CHECK(second.err.empty());
     CHECK(Files(dir) == std::set<std::string>{".prt-outputs", "frame_0000.png", "frame_0001.png", "frame_0002.png",
                                               "frame_0007.png", "notes.txt", "transport.cache"});
-    CHECK(Slurp(dir + "/notes.txt") == "mine");
-    CHECK(Slurp(dir + "/frame_0007.png") == "a frame prt did not write");
+    CHECK(ReadFile(dir + "/notes.txt") == "mine");
+    CHECK(ReadFile(dir + "/frame_0007.png") == "a frame prt did not write");
     // Without --quiet the run says what it removed and what it left.
     const auto third = test::RunPrt(Quick(dir, 1));
     CHECK(third.err.find("outputs: removed 2 files an earlier run wrote in " + dir +
@@ -131,10 +130,10 @@ TEST_SUITE("app") {
 
   TEST_CASE("output folder: rendering from sample files into their own folder keeps them, run after run") {
     const std::string dir = test::ScratchDir("folder_own_inputs");
-    const auto samples = test::RunPrt("sample-files --quiet --out '" + dir + "'");
+    const auto samples = test::RunPrt("sample-files --quiet --out " + Q(dir));
     REQUIRE(samples.exit_code == 0);
-    const std::string run = "render --mesh '" + dir + "/scene.obj' --env '" + dir +
-                            "/sky.hdr' --samples 16 --frames 2 --size 32x24 --quiet --out '" + dir + "'";
+    const std::string run = "render --mesh " + Q(dir + "/scene.obj") + " --env " + Q(dir + "/sky.hdr") +
+                            " --samples 16 --frames 2 --size 32x24 --quiet --out " + Q(dir);
     for (int i = 0; i < 2; ++i) {
       CAPTURE(i);
       const auto r = test::RunPrt(run);
@@ -142,7 +141,7 @@ TEST_SUITE("app") {
       CHECK(r.exit_code == 0);
       for (const char* input : {"scene.obj", "scene.mtl", "sky.hdr"}) CHECK(std::filesystem::exists(dir + "/" + input));
     }
-    const auto cube = test::RunPrt("light --env '" + dir + "/sky_cubemap'");
+    const auto cube = test::RunPrt("light --env " + Q(dir + "/sky_cubemap"));
     CHECK(cube.exit_code == 0);
   }
 

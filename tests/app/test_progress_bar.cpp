@@ -6,11 +6,7 @@
 
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <string>
-
-#include <sys/wait.h>
 
 #include "core/atomic_file.h"
 #include "tests/test_support.h"
@@ -18,18 +14,15 @@
 namespace prt {
 namespace {
 
-/// A path as one shell word.
-std::string Q(const std::string& s) { return test::ShellQuote(s); }
+using test::Q;
 
 /// What `prt arguments` writes to the terminal (stdout and stderr together, as `script` records
 /// them), run with PRT_PROGRESS_DELAY=`delay`.
 std::string OnTerminal(const std::string& arguments, const std::string& dir, const std::string& delay = "0") {
   const std::string inner = "PRT_PROGRESS_DELAY=" + Q(delay) + " " + Q(test::PrtBinary()) + " " + arguments;
   // `script -qec CMD FILE` runs CMD on a new pseudo-terminal and copies what it prints to FILE.
-  const std::string command = "script -qec " + Q(inner) + " " + Q(dir + "/typescript") + " >/dev/null 2>&1 </dev/null";
-  const int status = std::system(command.c_str());
-  CHECK(WIFEXITED(status));
-  CHECK(WEXITSTATUS(status) == 0);
+  const auto r = test::RunCommand("script -qec " + Q(inner) + " " + Q(dir + "/typescript"));
+  CHECK(r.exit_code == 0);
   return ReadFile(dir + "/typescript");
 }
 
@@ -82,10 +75,9 @@ TEST_SUITE("app") {
         "render --transport unshadowed --frames 20 --size 64x48 --cache none --quiet --out " + Q(dir + "/quiet"), dir);
     CHECK(quiet.find("rendering [") == std::string::npos);
     // Off a terminal (what RunPrt gives: stderr is a file) no bar is drawn either.
-    ::setenv("PRT_PROGRESS_DELAY", "0", 1);
-    const auto piped = test::RunPrt("render --transport unshadowed --frames 100 --size 320x240 --threads 1 --cache none "
-                                    "--out " + Q(dir + "/piped"));
-    ::unsetenv("PRT_PROGRESS_DELAY");
+    const auto piped = test::RunCommand("PRT_PROGRESS_DELAY=0 " + Q(test::PrtBinary()) +
+                                        " render --transport unshadowed --frames 100 --size 320x240 --threads 1 "
+                                        "--cache none --out " + Q(dir + "/piped"));
     CHECK(piped.exit_code == 0);
     CHECK(piped.err.find("rendering [") == std::string::npos);
   }

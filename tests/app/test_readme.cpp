@@ -6,14 +6,10 @@
 // what runs these tests, so they are not run again.
 #include <doctest/doctest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
-
-#include <sys/wait.h>
 
 #include "tests/test_support.h"
 
@@ -77,15 +73,10 @@ int RunReadmeCommands(const std::string& clone, bool course) {
     CAPTURE(command);
     if (command.rfind("bash scripts/quickstart.sh", 0) == 0) continue;  // what runs these tests
     if ((command.find("$GAMES202") != std::string::npos) != course) continue;
-    const std::string script = "cd '" + clone + "' && GAMES202='" + clone + "/games202' bash -c " +
-                               test::ShellQuote(command) + " >'" + clone + "/stdout' 2>'" + clone + "/stderr' </dev/null";
-    const int status = std::system(script.c_str());
-    std::ifstream err(clone + "/stderr");
-    std::stringstream text;
-    text << err.rdbuf();
-    CAPTURE(text.str());
-    CHECK(WIFEXITED(status));
-    CHECK(WEXITSTATUS(status) == 0);
+    const auto r = test::RunCommand("cd " + test::Q(clone) + " && GAMES202=" + test::Q(clone + "/games202") +
+                                    " bash -c " + test::Q(command));
+    CAPTURE(r.err);
+    CHECK(r.exit_code == 0);
     ++ran;
   }
   return ran;

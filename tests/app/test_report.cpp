@@ -15,6 +15,8 @@
 
 namespace {
 
+using prt::test::Q;
+
 /// Count of pixels that are not pure white.
 std::size_t Inked(const prt::Image8& im) {
   std::size_t n = 0;
@@ -63,7 +65,7 @@ TEST_SUITE("app") {
   TEST_CASE("prt reference and prt report --stability write their files") {
     const std::string dir = prt::test::ScratchDir("report_cli");
     const auto ref = prt::test::RunPrt("reference --env furnace:0.5 --transport unshadowed --reference-samples 16 "
-                                       "--size 64x48 --quiet --out '" + dir + "/ref'");
+                                       "--size 64x48 --quiet --out " + Q(dir + "/ref"));
     CHECK(ref.exit_code == 0);
     CHECK(std::filesystem::exists(dir + "/ref/reference.png"));
     // The vertex count (the demo scene's), then R G B per vertex. Unshadowed under a constant
@@ -85,7 +87,7 @@ TEST_SUITE("app") {
     CHECK(rows == count);
     CHECK(other == 0);
     CHECK(std::abs(sum / double(rows) - 0.5) < 0.002);  // 8 standard errors
-    const auto stab = prt::test::RunPrt("report --stability --quiet --out '" + dir + "/stab'");
+    const auto stab = prt::test::RunPrt("report --stability --quiet --out " + Q(dir + "/stab"));
     CHECK(stab.exit_code == 0);
     CHECK(prt::ReadFile(dir + "/stab/stability.csv").find(",pass,") != std::string::npos);
     const auto bad = prt::test::RunPrt("report --quick");

@@ -3,11 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -16,6 +11,7 @@
 
 #include "core/error.h"
 #include "core/rng.h"
+#include "io/obj_loader.h"
 #include "raster/camera.h"
 #include "tests/test_support.h"
 
@@ -53,31 +49,15 @@ std::vector<glm::vec3> BoxCorners(const glm::vec3& lo, const glm::vec3& hi) {
   return corners;
 }
 
-// Deterministic points in [0, 1)^3 (a fixed linear congruential sequence).
-std::vector<glm::vec3> Scatter(int n, unsigned seed) {
+// Deterministic points in [0, 1)^3.
+std::vector<glm::vec3> Scatter(int n, std::uint64_t seed) {
+  prt::Pcg32 rng(seed, 0);
   std::vector<glm::vec3> points;
-  auto next = [&seed] {
-    seed = seed * 1664525u + 1013904223u;
-    return static_cast<float>(seed >> 8) / 16777216.f;
-  };
   for (int i = 0; i < n; ++i) {
-    const float x = next(), y = next(), z = next();
+    const float x = float(rng.NextDouble()), y = float(rng.NextDouble()), z = float(rng.NextDouble());
     points.emplace_back(x, y, z);
   }
   return points;
-}
-
-// The vertices ("v x y z" lines) of an OBJ file.
-std::vector<glm::vec3> ObjVertices(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<glm::vec3> v;
-  for (std::string line; std::getline(in, line);) {
-    if (line.size() < 2 || line[0] != 'v' || line[1] != ' ') continue;
-    std::istringstream fields(line.substr(2));
-    glm::vec3 p;
-    if (fields >> p.x >> p.y >> p.z) v.push_back(p);
-  }
-  return v;
 }
 
 }  // namespace
@@ -91,8 +71,7 @@ TEST_SUITE("raster") {
       CHECK(c.eye.x > 0.f);
       CHECK(c.eye.y > 0.5f * (lo.y + hi.y));
       const glm::mat4 m = prt::ProjectionMatrix(c, aspect) * prt::ViewMatrix(c);
-      for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z);
+      for (const glm::vec3& p : BoxCorners(lo, hi)) {
         const glm::vec4 clip = m * glm::vec4(p, 1.f);
         CHECK(clip.w > c.near_plane);
         CHECK(clip.w < c.far_plane);
@@ -166,7 +145,7 @@ TEST_SUITE("raster") {
 
   TEST_CASE("FramePoints frames the course's mary tightly" * prt::test::NeedsSharedData()) {
     const std::string data = *prt::test::SharedData();
-    const std::vector<glm::vec3> mary = ObjVertices(data + "/games202/mary/mary.obj");
+    const std::vector<glm::vec3> mary = prt::LoadObj(data + "/games202/mary/mary.obj").mesh.positions;
     REQUIRE(mary.size() > 1000);
     const float aspect = 360.f / 1000.f;
     const Projected r = Project(prt::FramePoints(mary, aspect), aspect, mary);
