@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -48,6 +49,22 @@ std::string PrtBinary() {
 
 std::string QuickScene() {
   return "--mesh " + Q(Fixture("obj/tetra_no_normals.obj")) + " --env furnace --transport unshadowed";
+}
+
+int StartLongRender(const std::string& out, const std::string& size) {
+  // Everything the child needs is made before fork: after it, the child (of a process with
+  // threads) may only make async-signal-safe calls.
+  const std::string binary = PrtBinary(), mesh = Fixture("obj/tetra_no_normals.obj");
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (null >= 0) ::dup2(null, 2);
+    ::execl(binary.c_str(), binary.c_str(), "render", "--mesh", mesh.c_str(), "--env", "furnace", "--transport",
+            "unshadowed", "--frames", "9999", "--size", size.c_str(), "--threads", "1", "--quiet", "--out", out.c_str(),
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  return pid;
 }
 
 RunResult RunPrt(const std::string& arguments) { return RunCommand(ShellQuote(PrtBinary()) + " " + arguments); }

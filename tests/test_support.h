@@ -45,6 +45,11 @@ inline std::string Q(const std::string& text) { return ShellQuote(text); }
 /// furnace, closed-form transport.
 std::string QuickScene();
 
+/// Starts, in a child process, a render of 9999 frames of `size` (QuickScene, one thread,
+/// stderr silenced) into `out`: a run that lasts long enough to be watched and killed.
+/// Returns the child's process id (the caller waits for it).
+int StartLongRender(const std::string& out, const std::string& size);
+
 /// Runs a shell command line, capturing its stdout and stderr.
 RunResult RunCommand(const std::string& command);
 

@@ -16,7 +16,6 @@
 #include <string>
 #include <thread>
 
-#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -57,25 +56,14 @@ std::map<std::string, std::string> FillWithMarkers(const std::string& dir, int n
 
 TEST_SUITE("app") {
   TEST_CASE("no data lost: a render killed mid-run leaves every earlier frame as it was") {
-    const std::string binary = test::PrtBinary();
     const std::string dir = test::ScratchDir("no_data_loss_kill");
     constexpr int kMarkers = 400;
     const auto old = FillWithMarkers(dir, kMarkers);
 
     // Many small frames (four-digit names, like the markers): the run would take a while; it is
     // killed once 20 frames are written (into the staging folder, until the run succeeds).
-    const std::string mesh = test::Fixture("obj/tetra_no_normals.obj");
-    const pid_t pid = ::fork();
-    REQUIRE(pid >= 0);
-    if (pid == 0) {
-      // Only async-signal-safe calls between fork and exec (the test process has threads).
-      const int null = ::open("/dev/null", O_WRONLY);
-      if (null >= 0) ::dup2(null, 2);
-      ::execl(binary.c_str(), binary.c_str(), "render", "--mesh", mesh.c_str(), "--env", "furnace", "--transport", "unshadowed",
-              "--frames", "9999", "--size", "48x32", "--threads", "1", "--out", dir.c_str(), "--quiet",
-              static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
+    const pid_t pid = test::StartLongRender(dir, "48x32");
+    REQUIRE(pid > 0);
     const std::string staging = dir + "/" + OutputFolder::kStagingName;
     const std::string watched = staging + "/frame_0020.png";
     bool started = false;
@@ -124,8 +112,7 @@ TEST_SUITE("app") {
     CHECK(temps <= 1);
 
     // The killed run's lock blocks nothing, and the next successful run removes its staging folder.
-    const auto later = test::RunPrt("render --mesh " + Q(mesh) + " --env furnace --transport unshadowed --frames 1 "
-                                    "--size 8x8 --quiet --out " + Q(dir));
+    const auto later = test::RunPrt("render " + test::QuickScene() + " --frames 1 --size 8x8 --quiet --out " + Q(dir));
     CHECK(later.exit_code == 0);
     CHECK_FALSE(fs::exists(staging));
     for (const auto& entry : fs::directory_iterator(dir)) CHECK_FALSE(IsTemp(entry.path().filename().string()));

@@ -66,18 +66,9 @@ TEST_SUITE("app") {
   }
 
   TEST_CASE("output folder: two renders into one folder at the same time, the second is refused") {
-    const std::string binary = test::PrtBinary();
     const std::string dir = test::ScratchDir("folder_two_runs");
-    const std::string mesh = test::Fixture("obj/tetra_no_normals.obj");
-    const pid_t pid = ::fork();
-    REQUIRE(pid >= 0);
-    if (pid == 0) {
-      const int null = ::open("/dev/null", O_WRONLY);
-      if (null >= 0) ::dup2(null, 2);
-      ::execl(binary.c_str(), binary.c_str(), "render", "--mesh", mesh.c_str(), "--env", "furnace", "--transport", "unshadowed",
-              "--frames", "9999", "--size", "16x12", "--out", dir.c_str(), static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
+    const pid_t pid = test::StartLongRender(dir, "16x12");
+    REQUIRE(pid > 0);
     // Wait until the first run holds the folder (its pid is in the lock file).
     const std::string lock = dir + "/" + OutputFolder::kLockName;
     bool holding = false;
