@@ -13,6 +13,6 @@ cmake --build "$build" --parallel "$(nproc)"
 
 case "$what" in
   demo) "$build/prt" demo ;;
-  test) ctest --test-dir "$build" --output-on-failure ;;
+  test) ctest --test-dir "$build" --output-on-failure --no-tests=error --parallel "$(nproc)" ;;
   *) echo "usage: bash scripts/quickstart.sh demo|test" >&2; exit 2 ;;
 esac

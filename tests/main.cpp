@@ -1,3 +1,92 @@
-// The one test executable: doctest's main, one TEST_SUITE per module of src/.
-#define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
+// The one test executable: doctest's runner, one TEST_SUITE per module of src/, with two rules
+// about the tests that need ../shared/data (those decorated with test::NeedsSharedData()):
+//
+// - Skipped, never passed. Without the data they carry doctest's skip decorator, so a whole run
+//   counts them as skipped. CTest runs each test case as its own process (tests/CMakeLists.txt);
+//   a run whose filter selects only such skipped cases exits with kSkipExit, which CTest reports
+//   as "Skipped". Listing always names every case, so CTest knows them whether or not the data
+//   is there.
+// - Required where it must be there: with PRT_REQUIRE_SHARED_DATA=1 (CI sets it) a missing data
+//   folder fails the run at once instead of skipping anything.
+#define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <vector>
+
+#include "tests/test_support.h"
+
+namespace {
+
+/// The exit status CTest takes for "skipped" (SKIP_RETURN_CODE in tests/CMakeLists.txt).
+constexpr int kSkipExit = 77;
+
+/// Counts the test cases that start, and the ones a count query selects.
+struct Counter : doctest::IReporter {
+  static inline bool run = false;  ///< false for queries (--list-test-cases, --count...)
+  static inline int started = 0;
+  static inline unsigned selected = 0;
+  explicit Counter(const doctest::ContextOptions&) {}
+  void report_query(const doctest::QueryData& q) override {
+    if (q.run_stats) selected = q.run_stats->numTestCasesPassingFilters;
+  }
+  void test_run_start() override { run = true; }
+  void test_run_end(const doctest::TestRunStats&) override {}
+  void test_case_start(const doctest::TestCaseData&) override { ++started; }
+  void test_case_reenter(const doctest::TestCaseData&) override {}
+  void test_case_end(const doctest::CurrentTestCaseStats&) override {}
+  void test_case_exception(const doctest::TestCaseException&) override {}
+  void subcase_start(const doctest::SubcaseSignature&) override {}
+  void subcase_end() override {}
+  void log_assert(const doctest::AssertData&) override {}
+  void log_message(const doctest::MessageData&) override {}
+  void test_case_skipped(const doctest::TestCaseData&) override {}
+};
+REGISTER_LISTENER("prt_counter", 1, Counter);
+
+bool IsListing(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    for (const char* flag : {"--list-test-cases", "-ltc", "--dt-list-test-cases", "--dt-ltc"}) {
+      if (std::strncmp(argv[i], flag, std::strlen(flag)) == 0) return true;
+    }
+  }
+  return false;
+}
+
+/// How many test cases the command line's filters select when nothing is skipped.
+unsigned SelectedWithoutSkipping(int argc, char** argv) {
+  std::vector<const char*> args(argv, argv + argc);
+  args.push_back("--no-skip");
+  args.push_back("--count");  // a flag only: setOption would write --count=true, which is ignored
+  std::ostringstream quiet;
+  doctest::Context count(static_cast<int>(args.size()), args.data());
+  count.setCout(&quiet);
+  Counter::selected = 0;
+  count.run();
+  return Counter::selected;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const char* required = std::getenv("PRT_REQUIRE_SHARED_DATA");
+  if (required && *required && std::strcmp(required, "0") != 0 && !prt::test::SharedData()) {
+    std::fprintf(stderr, "prt_tests: PRT_REQUIRE_SHARED_DATA is set, but the course data (%s) is missing\n",
+                 PRT_SHARED_DATA_DIR);
+    return 1;
+  }
+  int result = 0;
+  {
+    doctest::Context context(argc, argv);
+    if (IsListing(argc, argv)) context.setOption("no-skip", true);
+    result = context.run();
+  }
+  if (result == 0 && Counter::run && Counter::started == 0 && SelectedWithoutSkipping(argc, argv) > 0) {
+    std::printf("[prt_tests] skipped: the selected test cases need the course data (%s)\n", PRT_SHARED_DATA_DIR);
+    return kSkipExit;
+  }
+  return result;
+}

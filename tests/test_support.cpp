@@ -21,8 +21,9 @@ std::string SourceDir() { return PRT_SOURCE_DIR; }
 std::string Fixture(const std::string& relative) { return SourceDir() + "/tests/data/" + relative; }
 
 std::optional<std::string> SharedData() {
+  const char* override_dir = std::getenv("PRT_SHARED_DATA");
   std::error_code ec;
-  const fs::path p = fs::weakly_canonical(PRT_SHARED_DATA_DIR, ec);
+  const fs::path p = fs::weakly_canonical(override_dir ? override_dir : PRT_SHARED_DATA_DIR, ec);
   if (ec || !fs::is_directory(p / "games202")) return std::nullopt;
   return p.string();
 }

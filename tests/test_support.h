@@ -15,7 +15,8 @@ std::string SourceDir();
 /// A fixture path: SourceDir()/tests/data/<relative>.
 std::string Fixture(const std::string& relative);
 
-/// `../shared/data` beside the project if it exists (a user's fresh clone does not have it).
+/// `../shared/data` beside the project if it exists (a user's fresh clone does not have it), or
+/// the folder $PRT_SHARED_DATA names (PRT_SHARED_DATA=none runs the suite as a fresh clone would).
 std::optional<std::string> SharedData();
 
 /// The decorator of a test case that needs `../shared/data`: `TEST_CASE("..." *

@@ -123,7 +123,7 @@ TEST_SUITE("app") {
     for (const Command& c : Commands()) CHECK(list.out.find(std::string("  ") + c.name + " ") != std::string::npos);
   }
 
-  TEST_CASE("cli: a value that is not a number says so; one out of range gives the range") {
+  TEST_CASE("cli: a value that is not a number says so, one out of range gives the range") {
     const auto check = [](const std::string& value, const std::string& problem) {
       CAPTURE(value);
       Args args("render", {"--samples", value}, RenderSpec());

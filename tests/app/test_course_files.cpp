@@ -130,7 +130,7 @@ TEST_SUITE("app") {
     CHECK_FALSE(fs::exists(dir + "/out/transport_r.txt"));
   }
 
-  TEST_CASE("course files: an lmax the viewer cannot read is said; lmax 2 is not") {
+  TEST_CASE("course files: an lmax the viewer cannot read is said, lmax 2 is not") {
     const std::string dir = test::ScratchDir("course_lmax");
     const std::string base = "precompute --mesh " + Q(test::Fixture("obj/tetra_no_normals.obj")) +
                              " --env furnace --transport unshadowed --out " + Q(dir);

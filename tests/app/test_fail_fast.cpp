@@ -157,7 +157,7 @@ TEST_SUITE("app") {
     CHECK(r.err.find("--target 0,1.5,0 --up 0,1,0 --fov 36") != std::string::npos);  // the demo's camera
   }
 
-  TEST_CASE("fail fast: --out of basis and diff creates missing folders; other formats are refused") {
+  TEST_CASE("fail fast: --out of basis and diff creates missing folders, other formats are refused") {
     const std::string dir = test::ScratchDir("out_folders");
     const auto basis = test::RunPrt("basis --lmax 1 --cell 32 --out " + Q(dir + "/new/deeper/basis.png"));
     CHECK(basis.exit_code == 0);

@@ -173,7 +173,7 @@ TEST_SUITE("app") {
     CHECK(split_hi + 2 >= whole_lo);     // far from the block the floor is as bright as before
   }
 
-  TEST_CASE("mesh repairs: lines not understood are counted on the summary; index errors quote the index") {
+  TEST_CASE("mesh repairs: lines not understood are counted on the summary, index errors quote the index") {
     const auto garbage = test::RunPrt("render --mesh " + Q(test::Fixture("obj/garbage_lines.obj")) +
                                       " --env furnace --transport unshadowed --frames 1 --size 32x24 --out " +
                                       Q(test::ScratchDir("garbage_lines")));

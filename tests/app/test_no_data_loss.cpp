@@ -119,7 +119,7 @@ TEST_SUITE("app") {
     CHECK(ReadFile(dir + "/frame_0001.png") == old.at("frame_0001.png"));  // not prt's: never removed
   }
 
-  TEST_CASE("no data lost: frames prt did not write are never removed; failed runs keep old outputs") {
+  TEST_CASE("no data lost: frames prt did not write are never removed, failed runs keep old outputs") {
     const std::string dir = test::ScratchDir("no_data_loss_fewer");
     const auto old = FillWithMarkers(dir, 10);
     const std::string run = "render --env furnace --transport unshadowed --frames 3 --size 16x16 --mesh " +

@@ -47,7 +47,7 @@ std::string ReadIfPresent(const std::string& path) {
 }  // namespace
 
 TEST_SUITE("app") {
-  TEST_CASE("output folder: a folder in use is refused at once; a crashed run's lock blocks nothing") {
+  TEST_CASE("output folder: a folder in use is refused at once, a crashed run's lock blocks nothing") {
     const std::string dir = test::ScratchDir("folder_lock");
     // Hold the lock as a running prt would.
     const int fd = ::open((dir + "/" + OutputFolder::kLockName).c_str(), O_RDWR | O_CREAT, 0644);
@@ -85,7 +85,7 @@ TEST_SUITE("app") {
     CHECK(second.err.find("in use by another prt run (process " + std::to_string(pid) + ")") != std::string::npos);
   }
 
-  TEST_CASE("output folder: after a run the folder holds exactly its outputs; other files are untouched") {
+  TEST_CASE("output folder: after a run the folder holds exactly its outputs, other files are untouched") {
     const std::string dir = test::ScratchDir("folder_exact");
     std::ofstream(dir + "/notes.txt") << "mine";
     std::ofstream(dir + "/frame_0007.png") << "a frame prt did not write";
@@ -136,7 +136,7 @@ TEST_SUITE("app") {
     CHECK(cube.exit_code == 0);
   }
 
-  TEST_CASE("output folder: a failed run leaves the earlier outputs exactly; only its in-place files stay") {
+  TEST_CASE("output folder: a failed run leaves the earlier outputs exactly, only its in-place files stay") {
     const std::string dir = test::ScratchDir("folder_failed");
     {
       OutputFolder folder(dir);

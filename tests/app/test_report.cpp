@@ -50,7 +50,7 @@ TEST_SUITE("app") {
     CHECK(prt::ChooseLmax(*sky, 0.01, tight.lmax - 1).error > 0.01);  // one band fewer is not enough
   }
 
-  TEST_CASE("plot: axes, lines and legend are drawn; points that log axes cannot show are skipped") {
+  TEST_CASE("plot: axes, lines and legend are drawn, points that log axes cannot show are skipped") {
     prt::PlotSeries a{"a", {1e-3, 1e-2, 1e-1}, {1e-1, 1e-2, 1e-3}, prt::PlotColor(0), false};
     prt::PlotSeries b{"b", {0.0, 1e-2, 1.0}, {1.0, -1.0, 1e-2}, prt::PlotColor(1), true};
     prt::PlotOptions o;

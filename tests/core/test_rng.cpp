@@ -16,7 +16,7 @@ TEST_SUITE("core") {
     CHECK(differ);
   }
 
-  TEST_CASE("Pcg32 doubles are uniform in [0,1)") {
+  TEST_CASE("Pcg32 doubles are uniform, 0 <= u < 1") {
     // Mean of n uniforms has standard deviation 1/sqrt(12 n); 6 sigma cannot fail by chance.
     const int n = 200000;
     prt::Pcg32 rng(1, 2);

@@ -116,7 +116,7 @@ TEST_SUITE("env") {
     CHECK(ErrorOf("furnace:0x10").find("is not a number") != std::string::npos);
   }
 
-  TEST_CASE("EXR: DWAB and ZIP files load; NaN, Inf and negative texels are sanitised to zero") {
+  TEST_CASE("EXR: DWAB and ZIP files load, NaN, Inf and negative texels are sanitised to zero") {
     const std::string dir = test::ScratchDir("exr");
     for (auto compression : {Imf::DWAB_COMPRESSION, Imf::ZIP_COMPRESSION, Imf::PIZ_COMPRESSION}) {
       const std::string path = dir + "/env.exr";

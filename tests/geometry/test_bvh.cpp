@@ -195,7 +195,7 @@ TEST_SUITE("geometry") {
     }
   }
 
-  TEST_CASE("a point at the bottom of a closed room is fully occluded; an open sky is not") {
+  TEST_CASE("a point at the bottom of a closed room is fully occluded, an open sky is not") {
     const Mesh room = MakeBox(glm::vec3(-1.0f, 0.0f, -1.0f), glm::vec3(1.0f, 4.0f, 1.0f), BoxFacing::kInward, 2);
     const Bvh bvh = Bvh::Build(room);
     const RayFan fan = MakeRayFan(test::FibonacciDirections(1024));

@@ -84,7 +84,7 @@ TEST_SUITE("io") {
     CHECK(Near(m.mesh.normals[0], -glm::normalize(glm::vec3(1.0f)), 1e-6f));
   }
 
-  TEST_CASE("obj: corners with normals weld by (position, normal) pair; creases stay split") {
+  TEST_CASE("obj: corners with normals weld by (position, normal) pair, creases stay split") {
     const LoadedMesh m = LoadObj(test::Fixture("obj/crease.obj"));
     CHECK(m.mesh.vertex_count() == 7);
     CHECK(m.mesh.triangle_count() == 3);
@@ -232,7 +232,7 @@ TEST_SUITE("io") {
     for (const auto& a : missing.mesh.albedo) CHECK(Near(a, glm::vec3(kDefaultAlbedo)));
   }
 
-  TEST_CASE("obj: a material name defined twice takes its last definition; colours average") {
+  TEST_CASE("obj: a material name defined twice takes its last definition, colours average") {
     const LoadedMesh m = LoadObj(test::Fixture("obj/duplicate_names.obj"));
     REQUIRE(m.mesh.vertex_count() == 6);
     const glm::vec3 grey(0.8f), blue(0.2f, 0.4f, 0.9f), clamped(1.0f, 0.5f, 0.5f);

@@ -84,7 +84,7 @@ TEST_SUITE("io") {
     CHECK(entries == 1);
   }
 
-  TEST_CASE("Grey and RGBA PNGs are read as RGB; 16-bit channels are rounded") {
+  TEST_CASE("Grey and RGBA PNGs are read as RGB, 16-bit channels are rounded") {
     const std::string dir = prt::test::ScratchDir("png_kinds");
     const unsigned char grey[4] = {0, 100, 200, 255};
     REQUIRE(stbi_write_png((dir + "/g.png").c_str(), 2, 2, 1, grey, 2));

@@ -190,7 +190,7 @@ TEST_SUITE("precompute") {
     }
   }
 
-  TEST_CASE("coloured albedo gives three transport vectors; grey gives one") {
+  TEST_CASE("coloured albedo gives three transport vectors, grey gives one") {
     Mesh scene = Concat(MakeSphere(16, 1.0f, glm::vec3(0, 1.2f, 0)), MakePlane(6.0f, 4));
     TransportOptions o;
     o.mode = TransportMode::kInterreflection;
