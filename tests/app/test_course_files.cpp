@@ -15,7 +15,9 @@
 #include <glm/vec3.hpp>
 
 #include "core/atomic_file.h"
+#include "core/image.h"
 #include "geometry/procedural.h"
+#include "io/hdr_writer.h"
 #include "io/obj_writer.h"
 #include "tests/test_support.h"
 
@@ -77,6 +79,51 @@ std::string WriteRedWallScene(const std::string& dir) {
   return dir + "/scene.obj";
 }
 
+/// A cube map folder of .hdr faces (size^2 texels, one value per face): red lights posx (1)
+/// and negx (1/4), green posy and negy, blue posz and negz. Every face has its own channel and
+/// level, so a face put in another's place, or a channel in another's, changes the light.
+std::string WriteAxisCube(const std::string& dir, int size) {
+  const char* names[6] = {"posx", "negx", "posy", "negy", "posz", "negz"};
+  fs::create_directories(dir);
+  for (int k = 0; k < 6; ++k) {
+    glm::vec3 value(0.0f);
+    value[k / 2] = k % 2 == 0 ? 1.0f : 0.25f;
+    ImageF face(size, size);
+    for (auto& p : face.pixels) p = value;
+    WriteFileAtomic(dir + "/" + names[k] + ".hdr", EncodeHdr(face));
+  }
+  return dir;
+}
+
+/// The 9 coefficients (bands 0..2) of the WriteAxisCube light, per channel, by a quadrature of
+/// our own: each face is the plane at distance 1, where dw = ds dt / r^3 (r^2 = 1 + s^2 + t^2),
+/// integrated by the midpoint rule on a 400^2 grid (error below 1e-5), against the closed forms
+/// of CONVENTIONS.md.
+std::vector<glm::dvec3> AxisCubeCoefficients() {
+  std::vector<glm::dvec3> L(9, glm::dvec3(0.0));
+  const int n = 400;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int sign : {1, -1}) {
+      const double level = sign > 0 ? 1.0 : 0.25;
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) {
+          const double s = -1.0 + (i + 0.5) * 2.0 / n, t = -1.0 + (j + 0.5) * 2.0 / n;
+          const double r = std::sqrt(1.0 + s * s + t * t);
+          glm::dvec3 d(0.0);
+          d[axis] = sign / r;
+          d[(axis + 1) % 3] = s / r;
+          d[(axis + 2) % 3] = t / r;
+          const double dw = (2.0 / n) * (2.0 / n) / (r * r * r);
+          const double x = d.x, y = d.y, z = d.z;
+          const double Y[9] = {0.282095, -0.488603 * y, 0.488603 * z, -0.488603 * x, 1.092548 * x * y,
+                               -1.092548 * y * z, 0.315392 * (3 * z * z - 1), -1.092548 * x * z,
+                               0.546274 * (x * x - y * y)};
+          for (int k = 0; k < 9; ++k) L[k][axis] += level * Y[k] * dw;
+        }
+    }
+  return L;
+}
+
 std::size_t FloorFaces() { return MakePlane(2.0f, 8).triangle_count(); }
 std::size_t WallFaces() { return MakeBox(glm::vec3(0.0f), glm::vec3(1.0f), BoxFacing::kOutward, 4).triangle_count(); }
 
@@ -118,6 +165,40 @@ TEST_SUITE("app") {
     for (std::size_t i = 0; i < 3 * FloorFaces(); ++i) floor_r += red[i][0], floor_g += green[i][0], floor_b += blue[i][0];
     CHECK(floor_r > 1.05 * floor_b);
     CHECK(std::abs(floor_g - floor_b) <= 1e-6 * std::abs(floor_b));
+  }
+
+  TEST_CASE("course files: light.txt of prt light and prt precompute holds each face's light in its own channel") {
+    // Read back as the viewer reads it, against an independent quadrature of the same cube.
+    const std::string dir = test::ScratchDir("course_light");
+    const std::string cube = WriteAxisCube(dir + "/cube", 32);
+    const std::vector<glm::dvec3> expected = AxisCubeCoefficients();
+    // The red light of +X is -0.4886 * 0.75 * 1.7408 in Y11 (Y11 = -0.4886 x): its sign says
+    // which face is which.
+    CHECK(expected[3].x == doctest::Approx(-0.488603 * 0.75 * 4.0 * std::atan(1.0 / std::sqrt(2.0)) / std::sqrt(2.0))
+                               .epsilon(1e-4));
+    // prt samples each 32^2 face at texel centres with exact texel solid angles: its error
+    // falls as 1/N^2 and is 1.1e-4 at most here (measured); faces or channels out of place are
+    // off by 0.1 or more.
+    constexpr double kCubeQuadrature = 2e-3;
+    const auto printed = test::RunPrt("light --env " + Q(cube));
+    CAPTURE(printed.err);
+    REQUIRE(printed.exit_code == 0);
+    WriteFileAtomic(dir + "/printed.txt", printed.out);
+    const auto precomputed = test::RunPrt("precompute --mesh " + Q(test::Fixture("obj/tetra_no_normals.obj")) +
+                                          " --env " + Q(cube) + " --transport unshadowed --out " + Q(dir + "/out"));
+    CAPTURE(precomputed.err);
+    REQUIRE(precomputed.exit_code == 0);
+    for (const std::string& file : {dir + "/printed.txt", dir + "/out/light.txt"}) {
+      const auto rows = ReadLikeTheViewer(file, 3, Header::kNone);
+      REQUIRE(rows.size() == 9);
+      for (int k = 0; k < 9; ++k)
+        for (int c = 0; c < 3; ++c) {
+          CAPTURE(file);
+          CAPTURE(k);
+          CAPTURE(c);
+          CHECK(std::abs(rows[k][c] - expected[k][c]) < kCubeQuadrature);
+        }
+    }
   }
 
   TEST_CASE("course files: grey albedo writes one transport.txt and no channel files") {

@@ -155,6 +155,69 @@ TEST_SUITE("render") {
     CHECK(m.mean_abs < 0.2);
   }
 
+  TEST_CASE("a non-square frame shows a sphere round, of the size the pinhole camera gives") {
+    // Sphere of radius 1 at distance 8 on the optical axis: its outline is a circle of angular
+    // radius asin(1/8), tan(asin(1/8)) / tan(fov/2) half-heights wide, in both directions:
+    // pixels are square whatever the frame's shape. Wide and tall frames alike.
+    Scene s;
+    s.mesh = MakeSphere(64);
+    s.env = MakeFurnace(1.0);
+    s.light = ProjectLight(*s.env, 2);
+    TransportOptions t;
+    t.mode = TransportMode::kUnshadowed;
+    s.transport = ComputeTransport(s.mesh, t, nullptr);
+    for (const auto& [width, height] : {std::pair{160, 80}, std::pair{60, 120}}) {
+      RenderOptions o = SmallFrame();
+      o.env_background = false;
+      o.width = width, o.height = height;
+      o.eye = glm::dvec3(0, 0, 8), o.target = glm::dvec3(0.0);
+      const Image8 img = Draw(s, o, 0.0);
+      int x0 = width, x1 = -1, y0 = height, y1 = -1;
+      for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+          if (img.rgb[3 * (std::size_t(y) * width + x)] != 0) x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+      const double radius = std::tan(std::asin(0.125)) / std::tan(0.5 * *o.fov * kPi / 180.0) * 0.5 * height;
+      CAPTURE(width);
+      CAPTURE(height);
+      // A pixel is covered when its centre is inside: the extent is the diameter to within a
+      // pixel at each end (the 64-segment outline is 0.1 % smaller than the sphere's).
+      CHECK(std::abs((x1 - x0 + 1) - 2.0 * radius) <= 2.0);
+      CHECK(std::abs((y1 - y0 + 1) - 2.0 * radius) <= 2.0);
+      CHECK(std::abs(0.5 * (x0 + x1 + 1) - 0.5 * width) <= 1.0);
+      CHECK(std::abs(0.5 * (y0 + y1 + 1) - 0.5 * height) <= 1.0);
+    }
+  }
+
+  TEST_CASE("the environment behind the mesh turns with the light: the sun is drawn where the light comes from") {
+    // Light turned by a about +Y comes from R(a) d where it came from d (CONVENTIONS.md). A
+    // camera looking along R(a) sun must see the sun's disk (radiance in the hundreds, white
+    // after the clamp) at the image centre; one looking along R(-a) sun must not.
+    Scene s;
+    SkyParams sky;
+    s.env = MakeSky(sky);
+    s.light = ProjectLight(*s.env, 2);
+    const double a = kPi / 2;
+    const glm::dvec3 sun = SunDirection(sky);
+    const glm::dvec3 turned = AxisAngle({0, 1, 0}, a) * sun, against = AxisAngle({0, 1, 0}, -a) * sun;
+    s.mesh = MakeSphere(8, 0.1f, glm::vec3(-3.0 * (turned + against)));  // behind both cameras
+    TransportOptions t;
+    t.mode = TransportMode::kUnshadowed;
+    s.transport = ComputeTransport(s.mesh, t, nullptr);
+    RenderOptions o = SmallFrame();
+    o.width = o.height = 33;
+    o.fov = 10.0;
+    o.eye = glm::dvec3(0.0);
+    const auto centre = [](const Image8& img) {
+      const std::size_t p = 3 * (16 * 33 + 16);
+      return glm::ivec3(img.rgb[p], img.rgb[p + 1], img.rgb[p + 2]);
+    };
+    o.target = turned;
+    CHECK(centre(Draw(s, o, a)) == glm::ivec3(255));
+    o.target = against;
+    CHECK(centre(Draw(s, o, a)) != glm::ivec3(255));
+    CHECK(centre(Draw(s, o, -a)) == glm::ivec3(255));
+  }
+
   TEST_CASE("golden frame of the course scene: mary under Grace Cathedral" * test::NeedsSharedData()) {
     const std::string data = *test::SharedData();
     Scene s;

@@ -1,6 +1,15 @@
+// Atomic outputs: a file is complete or untouched, never half-written. The failure cases are made
+// deterministic: the write is cut short by a file-size limit (RLIMIT_FSIZE, SIGXFSZ ignored, so
+// write() fails with EFBIG part way through), and the old bytes must still be there.
 #include <doctest/doctest.h>
 
+#include <csignal>
 #include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <sys/resource.h>
 
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -8,27 +17,90 @@
 
 namespace fs = std::filesystem;
 
-TEST_SUITE("core") {
-  TEST_CASE("WriteFileAtomic replaces a file completely and leaves no temporary behind") {
-    const std::string dir = prt::test::ScratchDir("atomic");
-    const std::string path = dir + "/a.txt";
-    prt::WriteFileAtomic(path, "old");
-    prt::WriteFileAtomic(path, "new content");
-    CHECK(prt::ReadFile(path) == "new content");
-    int entries = 0;
-    for (auto& e : fs::directory_iterator(dir)) (void)e, ++entries;
-    CHECK(entries == 1);
+namespace {
+
+/// The names in `dir`.
+std::vector<std::string> Entries(const std::string& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  return names;
+}
+
+/// Bytes that differ from position to position, so a partial overwrite cannot go unnoticed.
+std::string Pattern(std::size_t size, char seed) {
+  std::string s(size, '\0');
+  for (std::size_t i = 0; i < size; ++i) s[i] = static_cast<char>(seed + i * 7 % 61);
+  return s;
+}
+
+/// While alive, this process may write files of at most `bytes` bytes; a longer write fails
+/// with EFBIG instead of raising SIGXFSZ.
+class FileSizeLimit {
+ public:
+  explicit FileSizeLimit(rlim_t bytes) {
+    ::getrlimit(RLIMIT_FSIZE, &saved_);
+    old_handler_ = std::signal(SIGXFSZ, SIG_IGN);
+    rlimit limited = saved_;
+    limited.rlim_cur = bytes;
+    REQUIRE(::setrlimit(RLIMIT_FSIZE, &limited) == 0);
+  }
+  ~FileSizeLimit() {
+    ::setrlimit(RLIMIT_FSIZE, &saved_);
+    std::signal(SIGXFSZ, old_handler_);
   }
 
-  TEST_CASE("An uncommitted AtomicFile leaves the old file intact") {
+ private:
+  rlimit saved_{};
+  void (*old_handler_)(int) = nullptr;
+};
+
+}  // namespace
+
+TEST_SUITE("core") {
+  TEST_CASE("WriteFileAtomic replaces a longer file completely and leaves no temporary behind") {
+    const std::string dir = prt::test::ScratchDir("atomic");
+    const std::string path = dir + "/a.txt";
+    prt::WriteFileAtomic(path, Pattern(5000, 'a'));
+    prt::WriteFileAtomic(path, "new content");
+    CHECK(prt::ReadFile(path) == "new content");
+    CHECK(Entries(dir) == std::vector<std::string>{"a.txt"});
+  }
+
+  TEST_CASE("a write cut short part way leaves the old file's bytes exactly, and no temporary") {
+    const std::string dir = prt::test::ScratchDir("atomic_cut");
+    const std::string path = dir + "/frame.png";
+    const std::string old = Pattern(3000, 'o');
+    prt::WriteFileAtomic(path, old);
+    {
+      // 4 KiB allowed, 64 KiB asked: the first 4 KiB are written, then write() fails.
+      const FileSizeLimit limit(4096);
+      CHECK_THROWS_WITH_AS(prt::WriteFileAtomic(path, Pattern(65536, 'n')), doctest::Contains(path.c_str()), prt::Error);
+    }
+    CHECK(prt::ReadFile(path) == old);
+    CHECK(Entries(dir) == std::vector<std::string>{"frame.png"});
+  }
+
+  TEST_CASE("an AtomicFile writes beside its destination, which keeps its old bytes until Commit") {
     const std::string dir = prt::test::ScratchDir("atomic2");
     const std::string path = dir + "/a.txt";
     prt::WriteFileAtomic(path, "keep me");
     {
       prt::AtomicFile f(path);
-      prt::WriteFileAtomic(f.temp_path(), "half");  // written but never committed
+      CHECK(fs::path(f.temp_path()).parent_path() == fs::path(path).parent_path());  // same file system
+      std::ofstream(f.temp_path(), std::ios::binary) << "half";
+      CHECK(prt::ReadFile(path) == "keep me");
+      // destroyed without Commit: the temporary goes, the old file stays
     }
     CHECK(prt::ReadFile(path) == "keep me");
+    CHECK(Entries(dir) == std::vector<std::string>{"a.txt"});
+    {
+      prt::AtomicFile f(path);
+      std::ofstream(f.temp_path(), std::ios::binary) << "whole";
+      CHECK(prt::ReadFile(path) == "keep me");
+      f.Commit();
+    }
+    CHECK(prt::ReadFile(path) == "whole");
+    CHECK(Entries(dir) == std::vector<std::string>{"a.txt"});
   }
 
   TEST_CASE("ReadFile names the path for a missing file and a directory") {

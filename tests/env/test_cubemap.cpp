@@ -48,6 +48,51 @@ TEST_SUITE("env") {
           FaceFrames(CubeLayout::kGames202)[0].n);
   }
 
+  TEST_CASE("the standard face table is OpenGL's: every texel centre of every face looks where the spec says") {
+    // Faces of 6 texels whose values name (face, row, column): the lookup at the spec's direction
+    // of a texel centre must return that texel. A swapped, mirrored or turned face fails.
+    const int size = 6;
+    std::array<ImageF, 6> faces;
+    for (int k = 0; k < 6; ++k) {
+      faces[k] = ImageF(size, size);
+      for (int row = 0; row < size; ++row)
+        for (int col = 0; col < size; ++col) faces[k].at(col, row) = glm::vec3(float(k), float(row), float(col));
+    }
+    const CubemapEnvironment env(faces, CubeLayout::kStandard, "index cube");
+    for (int k = 0; k < 6; ++k)
+      for (int row = 0; row < size; ++row)
+        for (int col = 0; col < size; ++col) {
+          const double s = (col + 0.5) / size, t = (row + 0.5) / size;
+          const glm::dvec3 d = test::OpenGlCubeDirection(k, s, t);
+          const test::CubeTexel back = test::OpenGlCubeTexel(d);  // the test's table is self-consistent
+          REQUIRE(back.face == k);
+          REQUIRE(std::abs(back.s - s) < 1e-12);
+          REQUIRE(std::abs(back.t - t) < 1e-12);
+          CAPTURE(k);
+          CAPTURE(row);
+          CAPTURE(col);
+          CHECK(glm::length(env.Radiance(glm::normalize(d)) - glm::dvec3(k, row, col)) < 1e-9);
+        }
+    // The quadrature nodes the projection sums over sit at the same texels, with their values.
+    std::vector<Texel> texels;
+    for (std::size_t r = 0; r < env.RowCount(); ++r) {
+      env.Row(r, texels);
+      REQUIRE(texels.size() == std::size_t(size));
+      for (int col = 0; col < size; ++col) {
+        const test::CubeTexel at = test::OpenGlCubeTexel(texels[col].dir);
+        CAPTURE(r);
+        CAPTURE(col);
+        CHECK(at.face == int(r / size));
+        CHECK(int(at.t * size) == int(r % size));
+        CHECK(int(at.s * size) == col);
+        CHECK(glm::length(glm::dvec3(texels[col].radiance) - glm::dvec3(at.face, r % size, col)) == 0.0);
+      }
+    }
+    // And the faces' named axes: +Y is up (posy), -Z is forward (negz).
+    CHECK(env.Radiance({0, 1, 0}).x == 2.0);
+    CHECK(env.Radiance({0, 0, -1}).x == 5.0);
+  }
+
   TEST_CASE("Radiance() looks up the texel a direction falls in") {
     // Each texel holds its own index, so a lookup at its centre must return that index.
     const int size = 8;

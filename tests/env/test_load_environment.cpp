@@ -19,6 +19,8 @@
 #include "sh/basis.h"
 #include "sh/zonal.h"
 #include "core/atomic_file.h"
+#include "io/hdr_writer.h"
+#include "tests/env/env_test_util.h"
 #include "tests/test_support.h"
 
 using namespace prt;
@@ -98,6 +100,29 @@ TEST_SUITE("env") {
     CHECK(ErrorOf(empty).find("negz.png: empty file") != std::string::npos);
   }
 
+  TEST_CASE("a cubemap folder's files land on the faces OpenGL gives their names, unturned") {
+    // Six .hdr faces whose texels hold (face + 1, row + 1, column + 1): small integers, which
+    // RGBE stores exactly. Each texel must be found at the spec's direction of its centre.
+    const int size = 4;
+    const std::string dir = test::ScratchDir("cube_named");
+    for (int k = 0; k < 6; ++k) {
+      ImageF face(size, size);
+      for (int row = 0; row < size; ++row)
+        for (int col = 0; col < size; ++col) face.at(col, row) = glm::vec3(k + 1, row + 1, col + 1);
+      WriteFileAtomic(dir + "/" + kFaceNames[k] + ".hdr", EncodeHdr(face));
+    }
+    const auto env = LoadEnvironment(dir, CubeLayout::kStandard);
+    for (int k = 0; k < 6; ++k)
+      for (int row = 0; row < size; ++row)
+        for (int col = 0; col < size; ++col) {
+          const glm::dvec3 d = glm::normalize(test::OpenGlCubeDirection(k, (col + 0.5) / size, (row + 0.5) / size));
+          CAPTURE(kFaceNames[k]);
+          CAPTURE(row);
+          CAPTURE(col);
+          CHECK(glm::length(env->Radiance(d) - glm::dvec3(k + 1, row + 1, col + 1)) < 1e-6);
+        }
+  }
+
   TEST_CASE("1x1 faces are a valid (if coarse) cubemap") {
     const std::string dir = MakeCubeFolder("cube_1x1", 1);
     const auto env = LoadEnvironment(dir, CubeLayout::kStandard);
@@ -133,9 +158,28 @@ TEST_SUITE("env") {
       if (x == 5 && y == 3) return -5.0f;
       return 1.0f;
     });
-    const ShRgb L = ProjectLight(*LoadEnvironment(bad, CubeLayout::kStandard), 4);
+    const auto env = LoadEnvironment(bad, CubeLayout::kStandard);
+    // Exactly the three bad texels (row 3, columns 3..5) became 0, in every channel; every other
+    // texel kept its 1.
+    std::vector<Texel> texels;
+    int zeros = 0, ones = 0;
+    for (std::size_t r = 0; r < env->RowCount(); ++r) {
+      env->Row(r, texels);
+      for (std::size_t i = 0; i < texels.size(); ++i) {
+        const glm::dvec3 v = texels[i].radiance;
+        if (v == glm::dvec3(0.0)) {
+          ++zeros;
+          CHECK(r == 3);
+          CHECK((i >= 3 && i <= 5));
+        } else {
+          ones += v == glm::dvec3(1.0);
+        }
+      }
+    }
+    CHECK(zeros == 3);
+    CHECK(ones == 64 * 32 - 3);
+    const ShRgb L = ProjectLight(*env, 4);
     for (const auto& c : L) CHECK(std::isfinite(c.x));
-    CHECK(L[0].x < 2 * std::sqrt(3.14159265358979323846));  // three texels became 0
   }
 
   TEST_CASE("truncated EXR and a directory named .exr give errors") {

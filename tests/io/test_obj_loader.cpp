@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <sstream>
+#include <string>
 
 #include <glm/geometric.hpp>
 
@@ -96,6 +98,22 @@ TEST_SUITE("io") {
     const LoadedMesh m = LoadObj(test::Fixture("obj/tetra_no_normals.obj"));
     CHECK(m.mesh.vertex_count() == 4);
     CHECK(m.report.welded_away == 8);
+  }
+
+  TEST_CASE("obj: the weld joins corners closer than 1e-6 of the mesh size, and no farther ones") {
+    // Box diagonal sqrt(3): the weld radius is 1.7e-6. Corner 7 lies 1e-7 from corner 1 (the
+    // same point written differently): one vertex. Corner 4 lies 1e-4 from corner 1: a vertex
+    // of its own, as a model's fine detail (a thin slit, a sliver) must be.
+    const std::string dir = test::ScratchDir("obj_weld");
+    WriteFileAtomic(dir + "/near.obj",
+                    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0.0001 0 0\nv 1 0 1\nv 0 1 1\nv 0.0000001 0 0\nv 1 1 0\n"
+                    "f 1 2 3\nf 4 5 6\nf 7 8 3\n");
+    const LoadedMesh m = LoadObj(dir + "/near.obj");
+    CHECK(m.mesh.triangle_count() == 3);
+    CHECK(m.mesh.vertex_count() == 7);
+    CHECK(m.report.welded_away == 2);  // 9 corners: corner 3 twice, corner 7 onto corner 1
+    CHECK(m.mesh.triangles[2][0] == m.mesh.triangles[0][0]);
+    CHECK(m.mesh.triangles[1][0] != m.mesh.triangles[0][0]);
   }
 
   TEST_CASE("obj: each failure mode has its own clear error") {
@@ -271,14 +289,32 @@ TEST_SUITE("io") {
     CHECK(b.hi.y == doctest::Approx(3.41).epsilon(0.01));
   }
 
-  TEST_CASE("obj: the course's bunny loads" * test::NeedsSharedData()) {
-    const std::string data = *test::SharedData();
-    const LoadedMesh m = LoadObj(data + "/games202/bunny/bunny.obj");
-    CHECK(m.mesh.triangle_count() > 1000);
-    CHECK(m.mesh.normals.size() == m.mesh.vertex_count());
-    MESSAGE("bunny: " << m.mesh.vertex_count() << " vertices, " << m.mesh.triangle_count() << " triangles, "
-                      << m.report.dropped_degenerate << " dropped, " << m.report.warnings.size() << " warnings");
+  TEST_CASE("obj: the course's bunny loads: 1016 vertices by their (position, normal) pairs, 2000 triangles, the file's normals" * test::NeedsSharedData()) {
+    const std::string path = *test::SharedData() + "/games202/bunny/bunny.obj";
+    const LoadedMesh m = LoadObj(path);
+    // The file: 1016 v, 1016 vn, 2000 faces "f i//i j//j k//k" (counted by grep).
+    CHECK(m.mesh.vertex_count() == 1016);
+    CHECK(m.mesh.triangle_count() == 2000);
+    CHECK(m.report.dropped_degenerate == 0);
+    // Its first position and normal, read here from the text, are vertex 0's.
+    std::istringstream text(ReadFile(path));
+    std::string line;
+    glm::vec3 v0(0.0f), n0(0.0f);
+    bool have_v = false, have_n = false;
+    while (std::getline(text, line) && !(have_v && have_n)) {
+      std::istringstream ls(line);
+      std::string tag;
+      ls >> tag;
+      if (tag == "v" && !have_v) ls >> v0.x >> v0.y >> v0.z, have_v = true;
+      if (tag == "vn" && !have_n) ls >> n0.x >> n0.y >> n0.z, have_n = true;
+    }
+    REQUIRE(have_v);
+    REQUIRE(have_n);
+    CHECK(m.mesh.positions[0] == v0);
+    CHECK(glm::length(m.mesh.normals[0] - glm::normalize(n0)) < 1e-6f);
+    CHECK(std::count(m.normal_from_file.begin(), m.normal_from_file.end(), true) == 1016);
   }
+
 }
 
 }  // namespace prt

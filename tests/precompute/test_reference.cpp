@@ -7,20 +7,27 @@
 #include "env/procedural.h"
 #include "geometry/procedural.h"
 #include "precompute/error_metrics.h"
+#include "precompute/light.h"
 #include "precompute/reference.h"
 #include "precompute/reference_env_sampler.h"
 
 namespace prt {
 namespace {
 
+constexpr double kPi = 3.14159265358979323846;
+
 // Furnace (radiance up to 2): the estimator's only noise is that of max(0, n.w) under a
 // near-uniform density; with 2048 shifted lattice directions the worst vertex is off by 3.7e-3
 // (0.19%), so 1e-2 (0.5%) is a margin of under 3x that still catches a wrong weight or pdf.
 constexpr double kFurnaceTolerance = 1e-2;
-// The sky's table integral against its Gauss quadrature plus the analytic sun: the table's
-// max-of-9 cell weights and the defensive floor overestimate by construction, by at most the
-// floor (10% of the mean) plus the within-cell variation; 25% bounds it.
-constexpr double kTableTolerance = 0.25;
+// The sky's table integral against its exact value: the table's max-of-9 cell weights and the
+// defensive floor (10% of the mean) overestimate by construction, never underestimate; measured
+// 1.31x on the sky at 128 x 256 cells (the sun disk grazes cells whose max is far above their
+// mean).
+constexpr double kTableTolerance = 0.4;
+// The importance-sampled integral E[L/p] on 512^2 stratified points against the exact one:
+// measured 3e-4 off; a density that does not match the cells drawn is off by far more.
+constexpr double kSampledIntegral = 2e-3;
 
 }  // namespace
 
@@ -60,14 +67,31 @@ TEST_SUITE("precompute") {
     CHECK(one.rays > 0);
   }
 
-  TEST_CASE("reference: the environment table integrates the sky with its sun") {
+  TEST_CASE("reference: the environment table integrates the sky with its sun, and its samples are unbiased") {
     const SkyParams p;
     const auto env = MakeSky(p);
     const EnvSampler sampler(*env, 128, 256);
-    // The sky's luminance integral: band 0 of its projection times sqrt(4 pi).
-    const double sun_luminance = 0.2126 * 1.0 + 0.7152 * 0.93 + 0.0722 * 0.82;
-    CHECK(sampler.TableIntegral() > p.sun * sun_luminance);  // the sun alone
-    CHECK(sampler.TableIntegral() < (1.0 + kTableTolerance) * 4.0 * 3.14159265358979 * 2.0);
+    // The sky's luminance integral, independently: band 0 of its projection (whose sun disk is
+    // integrated analytically, test_procedural.cpp) times sqrt(4 pi).
+    const glm::dvec3 L00 = ProjectLight(*env, 0)[0];
+    const double exact = std::sqrt(4.0 * kPi) * (0.2126 * L00.x + 0.7152 * L00.y + 0.0722 * L00.z);
+    CHECK(sampler.TableIntegral() >= exact);
+    CHECK(sampler.TableIntegral() <= (1.0 + kTableTolerance) * exact);
+    // Unbiased: E[L / p] is the integral. A stratified 512^2 grid of (u1, u2); p nearly follows
+    // L, so L / p is nearly constant and the estimate is within kSampledIntegral of exact.
+    NeumaierSum sum;
+    const int n = 512;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const EnvSample e = sampler.Sample((i + 0.5) / n, (j + 0.5) / n);
+        REQUIRE(e.pdf > 0.0);
+        REQUIRE(std::abs(glm::length(e.dir) - 1.0) < 1e-12);
+        const glm::dvec3 L = env->Radiance(e.dir);
+        REQUIRE(e.radiance == L);
+        sum.Add((0.2126 * L.x + 0.7152 * L.y + 0.0722 * L.z) / e.pdf);
+      }
+    const double estimate = sum.Value() / (double(n) * n);
+    CHECK(std::abs(estimate / exact - 1.0) < kSampledIntegral);
   }
 
   TEST_CASE("error metrics: Neumaier sum and log-log slope") {

@@ -45,6 +45,27 @@ TEST_SUITE("raster") {
     CHECK(d.rgb[0] == 0);
   }
 
+  TEST_CASE("A difference in any one channel counts the same: red, green and blue alike") {
+    // CompareImages judges every golden image: a channel it skipped would let any bug in that
+    // channel through every golden test.
+    const prt::Image8 a = Gradient(5, 4);
+    for (int channel = 0; channel < 3; ++channel) {
+      prt::Image8 b = a;
+      const std::size_t at = 3 * 13 + channel;  // pixel 13
+      b.rgb[at] = static_cast<std::uint8_t>(b.rgb[at] ^ 0x10);  // a change of 16
+      const prt::DiffMetrics m = prt::CompareImages(a, b);
+      CAPTURE(channel);
+      CHECK(m.max_abs == 16);
+      CHECK(m.differing_pixels == 1);
+      CHECK(m.mean_abs == doctest::Approx(16.0 / 60.0));
+      CHECK(m.rmse == doctest::Approx(std::sqrt(256.0 / 60.0)));
+      const prt::Image8 d = prt::AmplifiedDifference(a, b);
+      CHECK(d.rgb[at] > 0);
+      for (std::size_t i = 0; i < d.rgb.size(); ++i)
+        if (i != at) CHECK(d.rgb[i] == 0);
+    }
+  }
+
   TEST_CASE("Images of different sizes are an error") {
     CHECK_THROWS_WITH_AS(prt::CompareImages(Gradient(5, 4), Gradient(4, 5)),
                          doctest::Contains("differ in size"), prt::Error);

@@ -164,6 +164,35 @@ TEST_SUITE("raster") {
     CHECK(empty > 1000);
   }
 
+  TEST_CASE("Colour is interpolated at the near-plane cut: a world-linear colour stays exact up to the near plane") {
+    // The floor of the clipping test, its colour linear in world position: r = (z + 20) / 25,
+    // g = (x + 3) / 6. Perspective-correct interpolation reproduces a world-linear attribute
+    // exactly, at every pixel, including those next to the near plane, whose triangles were cut
+    // there: the cut points must carry the colour of where they lie on the edge.
+    const int size = 80;
+    const float near_plane = 2.f;
+    const std::vector<glm::vec3> positions = {{-3, -1, 5}, {3, -1, 5}, {3, -1, -20}, {-3, -1, -20}};
+    std::vector<glm::vec3> colors;
+    for (const glm::vec3& p : positions) colors.emplace_back((p.z + 20.f) / 25.f, (p.x + 3.f) / 6.f, 0.25f);
+    const auto frame = prt::Rasterize(AxisCamera(near_plane), size, size, positions, {{0, 1, 2}, {0, 2, 3}}, colors);
+    int checked = 0, near_cut = 0;
+    float worst = 0.f;
+    for (int y = 0; y < size; ++y)
+      for (int x = 0; x < size; ++x) {
+        if (frame.coverage[y * size + x] != 1.f) continue;
+        const float ndc_x = 2.f * (F(x) + 0.5f) / F(size) - 1.f, ndc_y = 1.f - 2.f * (F(y) + 0.5f) / F(size);
+        const float d = -1.f / ndc_y, world_x = ndc_x * d;
+        const glm::vec3 expected((20.f - d) / 25.f, (world_x + 3.f) / 6.f, 0.25f);
+        const glm::vec3 got = frame.image.at(x, y);
+        worst = std::max({worst, std::fabs(got.x - expected.x), std::fabs(got.y - expected.y), std::fabs(got.z - expected.z)});
+        ++checked;
+        near_cut += d < 3.f;
+      }
+    CHECK(checked > 500);
+    CHECK(near_cut > 50);  // rows just beyond the near plane are among them
+    CHECK(worst < kPerspectiveTolerance);
+  }
+
   TEST_CASE("Supersampling resolves partial coverage over the background") {
     // Left of screen x = 10.5 white, background blue: with 2 x 2 samples, column 10 is half
     // covered; without supersampling its centre lies on the edge (left edge: covered).

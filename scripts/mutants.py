@@ -1,0 +1,118 @@
+#!/usr/bin/env python3
+"""Mutation check of the test suite: does every deliberate bug make some test fail?
+
+    python3 scripts/mutants.py [NAME_FILTER]     all mutants of tests/mutants.txt, or those whose
+                                                  name contains NAME_FILTER
+
+Each mutant of tests/mutants.txt replaces one exact piece of a source file. The script copies
+the project to build-mutants/src (never touching the checkout), builds it once, then for each
+mutant: applies it, rebuilds, runs prt_tests as a fresh clone would (PRT_SHARED_DATA=none, so
+the course data cannot be what catches it; tests that run with the data are a superset),
+stops at the first failure (its output is kept in build-mutants/log/), and restores the file. It prints CAUGHT or SURVIVED per mutant and
+exits 1 if any survived. A mutant whose text is no longer in its file is an error: the list
+must follow the code.
+
+tests/mutants.txt holds blocks of the form
+    === name
+    path/of/file.cpp
+    <<<
+    exact text to find (once)
+    >>>
+    replacement
+    ===
+"""
+import os
+import shutil
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+WORK = os.path.join(ROOT, "build-mutants")
+COPY = os.path.join(WORK, "src")
+BUILD = os.path.join(WORK, "build")
+
+
+def parse(path):
+    mutants, lines, i = [], open(path).read().split("\n"), 0
+    while i < len(lines):
+        if not lines[i].startswith("=== "):
+            i += 1
+            continue
+        name, file = lines[i][4:].strip(), lines[i + 1].strip()
+        assert lines[i + 2] == "<<<", f"{name}: expected <<<"
+        j = lines.index(">>>", i + 3)
+        k = lines.index("===", j + 1)
+        mutants.append((name, file, "\n".join(lines[i + 3:j]), "\n".join(lines[j + 1:k])))
+        i = k + 1
+    return mutants
+
+
+def run(cmd, **kw):
+    return subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, **kw)
+
+
+def main():
+    wanted = sys.argv[1] if len(sys.argv) > 1 else ""
+    mutants = [m for m in parse(os.path.join(ROOT, "tests", "mutants.txt")) if wanted in m[0]]
+    os.makedirs(WORK, exist_ok=True)
+    if os.path.exists(COPY):
+        shutil.rmtree(COPY)
+    ignore = shutil.ignore_patterns("build*", "out", ".git")
+    shutil.copytree(ROOT, COPY, ignore=ignore)
+    jobs = str(os.cpu_count() or 2)
+    shared = os.path.join(os.path.dirname(ROOT), "shared")
+    if os.path.isdir(shared) and not os.path.exists(os.path.join(WORK, "shared")):
+        os.symlink(shared, os.path.join(WORK, "shared"))  # PRT_SHARED_DATA_DIR resolves beside the copy
+    r = run(["cmake", "-S", COPY, "-B", BUILD, "-DCMAKE_BUILD_TYPE=Release"])
+    if r.returncode:
+        sys.exit(r.stdout)
+    build = ["cmake", "--build", BUILD, "--parallel", jobs, "--target", "prt", "prt_tests"]
+    r = run(build)
+    if r.returncode:
+        sys.exit(r.stdout[-3000:])
+    env = dict(os.environ, PRT_SHARED_DATA="none")
+    env.pop("PRT_REQUIRE_SHARED_DATA", None)
+    test = [os.path.join(BUILD, "prt_tests"), "--no-intro=true", "--abort-after=1", "--no-version=true"]
+    r = run(test, env=env)
+    if r.returncode:
+        sys.exit("the unmutated suite fails:\n" + r.stdout[-3000:])
+    survived = []
+    os.makedirs(os.path.join(WORK, "log"), exist_ok=True)
+    for number, (name, file, old, new) in enumerate(mutants):
+        path = os.path.join(COPY, file)
+        text = open(path).read()
+        if text.count(old) != 1:
+            sys.exit(f"{name}: its text is found {text.count(old)} times in {file}, not once")
+        start = time.time()
+        try:
+            open(path, "w").write(text.replace(old, new))
+            r = run(build)
+            if r.returncode:
+                print(f"NO BUILD  {name}\n{r.stdout[-2000:]}")
+                survived.append(name)
+                continue
+            r = run(test, env=env)
+            with open(os.path.join(WORK, "log", f"{number:02d}.txt"), "w") as log:
+                log.write(f"{name}\n{r.stdout}")
+            caught = r.returncode != 0
+            where, case = "", ""
+            for line in r.stdout.splitlines():
+                if "TEST CASE:" in line:
+                    case = line.split("TEST CASE:")[1].strip()
+                if ("ERROR:" in line or "FATAL" in line) and case:
+                    where = case
+                    break
+            print(f"{'CAUGHT  ' if caught else 'SURVIVED'}  {name}  ({time.time() - start:.0f} s){'  by: ' + where if where else ''}",
+                  flush=True)
+            if not caught:
+                survived.append(name)
+        finally:
+            open(path, "w").write(text)
+    run(build)
+    print(f"{len(mutants) - len(survived)} of {len(mutants)} mutants caught")
+    sys.exit(1 if survived else 0)
+
+
+if __name__ == "__main__":
+    main()
