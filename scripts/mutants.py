@@ -22,7 +22,6 @@ tests/mutants.txt holds blocks of the form
     ===
 """
 import os
-import shutil
 import subprocess
 import sys
 import time
@@ -48,6 +47,29 @@ def parse(path):
     return mutants
 
 
+def sync(source, target):
+    """Makes `target` a copy of `source` (without build folders, out/ and .git). Only files whose
+    bytes differ are written, and they get a fresh modification time, so the copy's build
+    recompiles exactly what changed, including what an interrupted run left mutated."""
+    skip = lambda name: name.startswith("build") or name in ("out", ".git")
+    wanted = set()
+    for folder, dirs, files in os.walk(source):
+        dirs[:] = [d for d in dirs if not skip(d)]
+        for name in files:
+            rel = os.path.relpath(os.path.join(folder, name), source)
+            wanted.add(rel)
+            data = open(os.path.join(source, rel), "rb").read()
+            dest = os.path.join(target, rel)
+            if not os.path.exists(dest) or open(dest, "rb").read() != data:
+                os.makedirs(os.path.dirname(dest), exist_ok=True)
+                open(dest, "wb").write(data)
+    for folder, dirs, files in os.walk(target):
+        dirs[:] = [d for d in dirs if not skip(d)]
+        for name in files:
+            if os.path.relpath(os.path.join(folder, name), target) not in wanted:
+                os.remove(os.path.join(folder, name))
+
+
 def run(cmd, **kw):
     return subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, **kw)
 
@@ -56,10 +78,7 @@ def main():
     wanted = sys.argv[1] if len(sys.argv) > 1 else ""
     mutants = [m for m in parse(os.path.join(ROOT, "tests", "mutants.txt")) if wanted in m[0]]
     os.makedirs(WORK, exist_ok=True)
-    if os.path.exists(COPY):
-        shutil.rmtree(COPY)
-    ignore = shutil.ignore_patterns("build*", "out", ".git")
-    shutil.copytree(ROOT, COPY, ignore=ignore)
+    sync(ROOT, COPY)
     jobs = str(os.cpu_count() or 2)
     shared = os.path.join(os.path.dirname(ROOT), "shared")
     if os.path.isdir(shared) and not os.path.exists(os.path.join(WORK, "shared")):
@@ -108,7 +127,7 @@ def main():
             if not caught:
                 survived.append(name)
         finally:
-            open(path, "w").write(text)
+            open(path, "w").write(text)  # a fresh modification time: the next build recompiles it
     run(build)
     print(f"{len(mutants) - len(survived)} of {len(mutants)} mutants caught")
     sys.exit(1 if survived else 0)

@@ -216,6 +216,20 @@ TEST_SUITE("render") {
     o.target = against;
     CHECK(centre(Draw(s, o, a)) != glm::ivec3(255));
     CHECK(centre(Draw(s, o, -a)) == glm::ivec3(255));
+    // In a frame twice as wide as high, a sun 10 degrees right of the view axis is half way
+    // from the centre to the right edge: tan 10 / (2 tan(fov/2)) = 0.5 for fov 20 (square pixels).
+    o.width = 66, o.height = 33, o.fov = 20.0;
+    const glm::dvec3 right = glm::normalize(glm::cross(turned, glm::dvec3(0, 1, 0)));
+    const glm::dvec3 up = glm::cross(right, turned);
+    o.target = glm::dvec3(AxisAngle(up, 10.0 * kPi / 180.0) * turned);  // the camera turned 10 degrees left
+    o.up = up;
+    const Image8 wide = Draw(s, o, a);
+    const auto pixel = [&](int x, int y) {
+      const std::size_t p = 3 * (std::size_t(y) * wide.width + x);
+      return glm::ivec3(wide.rgb[p], wide.rgb[p + 1], wide.rgb[p + 2]);
+    };
+    CHECK(pixel(49, 16) == glm::ivec3(255));
+    CHECK(pixel(16, 16) != glm::ivec3(255));
   }
 
   TEST_CASE("golden frame of the course scene: mary under Grace Cathedral" * test::NeedsSharedData()) {

@@ -93,6 +93,22 @@ TEST_SUITE("env") {
     CHECK(env.Radiance({0, 0, -1}).x == 5.0);
   }
 
+  TEST_CASE("the course's face table is the standard one with posy/negy and posz/negz swapped and posx mirrored") {
+    // CONVENTIONS.md's account of the course's precompute code, which its published light.txt
+    // files follow (checked against them by the tests that need the course data).
+    const auto& standard = FaceFrames(CubeLayout::kStandard);
+    const auto& course = FaceFrames(CubeLayout::kGames202);
+    const auto same = [](const FaceFrame& a, const FaceFrame& b) { return a.n == b.n && a.u == b.u && a.v == b.v; };
+    CHECK(course[0].n == standard[0].n);
+    CHECK(course[0].u == -standard[0].u);  // posx mirrored
+    CHECK(course[0].v == standard[0].v);
+    CHECK(same(course[1], standard[1]));  // negx as is
+    CHECK(same(course[2], standard[3]));  // posy given negy's frame
+    CHECK(same(course[3], standard[2]));
+    CHECK(same(course[4], standard[5]));  // posz given negz's frame
+    CHECK(same(course[5], standard[4]));
+  }
+
   TEST_CASE("Radiance() looks up the texel a direction falls in") {
     // Each texel holds its own index, so a lookup at its centre must return that index.
     const int size = 8;

@@ -129,6 +129,9 @@ TEST_SUITE("env") {
     const ShRgb L = ProjectLight(*env, 2);
     // Grey 128 in sRGB is 0.2158605 linear; six equal faces are a furnace.
     CHECK(L[0].x == doctest::Approx(2 * std::sqrt(3.14159265358979323846) * 0.2158605).epsilon(1e-6));
+    // The course's decoding is pow(128/255, 2.2) = 0.2195 instead (CONVENTIONS.md).
+    const ShRgb course = ProjectLight(*LoadEnvironment(dir, CubeLayout::kGames202), 2);
+    CHECK(course[0].x == doctest::Approx(2 * std::sqrt(3.14159265358979323846) * std::pow(128.0 / 255.0, 2.2)).epsilon(1e-6));
   }
 
   TEST_CASE("unknown names and bad sky parameters are errors, not crashes") {
