@@ -12,6 +12,8 @@
 #include <unistd.h>
 
 #include "core/atomic_file.h"
+#include "geometry/procedural.h"
+#include "io/obj_writer.h"
 
 namespace prt::test {
 namespace fs = std::filesystem;
@@ -50,6 +52,28 @@ std::string PrtBinary() {
 
 std::string QuickScene() {
   return "--mesh " + Q(Fixture("obj/tetra_no_normals.obj")) + " --env furnace --transport unshadowed";
+}
+
+namespace {
+Mesh Floor() { return MakePlane(2.0f, 8); }
+Mesh Wall() {
+  return MakeBox(glm::vec3(-1.25f, 0.0f, -1.0f), glm::vec3(-1.05f, 1.5f, 1.0f), BoxFacing::kOutward, 4);
+}
+}  // namespace
+
+std::string WriteFloorAndWall(const std::string& dir, const glm::vec3& floor_kd, const glm::vec3& wall_kd) {
+  const std::vector<ObjPart> parts = {{"floor", Floor(), floor_kd}, {"wall", Wall(), wall_kd}};
+  WriteFileAtomic(dir + "/scene.obj", FormatObj(parts, "scene.mtl"));
+  WriteFileAtomic(dir + "/scene.mtl", FormatMtl(parts));
+  return dir + "/scene.obj";
+}
+
+std::size_t FloorTriangles() { return Floor().triangle_count(); }
+std::size_t WallTriangles() { return Wall().triangle_count(); }
+
+glm::ivec3 PixelAt(const Image8& image, int x, int y) {
+  const std::size_t p = 3 * (static_cast<std::size_t>(y) * image.width + x);
+  return {image.rgb[p], image.rgb[p + 1], image.rgb[p + 2]};
 }
 
 int StartLongRender(const std::string& out, const std::string& size) {

@@ -8,6 +8,10 @@
 #include <optional>
 #include <string>
 
+#include <glm/vec3.hpp>
+
+#include "core/image.h"
+
 namespace prt::test {
 
 /// The project's source folder (for fixtures in tests/data).
@@ -45,6 +49,20 @@ inline std::string Q(const std::string& text) { return ShellQuote(text); }
 /// Scene options of a render that takes milliseconds: a tetrahedron (no normals) under the
 /// furnace, closed-form transport.
 std::string QuickScene();
+
+/// Writes dir/scene.obj and dir/scene.mtl: a floor (side 2 at y = 0, 8 x 8 quads, first in the
+/// file) of colour `floor_kd`, and beside it a wall (a box x in [-1.25, -1.05], 1.5 high) of
+/// colour `wall_kd`. The floor sees only the wall, so its bounce light is the wall's colour. The
+/// wall stands apart from the floor's edge: vertices shared by both would weld and average their
+/// albedo. Returns the OBJ's path.
+std::string WriteFloorAndWall(const std::string& dir, const glm::vec3& floor_kd, const glm::vec3& wall_kd);
+
+/// Triangles of WriteFloorAndWall's floor and of its wall, in file order.
+std::size_t FloorTriangles();
+std::size_t WallTriangles();
+
+/// Pixel (x, y) of an 8-bit image as integers.
+glm::ivec3 PixelAt(const Image8& image, int x, int y);
 
 /// Starts, in a child process, a render of 9999 frames of `size` (QuickScene, one thread,
 /// stderr silenced) into `out`: a run that lasts long enough to be watched and killed.

@@ -6,20 +6,16 @@
 
 #include <array>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
 #include <string>
 
 #include <glm/vec3.hpp>
 
-#include "core/atomic_file.h"
+#include "app/render_frames.h"
 #include "core/image.h"
-#include "geometry/procedural.h"
-#include "io/hdr_writer.h"
-#include "io/obj_writer.h"
 #include "io/png_io.h"
 #include "raster/image_diff.h"
 #include "raster/tonemap.h"
+#include "tests/env/env_test_util.h"
 #include "tests/test_support.h"
 
 namespace prt {
@@ -35,11 +31,8 @@ std::size_t CountGrey(const Image8& image, std::uint8_t value) {
   return n;
 }
 
-std::string Frame(const std::string& dir, int i) {
-  char name[32];
-  std::snprintf(name, sizeof name, "/frame_%04d.png", i);
-  return dir + name;
-}
+/// Frame i of a run of `count` frames in `dir`, named as render names it.
+std::string Frame(const std::string& dir, int i, int count) { return dir + "/" + FrameName(i, count); }
 
 /// Renders with `options` into a fresh folder named `name` and returns the folder.
 std::string Render(const std::string& name, const std::string& options) {
@@ -54,25 +47,14 @@ std::string Render(const std::string& name, const std::string& options) {
 /// (r, g, b) -> (g, b, r).
 glm::vec3 Permute(const glm::vec3& v) { return {v.y, v.z, v.x}; }
 
-/// A white floor beside a wall of three colours, under a cube map whose faces differ in colour
-/// and level; every input colour passes through `colour`.
+/// A white floor beside a wall of three colours (WriteFloorAndWall), under a cube map whose
+/// faces differ in colour and level; every input colour passes through `colour`.
 std::string WriteColourScene(const std::string& dir, glm::vec3 (*colour)(const glm::vec3&)) {
-  ObjPart floor{"floor", MakePlane(2.0f, 8), colour(glm::vec3(0.9f))};
-  ObjPart wall{"wall", MakeBox(glm::vec3(-1.25f, 0.0f, -1.0f), glm::vec3(-1.05f, 1.5f, 1.0f), BoxFacing::kOutward, 4),
-               colour(glm::vec3(0.9f, 0.5f, 0.1f))};
-  WriteFileAtomic(dir + "/scene.obj", FormatObj({floor, wall}, "scene.mtl"));
-  WriteFileAtomic(dir + "/scene.mtl", FormatMtl({floor, wall}));
-  std::filesystem::create_directories(dir + "/cube");
-  const char* names[6] = {"posx", "negx", "posy", "negy", "posz", "negz"};
+  test::WriteFloorAndWall(dir, colour(glm::vec3(0.9f)), colour(glm::vec3(0.9f, 0.5f, 0.1f)));
   const std::array<glm::vec3, 6> faces = {glm::vec3(1.0f, 0.5f, 0.25f), glm::vec3(0.25f, 0.5f, 1.0f),
                                           glm::vec3(2.0f, 1.0f, 0.5f),  glm::vec3(0.125f, 0.25f, 0.0625f),
                                           glm::vec3(0.5f, 1.0f, 0.5f),  glm::vec3(1.0f, 0.25f, 0.5f)};
-  for (int k = 0; k < 6; ++k) {
-    ImageF face(8, 8);
-    for (int row = 0; row < 8; ++row)
-      for (int col = 0; col < 8; ++col) face.at(col, row) = colour(faces[k] * (1.0f + 0.125f * float(row)));
-    WriteFileAtomic(dir + "/cube/" + names[k] + ".hdr", EncodeHdr(face));
-  }
+  test::WriteHdrCube(dir + "/cube", 8, [&](int k, int row, int) { return colour(faces[k] * (1.0f + 0.125f * float(row))); });
   return dir;
 }
 
@@ -84,7 +66,7 @@ TEST_SUITE("app") {
     const std::string scene = test::QuickScene() +
                               " --albedo 0.25,0.25,0.25 --tonemap srgb --ssaa 1 --background black --frames 1 --size 48x48";
     for (int ev : {-1, 0, 1}) {
-      const Image8 image = ReadPng(Frame(Render("exposure", scene + " --exposure " + std::to_string(ev)), 0));
+      const Image8 image = ReadPng(Frame(Render("exposure", scene + " --exposure " + std::to_string(ev)), 0, 1));
       const std::uint8_t expected = EncodeSrgb8(0.25f * std::exp2(float(ev)));
       const std::uint8_t opposite = EncodeSrgb8(0.25f * std::exp2(float(-ev)));
       CAPTURE(ev);
@@ -101,33 +83,28 @@ TEST_SUITE("app") {
     const std::string eight = Render("frames8", scene + " --frames 8");
     for (int k = 0; k < 4; ++k) {
       CAPTURE(k);
-      const DiffMetrics same = CompareImages(ReadPng(Frame(four, k)), ReadPng(Frame(eight, 2 * k)));
+      const DiffMetrics same = CompareImages(ReadPng(Frame(four, k, 4)), ReadPng(Frame(eight, 2 * k, 8)));
       CHECK(same.differing_pixels == 0);
     }
     // Frame N-1 is a quarter turn short of the full turn (frame N would be frame 0 again).
-    CHECK(CompareImages(ReadPng(Frame(four, 3)), ReadPng(Frame(four, 0))).differing_pixels > 100);
+    CHECK(CompareImages(ReadPng(Frame(four, 3, 4)), ReadPng(Frame(four, 0, 4))).differing_pixels > 100);
     const std::string turned = Render("frames_quarter", scene + " --frames 4 --turns -1");
     // -pi/2 and 3 pi/2 differ in the last bits of their sines: a pixel may round the other way.
-    const DiffMetrics back = CompareImages(ReadPng(Frame(four, 3)), ReadPng(Frame(turned, 1)));
+    const DiffMetrics back = CompareImages(ReadPng(Frame(four, 3, 4)), ReadPng(Frame(turned, 1, 4)));
     CHECK(back.max_abs <= 1);
     CHECK(back.differing_pixels <= 4);
   }
 
   TEST_CASE("frames: a white floor beside a red wall is tinted red by the bounce, and grey without it") {
-    // Seen from above, the wall out of view: only floor pixels. (The wall stands apart from the
-    // floor's edge: vertices shared by both would weld and average their albedo.) The floor's direct light is the
+    // Seen from above, the wall out of view: only floor pixels. The floor's direct light is the
     // same in every channel, its bounce light is the wall's albedo (0.9, 0.1, 0.1).
     const std::string dir = test::ScratchDir("bleeding");
-    ObjPart floor{"floor", MakePlane(2.0f, 8), glm::vec3(0.9f)};
-    ObjPart wall{"wall", MakeBox(glm::vec3(-1.25f, 0.0f, -1.0f), glm::vec3(-1.05f, 1.5f, 1.0f), BoxFacing::kOutward, 4),
-                 glm::vec3(0.9f, 0.1f, 0.1f)};
-    WriteFileAtomic(dir + "/scene.obj", FormatObj({floor, wall}, "scene.mtl"));
-    WriteFileAtomic(dir + "/scene.mtl", FormatMtl({floor, wall}));
+    test::WriteFloorAndWall(dir, glm::vec3(0.9f), glm::vec3(0.9f, 0.1f, 0.1f));
     const std::string scene = "--mesh " + Q(dir + "/scene.obj") + " --env furnace --samples 256 --tonemap srgb " +
                               "--exposure 0 --ssaa 1 --background black --size 48x48 --frames 1 " +
                               "--eye -0.5,3,0.01 --target -0.5,0,0 --fov 20";
     for (const std::string mode : {"interreflection", "shadowed"}) {
-      const Image8 image = ReadPng(Frame(Render("bleeding_out", scene + " --transport " + mode), 0));
+      const Image8 image = ReadPng(Frame(Render("bleeding_out", scene + " --transport " + mode), 0, 1));
       std::size_t covered = 0, green_is_blue = 0;
       double red_excess = 0.0;
       for (std::size_t p = 0; p < image.rgb.size(); p += 3) {
@@ -160,7 +137,7 @@ TEST_SUITE("app") {
     const std::string out_a = Render("channels_out_a", "--mesh " + Q(a + "/scene.obj") + " --env " + Q(a + "/cube") + options);
     const std::string out_b = Render("channels_out_b", "--mesh " + Q(b + "/scene.obj") + " --env " + Q(b + "/cube") + options);
     for (int i = 0; i < 2; ++i) {
-      const Image8 image_a = ReadPng(Frame(out_a, i)), image_b = ReadPng(Frame(out_b, i));
+      const Image8 image_a = ReadPng(Frame(out_a, i, 2)), image_b = ReadPng(Frame(out_b, i, 2));
       REQUIRE(image_a.rgb.size() == image_b.rgb.size());
       std::size_t differing = 0, coloured = 0;
       for (std::size_t p = 0; p < image_a.rgb.size(); p += 3) {

@@ -209,10 +209,7 @@ TEST_SUITE("render") {
     o.fov = 10.0;
     o.exposure = -6.0;
     o.eye = glm::dvec3(0.0);
-    const auto centre = [](const Image8& img) {
-      const std::size_t p = 3 * (16 * 33 + 16);
-      return glm::ivec3(img.rgb[p], img.rgb[p + 1], img.rgb[p + 2]);
-    };
+    const auto centre = [](const Image8& img) { return test::PixelAt(img, 16, 16); };
     o.target = turned;
     CHECK(centre(Draw(s, o, a)) == glm::ivec3(255));
     o.target = against;
@@ -226,12 +223,8 @@ TEST_SUITE("render") {
     o.target = glm::dvec3(AxisAngle(up, 10.0 * kPi / 180.0) * turned);  // the camera turned 10 degrees left
     o.up = up;
     const Image8 wide = Draw(s, o, a);
-    const auto pixel = [&](int x, int y) {
-      const std::size_t p = 3 * (std::size_t(y) * wide.width + x);
-      return glm::ivec3(wide.rgb[p], wide.rgb[p + 1], wide.rgb[p + 2]);
-    };
-    CHECK(pixel(49, 16) == glm::ivec3(255));
-    CHECK(pixel(16, 16) != glm::ivec3(255));
+    CHECK(test::PixelAt(wide, 49, 16) == glm::ivec3(255));
+    CHECK(test::PixelAt(wide, 16, 16) != glm::ivec3(255));
   }
 
   TEST_CASE("golden frame of the course scene: mary under Grace Cathedral" * test::NeedsSharedData()) {

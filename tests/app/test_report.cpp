@@ -107,10 +107,8 @@ TEST_SUITE("app") {
       std::vector<std::pair<int, int>> at;
       const glm::ivec3 c = glm::ivec3(glm::round(colour * 255.0f));
       for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x) {
-          const std::size_t p = 3 * (std::size_t(y) * image.width + x);
-          if (glm::ivec3(image.rgb[p], image.rgb[p + 1], image.rgb[p + 2]) == c) at.emplace_back(x, y);
-        }
+        for (int x = 0; x < image.width; ++x)
+          if (prt::test::PixelAt(image, x, y) == c) at.emplace_back(x, y);
       return at;
     };
     const auto line_a = pixels_of(im, a.color), line_b = pixels_of(im, b.color);

@@ -2,11 +2,15 @@
 // Helpers for the environment tests: environments sampled from a function, in memory.
 
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <memory>
+#include <string>
 
+#include "core/atomic_file.h"
 #include "env/cubemap.h"
 #include "env/equirect.h"
+#include "io/hdr_writer.h"
 
 namespace prt::test {
 
@@ -19,6 +23,21 @@ inline std::unique_ptr<CubemapEnvironment> CubemapFrom(const RadianceFn& f, int 
 
 inline std::unique_ptr<EquirectEnvironment> EquirectFrom(const RadianceFn& f, int width, int height) {
   return EquirectFromFunction(f, width, height);
+}
+
+/// Writes a cube map folder `dir` of six size^2 .hdr faces (kFaceNames order) whose texel
+/// (col, row) of face k holds texel(k, row, col); returns `dir`. RGBE stores small integers and
+/// powers of two exactly.
+inline std::string WriteHdrCube(const std::string& dir, int size,
+                                const std::function<glm::vec3(int face, int row, int col)>& texel) {
+  std::filesystem::create_directories(dir);
+  for (int k = 0; k < 6; ++k) {
+    ImageF face(size, size);
+    for (int row = 0; row < size; ++row)
+      for (int col = 0; col < size; ++col) face.at(col, row) = texel(k, row, col);
+    WriteFileAtomic(dir + "/" + kFaceNames[k] + ".hdr", EncodeHdr(face));
+  }
+  return dir;
 }
 
 /// Where a direction lands on a cube map by the OpenGL specification (4.6 core, table 8.19,

@@ -15,6 +15,17 @@ namespace {
 constexpr double kFourPi = 4.0 * 3.14159265358979323846;
 // The bound: exact texel solid angles sum to 4 pi up to rounding.
 constexpr double kSolidAngleSumTolerance = 1e-12;
+
+/// A standard cube of size^2 faces whose texels hold their own (face, row, column).
+CubemapEnvironment IndexCube(int size) {
+  std::array<ImageF, 6> faces;
+  for (int k = 0; k < 6; ++k) {
+    faces[k] = ImageF(size, size);
+    for (int row = 0; row < size; ++row)
+      for (int col = 0; col < size; ++col) faces[k].at(col, row) = glm::vec3(float(k), float(row), float(col));
+  }
+  return CubemapEnvironment(std::move(faces), CubeLayout::kStandard, "index cube");
+}
 }  // namespace
 
 TEST_SUITE("env") {
@@ -52,13 +63,7 @@ TEST_SUITE("env") {
     // Faces of 6 texels whose values name (face, row, column): the lookup at the spec's direction
     // of a texel centre must return that texel. A swapped, mirrored or turned face fails.
     const int size = 6;
-    std::array<ImageF, 6> faces;
-    for (int k = 0; k < 6; ++k) {
-      faces[k] = ImageF(size, size);
-      for (int row = 0; row < size; ++row)
-        for (int col = 0; col < size; ++col) faces[k].at(col, row) = glm::vec3(float(k), float(row), float(col));
-    }
-    const CubemapEnvironment env(faces, CubeLayout::kStandard, "index cube");
+    const CubemapEnvironment env = IndexCube(size);
     for (int k = 0; k < 6; ++k)
       for (int row = 0; row < size; ++row)
         for (int col = 0; col < size; ++col) {
@@ -112,13 +117,7 @@ TEST_SUITE("env") {
   TEST_CASE("Radiance() looks up the texel a direction falls in") {
     // Each texel holds its own index, so a lookup at its centre must return that index.
     const int size = 8;
-    std::array<ImageF, 6> faces;
-    for (int k = 0; k < 6; ++k) {
-      faces[k] = ImageF(size, size);
-      for (int row = 0; row < size; ++row)
-        for (int col = 0; col < size; ++col) faces[k].at(col, row) = glm::vec3(float(k), float(row), float(col));
-    }
-    const CubemapEnvironment env(faces, CubeLayout::kStandard, "index cube");
+    const CubemapEnvironment env = IndexCube(size);
     std::vector<Texel> texels;
     for (std::size_t r = 0; r < env.RowCount(); ++r) {
       env.Row(r, texels);

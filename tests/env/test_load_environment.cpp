@@ -19,7 +19,6 @@
 #include "sh/basis.h"
 #include "sh/zonal.h"
 #include "core/atomic_file.h"
-#include "io/hdr_writer.h"
 #include "tests/env/env_test_util.h"
 #include "tests/test_support.h"
 
@@ -104,13 +103,9 @@ TEST_SUITE("env") {
     // Six .hdr faces whose texels hold (face + 1, row + 1, column + 1): small integers, which
     // RGBE stores exactly. Each texel must be found at the spec's direction of its centre.
     const int size = 4;
-    const std::string dir = test::ScratchDir("cube_named");
-    for (int k = 0; k < 6; ++k) {
-      ImageF face(size, size);
-      for (int row = 0; row < size; ++row)
-        for (int col = 0; col < size; ++col) face.at(col, row) = glm::vec3(k + 1, row + 1, col + 1);
-      WriteFileAtomic(dir + "/" + kFaceNames[k] + ".hdr", EncodeHdr(face));
-    }
+    const std::string dir = test::WriteHdrCube(test::ScratchDir("cube_named"), size, [](int k, int row, int col) {
+      return glm::vec3(k + 1, row + 1, col + 1);
+    });
     const auto env = LoadEnvironment(dir, CubeLayout::kStandard);
     for (int k = 0; k < 6; ++k)
       for (int row = 0; row < size; ++row)
