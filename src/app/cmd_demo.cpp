@@ -8,8 +8,7 @@ SceneOptions DemoScene() {
   SceneOptions s;
   s.transport = "interreflection";
   s.bounces = 1;
-  s.lmax = 4;
-  s.samples = 1024;
+  s.lmax = 4;  // samples: the sample rule's default for lmax 4, 1024
   return s;
 }
 

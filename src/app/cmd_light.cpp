@@ -1,24 +1,85 @@
+#include <cmath>
 #include <cstdio>
+
+#include <glm/geometric.hpp>
 
 #include "app/commands.h"
 #include "app/pipeline.h"
+#include "core/log.h"
+#include "core/text.h"
 #include "io/light_txt.h"
+#include "sh/rotation.h"
+#include "sh/dering.h"
 
 namespace prt {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Turn {
+  glm::dvec3 axis;
+  double degrees;
+};
+
+/// "X,Y,Z:DEGREES" -> axis and angle; any other text, a zero axis or a number that is not
+/// finite is a usage error.
+Turn ReadTurn(Args& args, const std::string& text) {
+  const std::string expected = " (expected X,Y,Z:DEGREES, an axis and a right-handed angle, such as 0,0,1:90)";
+  const auto colon = text.find(':');
+  if (colon == std::string::npos) args.Fail("--rotate: '" + text + "' has no ':DEGREES'" + expected);
+  std::vector<double> v;
+  std::size_t start = 0;
+  const std::string axis_text = text.substr(0, colon);
+  for (;;) {
+    const auto comma = axis_text.find(',', start);
+    const auto number = ParseNumber(axis_text.substr(start, comma == std::string::npos ? comma : comma - start));
+    if (!number) args.Fail("--rotate: '" + text + "': the axis is not three numbers" + expected);
+    v.push_back(*number);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (v.size() != 3) args.Fail("--rotate: '" + text + "': the axis is not three numbers" + expected);
+  const auto degrees = ParseNumber(text.substr(colon + 1));
+  if (!degrees) args.Fail("--rotate: '" + text + "': the angle is not a number" + expected);
+  const glm::dvec3 axis(v[0], v[1], v[2]);
+  if (!(glm::length(axis) > 1e-300) || !std::isfinite(glm::length(axis)))
+    args.Fail("--rotate: '" + text + "': the axis is zero" + expected);
+  return {axis, *degrees};
+}
+
+}  // namespace
 
 CommandSpec LightSpec() {
-  return {"prt light [--env ENV] [--lmax L] [options]",
+  return {"prt light [--env ENV] [--lmax L] [--rotate X,Y,Z:DEGREES] [options]",
           "Prints the environment's SH coefficients to stdout: (L+1)^2 lines `R G B` (the course's light.txt "
           "format, 9 significant digits), nothing else. The run summary goes to stderr.",
-          {SceneOptionGroup(SceneOptions{}, LightOptionNames(), "light options"), {"other options", {QuietOption()}}}};
+          {SceneOptionGroup(SceneOptions{}, LightOptionNames(), "light options"),
+           {"other options",
+            {{"--rotate", "X,Y,Z:DEGREES",
+              "print the light turned by DEGREES, right-handed, about the axis X,Y,Z: light that came from "
+              "direction d comes from R d afterwards (exact to lmax " +
+                  std::to_string(kMaxBasisLmax) + ")",
+              "not turned"},
+             QuietOption()}}}};
 }
 
 int RunLight(const std::vector<std::string>& tokens) {
   Args args("light", tokens, LightSpec());
   const SceneOptions options = ReadSceneOptions(args);
+  std::optional<Turn> turn;
+  if (const auto text = args.String("--rotate")) turn = ReadTurn(args, *text);
+  if (options.window == "auto" && options.lmax > kMaxAutoWindowLmax)
+    args.Fail(Formatted("--window auto: works to lmax %d, not %d (use hann or lanczos, or a lower --lmax)",
+                        kMaxAutoWindowLmax, options.lmax));
   args.Finish();
   const auto env = LoadSceneEnvironment(options);
-  const ShRgb light = ComputeLight(*env, options);
+  ShRgb light = ComputeLight(*env, options);
+  if (turn) {
+    const glm::dvec3 axis = glm::normalize(turn->axis);
+    light = ShRotation(AxisAngle(axis, turn->degrees * kPi / 180.0), options.lmax).Apply(light);
+    Summary(Formatted("rotate: %g degrees about (%g, %g, %g), band matrices from Wigner's d (sh/rotation.h)",
+                      turn->degrees, axis.x, axis.y, axis.z));
+  }
   std::fputs(FormatLightTxt(light).c_str(), stdout);
   return std::fflush(stdout) == 0 ? 0 : 1;
 }

@@ -1,5 +1,6 @@
 // prt report: error against run time (report_sweep.h, report_write.h), or with --stability the
 // stiff and extreme cases (stability.h).
+#include <algorithm>
 #include <cstdio>
 
 #include "app/commands.h"
@@ -26,6 +27,8 @@ CommandSpec ReportSpec() {
                      {{"--out", "DIR", "output folder, created if missing; one run at a time", "required"},
                       {"--quick", "", "shadowed only, 16..256 directions, lmax 1..4, smaller references (well under a minute)", ""},
                       {"--max-samples", "N", "largest directions per vertex of the sweep, 16..1048576", "16384; 256 with --quick"},
+                      {"--max-lmax", "L", "highest lmax of the sweep, 1..32 (the sample rule's evidence needs the high bands)",
+                       "8; 4 with --quick"},
                       {"--stability", "",
                        "run the stiff and extreme cases instead: DIR/stability.csv and DIR/report.md, pass/fail on "
                        "stderr; exit 1 if any fails",
@@ -36,7 +39,7 @@ CommandSpec ReportSpec() {
   scene.options[0].default_text = "a small torus knot on a 12 x 12 plane, about 2,700 vertices";
   return {"prt report [scene options] --out DIR [--quick] [--stability]",
           "Error against run time: sweeps sampler (uniform, stratified, fibonacci) x directions per vertex (16 .. "
-          "16384, doubling) x lmax (1..8) x transport mode (unshadowed closed form, shadowed, interreflection), "
+          "16384, doubling) x lmax (1..8, or 1..--max-lmax) x transport mode (unshadowed closed form, shadowed, interreflection), "
           "scoring each against the converged transport (sampling error) and against prt reference's ground truth "
           "(total error) and its picture (PSNR); then light projection against cubemap resolution. Writes "
           "DIR/report.csv, DIR/report.md and DIR/error_vs_time.png. Without --mesh the scene is a small knot on a "
@@ -51,6 +54,7 @@ int RunReport(const std::vector<std::string>& tokens) {
   const bool quick = args.Flag("--quick");
   const bool stability = args.Flag("--stability");
   const int max_samples = args.Int("--max-samples", quick ? 256 : 16384, 16, 1 << 20);
+  const int max_lmax = args.Int("--max-lmax", quick ? 4 : 8, 1, 32);
   args.Finish();
   if (!out) args.Fail("--out DIR is required");
   OutputFolder folder(*out);
@@ -88,11 +92,13 @@ int RunReport(const std::vector<std::string>& tokens) {
   config.max_samples = max_samples;
   if (quick) {
     config.modes = {TransportMode::kShadowed};
-    config.max_lmax = 4;
     config.converged_samples = 4096;
     config.reference_samples = 2048;
     config.face_sizes = {8, 16, 32, 64};
   }
+  config.max_lmax = max_lmax;
+  // The converged transport must stay well beyond the sweep's largest run to stand for the limit.
+  config.converged_samples = std::max(config.converged_samples, 4 * max_samples);
   ReportData data = RunReportSweep(mesh, *env, scene.env, config, ReportRenderOptions(config.image_width, config.image_height));
   data.scene = scene_name;
   WriteReport(folder, data);

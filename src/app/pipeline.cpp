@@ -14,6 +14,7 @@
 #include "io/transport_cache.h"
 #include "precompute/light.h"
 #include "raster/exposure.h"
+#include "sh/dering.h"
 #include "sh/window.h"
 
 namespace prt {
@@ -56,12 +57,10 @@ ShRgb ComputeLight(const Environment& env, const SceneOptions& options) {
                      std::to_string(CoeffCount(options.lmax)) + " coefficients)" +
                      Formatted(" [%.3f s]", SecondsSince(t0));
   if (options.window == "auto") {
-    const AutoWindow choice = ChooseWindow(light);
-    ApplyWindow(choice.window, light);
-    line += std::string("; window auto -> ") + WindowName(choice.window) +
-            Formatted(" (lowest reconstructed radiance %.3g without, %.3g with)", choice.min_before,
-                   choice.min_after);
-    if (choice.window == Window::kNone) line += ", no windowing needed: already non-negative";
+    const auto t1 = std::chrono::steady_clock::now();
+    const AutoWindow choice = ChooseAutoWindow(light);
+    ApplyWeights(choice.weights, light);
+    line += "; window auto: " + choice.Describe() + Formatted(" [%.3f s]", SecondsSince(t1));
   } else if (options.window != "none") {
     ApplyWindow(options.window == "hann" ? Window::kHann : Window::kLanczos, light);
     line += "; window " + options.window;
@@ -152,7 +151,7 @@ Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, c
     line += "; closed form at every vertex: no BVH, no rays";
   } else {
     line += Formatted("; BVH %.3f s; ", r.bvh_seconds) + std::to_string(r.directions_per_vertex) + " " +
-            SamplerName(topts.sampler) + " directions per vertex, " + std::to_string(r.rays) +
+            SamplerName(topts.sampler) + " directions per vertex" + SamplesOrigin(options) + ", " + std::to_string(r.rays) +
             " rays (none below the horizon); " + std::to_string(r.closed_form_vertices) + " of " +
             std::to_string(mesh.vertex_count()) + " vertices unoccluded, given the exact closed form";
   }

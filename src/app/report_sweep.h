@@ -14,7 +14,7 @@
 ///       included;
 ///   and the PSNR of its picture against the reference picture (app/report_image.h).
 /// Unshadowed transport is closed form: one row per lmax, truncation error only.
-/// Light projection is measured separately: the sky sampled into cubemaps of growing face size,
+/// Light projection is measured separately: the sky averaged into cubemaps of growing face size,
 /// projected (timed) and compared coefficient by coefficient with its exact projection.
 
 #include <string>
@@ -49,7 +49,9 @@ struct SweepRow {
   int samples = 0;            ///< requested directions per vertex
   int directions = 0;         ///< actually used (stratified: floor(sqrt)^2)
   int lmax = 0;
-  double seconds = 0;         ///< measured transport time of the run the row comes from
+  /// Transport time of the run the row comes from: the fastest of repeated runs that together
+  /// last at least kMinTimedSeconds (report_sweep.cpp), so the clock's resolution plays no part.
+  double seconds = 0;
   VertexError sampling, total;
   double psnr = 0;            ///< dB against the reference picture
 };
@@ -63,10 +65,20 @@ struct ModeBaseline {
   /// Relative difference between converged and a half-sample-count run (an upper bound on the
   /// converged result's own noise), at max_lmax.
   double converged_self_error = 0;
+  /// [l] for l = 0..max_lmax: the converged transport's total error at lmax l (relative RMS),
+  /// i.e. the SH truncation error (plus the reference's own, much smaller, noise). Empty for
+  /// unshadowed, whose rows hold it directly.
+  std::vector<double> truncation;
 };
 
+/// One cubemap resolution of the light-projection study. Each texel holds the environment's
+/// average over its solid angle (what a real, filtered cubemap stores), from sub-texel samples
+/// weighted by their exact solid angles; a texel-centre sample instead lets the sky's small sun
+/// fall between centres at some sizes and onto one at others, which made the error jump up and
+/// down with the face size.
 struct LightRow {
   int face_size = 0;
+  int supersample = 1;         ///< sub-texel samples per side of each texel
   double seconds = 0;          ///< ProjectLight on the cubemap
   double coeff_error = 0;      ///< relative L2 error of all coefficients (bands 0..max_lmax)
 };
@@ -78,6 +90,7 @@ struct ReportData {
   std::vector<ModeBaseline> baselines;
   std::vector<LightRow> light;
   int max_lmax = 0;
+  double bvh_seconds = 0;  ///< BVH build inside each sampled run (the fastest seen): a fixed cost
 };
 
 /// Runs the whole sweep (minutes for the defaults; progress on the run summary).

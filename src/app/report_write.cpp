@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 
+#include "app/report_sample_rule.h"
 #include "core/atomic_file.h"
 #include "core/log.h"
 #include "io/png_io.h"
@@ -49,7 +50,10 @@ std::string Markdown(const ReportData& d) {
        "are measured transport time of the run at lmax " +
        std::to_string(d.max_lmax) +
        "; lower lmax rows reuse its first (l+1)^2 coefficients, which a run at that lmax computes identically "
-       "from the same directions.\n\n";
+       "from the same directions. Each time is the fastest of repeated runs that together last at least 0.05 s, "
+       "so the clock's resolution plays no part; what remains flat at the smallest counts is fixed cost (the BVH "
+       "build, " + F("%.3g s", d.bvh_seconds) + " of every sampled run, and starting the threads), so there the "
+       "first points of a curve in error_vs_time.png crowd together at nearly one time.\n\n";
   s += "## Baselines\n\n| mode | reference directions | reference seconds | reference own RMS error | converged "
        "directions | converged seconds | converged vs half-size run |\n|---|---|---|---|---|---|---|\n";
   for (const auto& b : d.baselines)
@@ -101,12 +105,17 @@ std::string Markdown(const ReportData& d) {
          " | " + F("%.3g", r.total.max) + " | " + F("%.1f", r.psnr) + " |\n";
   }
 
-  s += "\n## Light projection against cubemap resolution\n\nThe environment sampled at texel centres into cubemaps, "
-       "projected to lmax " + std::to_string(d.max_lmax) +
-       " and compared with its exact projection (relative L2 over all coefficients).\n\n| face size | seconds | "
-       "coefficient error |\n|---|---|---|\n";
+  s += SampleRuleSection(d);
+  s += "\n## Light projection against cubemap resolution\n\nThe environment averaged into cubemaps, each texel "
+       "holding the mean over its solid angle of sub-texel samples (as a filtered cubemap stores it), projected to "
+       "lmax " + std::to_string(d.max_lmax) +
+       " and compared with its exact projection (relative L2 over all coefficients). Texel-centre samples would "
+       "instead catch the sky's sun disk (2 degrees in radius by default) on a texel centre at some face sizes and "
+       "miss it at others, so the error would jump up and down with the size instead of falling.\n\n| face size | "
+       "sub-texels | seconds | coefficient error |\n|---|---|---|---|\n";
   for (const auto& l : d.light)
-    s += "| " + std::to_string(l.face_size) + " | " + F("%.4f", l.seconds) + " | " + F("%.3g", l.coeff_error) + " |\n";
+    s += "| " + std::to_string(l.face_size) + " | " + std::to_string(l.supersample) + "^2 | " + F("%.4f", l.seconds) +
+         " | " + F("%.3g", l.coeff_error) + " |\n";
   s += "\n## All measurements\n\nSee report.csv (" + std::to_string(d.rows.size()) + " rows) and error_vs_time.png.\n";
   return s;
 }

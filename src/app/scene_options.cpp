@@ -12,6 +12,7 @@
 #include "core/parallel.h"
 #include "env/cubemap.h"
 #include "env/load_environment.h"
+#include "precompute/sample_rule.h"
 #include "sh/coeffs.h"
 
 namespace prt {
@@ -30,15 +31,22 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
        "equirectangular .hdr/.exr/.png/.jpg file, or a built-in: furnace[:C] (constant radiance C, default 1) "
        "or sky[:sun=3,elevation=40,azimuth=35,radius=2] (an HDR sky with a sun disk)",
        d.env});
-  add({"--lmax", "L", "highest SH band, 0.." + std::to_string(kMaxLmax) +
-                          ": (L+1)^2 coefficients; `auto`: the smallest whose irradiance error is within --tolerance",
+  add({"--lmax", "L", "highest SH band, 0.." + std::to_string(kMaxLmax) + " (prt light: 0.." +
+                          std::to_string(kMaxBasisLmax) +
+                          "): (L+1)^2 coefficients; `auto`: the smallest whose irradiance error is within --tolerance",
        std::to_string(d.lmax) + ", " + std::to_string(CoeffCount(d.lmax)) + " coefficients"});
   add({"--tolerance", "X", "relative irradiance error that --lmax auto must reach, 1e-12..1", Formatted("%g", double(d.tolerance))});
   add({"--transport", "MODE",
        "unshadowed (closed form, no rays) | shadowed (visibility by ray casting) | interreflection (shadowed "
        "plus --bounces bounces of light between surfaces)",
        d.transport});
-  add({"--samples", "N", "ray directions per vertex, 1..16777216", std::to_string(d.samples)});
+  add({"--samples", "N",
+       "ray directions per vertex, 1..16777216; fewer than the sample rule's minimum for --lmax and --sampler "
+       "(fibonacci: 2 (L+1)^2, rounded up to a power of two) is warned about",
+       d.samples ? std::to_string(d.samples)
+                 : "follows --lmax and --sampler: max(1024, 8 x the minimum), e.g. fibonacci " +
+                       std::to_string(DefaultSamples(2, Sampler::kFibonacci)) + " at lmax 2, " +
+                       std::to_string(DefaultSamples(15, Sampler::kFibonacci)) + " at lmax 15"});
   add({"--sampler", "NAME", "fibonacci (spherical Fibonacci) | stratified (the course's jittered grid) | uniform",
        d.sampler});
   add({"--bounces", "B", "interreflection bounces, 1..1000 (stops early once negligible)", std::to_string(d.bounces)});
@@ -97,6 +105,25 @@ void CheckInputs(Args& args, const SceneOptions& o) {
   }
 }
 
+/// The direction count of the sample rule when none was given; a warning when the one given is
+/// below the rule's minimum and the transport casts rays (unshadowed is closed form).
+void ResolveSamples(Args& args, SceneOptions& o) {
+  const Sampler sampler = SamplerFromName(o.sampler);
+  const bool given = args.Accepts("--samples") && args.String("--samples").has_value();
+  if (!given && o.samples == 0) {
+    o.samples = DefaultSamples(o.lmax, sampler);
+    o.samples_from_rule = true;
+    return;
+  }
+  const int minimum = MinimumSamples(o.lmax, sampler);
+  if (given && o.transport != "unshadowed" && o.samples < minimum)
+    Warn("--samples " + std::to_string(o.samples) + " is below the " + std::to_string(minimum) + " " + o.sampler +
+         " directions per vertex that lmax " + std::to_string(o.lmax) +
+         " needs for its sampling error to stay under its SH truncation error: shadows will be blotchy (raise "
+         "--samples to at least " + std::to_string(minimum) + ", or leave it out for the default " +
+         std::to_string(DefaultSamples(o.lmax, sampler)) + ")");
+}
+
 }  // namespace
 
 const std::vector<std::string>& AllSceneOptionNames() {
@@ -129,9 +156,11 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
     if (text == "auto") {
       o.lmax_auto = true;
     } else {
+      // Printing coefficients needs no per-vertex storage: `light` goes as far as the basis is exact.
+      const int top = args.command() == "light" ? kMaxBasisLmax : kMaxLmax;
       const auto v = ParseNumber(text);
-      if (!v || *v != std::floor(*v) || *v < 0 || *v > kMaxLmax)
-        args.Fail("--lmax: " + NumberProblem(text, true, "an integer from 0 to " + std::to_string(kMaxLmax) + ", or auto"));
+      if (!v || *v != std::floor(*v) || *v < 0 || *v > top)
+        args.Fail("--lmax: " + NumberProblem(text, true, "an integer from 0 to " + std::to_string(top) + ", or auto"));
       o.lmax = static_cast<int>(*v);
     }
   }
@@ -181,7 +210,14 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
     o.lmax = choice.lmax;
     Summary(choice.why);
   }
+  ResolveSamples(args, o);
   return o;
+}
+
+std::string SamplesOrigin(const SceneOptions& o) {
+  if (!o.samples_from_rule || o.transport == "unshadowed") return "";
+  return " (the sample rule's default at lmax " + std::to_string(o.lmax) + ": " +
+         SampleRuleText(SamplerFromName(o.sampler)) + "; --samples N overrides)";
 }
 
 double MaxEdgeLength(const SceneOptions& options, double diagonal) {

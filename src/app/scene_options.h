@@ -22,7 +22,10 @@ struct SceneOptions {
   std::string env = "sky";           ///< cubemap folder, image file, or built-in name
   int lmax = 2;                      ///< highest SH band
   std::string transport = "shadowed";  ///< unshadowed | shadowed | interreflection
-  int samples = 1024;                ///< directions per vertex
+  /// Directions per vertex; 0: the sample rule's default for lmax and sampler
+  /// (precompute/sample_rule.h), which ReadSceneOptions puts here.
+  int samples = 0;
+  bool samples_from_rule = false;    ///< samples is the rule's default, not given by --samples
   std::string sampler = "fibonacci"; ///< fibonacci | stratified | uniform
   int bounces = 1;                   ///< interreflection bounces
   int direction_sets = 64;           ///< pool of direction sets (1: every vertex shares one)
@@ -51,8 +54,15 @@ OptionGroup SceneOptionGroup(const SceneOptions& defaults, const std::vector<std
 /// Reads the scene options the command's table lists, with `defaults` for what is not given,
 /// and applies --quiet and --threads. Checks that --mesh and --env name something that exists
 /// (or a built-in environment) before anything is loaded. `--lmax auto` loads the environment
-/// here to choose lmax.
+/// here to choose lmax. Without --samples (and a default of 0) the direction count follows the
+/// sample rule; an explicit --samples below the rule's minimum for a transport that casts rays is
+/// a warning naming both counts, said once here, before any work.
 SceneOptions ReadSceneOptions(Args& args, const SceneOptions& defaults = {});
+
+/// How the transport's direction count was chosen, for the transport's run-summary line: " (the
+/// sample rule's default at lmax L: ...; --samples N overrides)" when it came from the rule, ""
+/// when --samples gave it or the transport is unshadowed.
+std::string SamplesOrigin(const SceneOptions& options);
 
 /// The `--max-edge` length for a mesh whose bounding-box diagonal is `diagonal` (0: none).
 double MaxEdgeLength(const SceneOptions& options, double diagonal);

@@ -3,10 +3,12 @@
 /// The stiff and extreme cases of `prt report --stability`. Each case states what it checks,
 /// the measured figure, the limit and pass or fail:
 ///   - high bands: basis orthonormality at lmax 32 and 64 on an exact Gauss rule [1], rotation
-///     Y(R d) = D(R) Y(d) and orthogonality of D(R) at lmax 32 and 64, the basis finite to lmax
-///     200 at the exact poles and at z = 1 - 1e-15;
-///   - an HDR sun (peak/mean > 1e4): ringing as min(reconstruction)/peak and overshoot for no
-///     window, Hann and Lanczos, and what `--window auto` picks;
+///     Y(R d) = D(R) Y(d) and orthogonality of D(R) at lmax 32, 64, 100 and 200, the basis finite
+///     to lmax 200 at the exact poles and at z = 1 - 1e-15;
+///   - an HDR sun (peak/mean > 1e4): ringing as min(reconstruction)/peak for no window, Hann and
+///     Lanczos; `--window auto` at lmax 2, 4, 8 and 16, and on a sun of 1e5 x the mean at lmax
+///     8 and 64, each failing if any direction stays negative (its own search and 200,000
+///     Fibonacci directions);
 ///   - scene scale 1e-4 and 1e4: a lone convex sphere is never shadowed;
 ///   - 36000 frames of rotation: the last frame rebuilt from its absolute angle against the
 ///     directly rotated coefficients, and what accumulating per-frame steps in float gives;

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "core/parallel.h"
 #include "io/image_load.h"
 
 namespace prt {
@@ -76,10 +77,44 @@ std::array<ImageF, 6> CubemapFaceImages(const std::function<glm::dvec3(const glm
   return faces;
 }
 
+std::array<ImageF, 6> CubemapFaceAverages(const std::function<glm::dvec3(const glm::dvec3&)>& radiance, int size,
+                                          int supersample, CubeLayout layout) {
+  const int k = std::max(1, supersample), fine = size * k;
+  std::array<ImageF, 6> faces;
+  for (auto& f : faces) f = ImageF(size, size);
+  const auto& frames = FaceFrames(layout);
+  // One row of texels of one face per item; each texel's sum is its own, so any thread count
+  // gives the same bytes.
+  ParallelFor(6 * static_cast<std::size_t>(size), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t item = begin; item < end; ++item) {
+      const int face = static_cast<int>(item / size), row = static_cast<int>(item % size);
+      const FaceFrame& f = frames[face];
+      for (int col = 0; col < size; ++col) {
+        glm::dvec3 sum(0.0);
+        double weight = 0.0;
+        for (int j = 0; j < k; ++j)
+          for (int i = 0; i < k; ++i) {
+            const int fc = col * k + i, fr = row * k + j;
+            const double s = -1.0 + (fc + 0.5) * 2.0 / fine, t = -1.0 + (fr + 0.5) * 2.0 / fine;
+            const double w = TexelSolidAngle(fc, fr, fine);
+            sum += w * radiance(glm::normalize(f.n + s * f.u + t * f.v));
+            weight += w;
+          }
+        faces[face].at(col, row) = glm::vec3(sum / weight);
+      }
+    }
+  });
+  return faces;
+}
+
 std::unique_ptr<CubemapEnvironment> CubemapFromFunction(const std::function<glm::dvec3(const glm::dvec3&)>& radiance,
-                                                       int size, CubeLayout layout) {
-  return std::make_unique<CubemapEnvironment>(CubemapFaceImages(radiance, size, layout), layout,
-                                              "cubemap from a function 6x" + std::to_string(size) + "^2");
+                                                       int size, CubeLayout layout, int supersample) {
+  if (supersample <= 1)
+    return std::make_unique<CubemapEnvironment>(CubemapFaceImages(radiance, size, layout), layout,
+                                                "cubemap from a function 6x" + std::to_string(size) + "^2");
+  return std::make_unique<CubemapEnvironment>(CubemapFaceAverages(radiance, size, supersample, layout), layout,
+                                              "cubemap from a function 6x" + std::to_string(size) + "^2, texels "
+                                              "averaged over " + std::to_string(supersample) + "^2 sub-texels");
 }
 
 namespace {

@@ -43,10 +43,19 @@ class CubemapEnvironment : public Environment {
 std::array<ImageF, 6> CubemapFaceImages(const std::function<glm::dvec3(const glm::dvec3&)>& radiance, int size,
                                         CubeLayout layout = CubeLayout::kStandard);
 
-/// A size^2 cubemap whose texel centres hold `radiance(direction)`: for tests, benchmarks and
-/// resolution studies.
+/// The six size^2 faces whose texels each hold the average of `radiance` over the texel's solid
+/// angle, as a filtered cubemap stores it: the mean of supersample x supersample sub-texel
+/// centre samples, each weighted by its exact solid angle (cube_faces.h). Unlike a texel-centre
+/// sample, a feature smaller than a texel (a sun disk) keeps its power whichever texels it
+/// falls on. supersample = 1 is CubemapFaceImages.
+std::array<ImageF, 6> CubemapFaceAverages(const std::function<glm::dvec3(const glm::dvec3&)>& radiance, int size,
+                                          int supersample, CubeLayout layout = CubeLayout::kStandard);
+
+/// A size^2 cubemap whose texels hold `radiance(direction)` at their centres (supersample 1) or
+/// averaged over them (CubemapFaceAverages): for tests, benchmarks and resolution studies.
 std::unique_ptr<CubemapEnvironment> CubemapFromFunction(const std::function<glm::dvec3(const glm::dvec3&)>& radiance,
-                                                       int size, CubeLayout layout = CubeLayout::kStandard);
+                                                       int size, CubeLayout layout = CubeLayout::kStandard,
+                                                       int supersample = 1);
 
 /// The six face files of a cubemap folder, in kFaceNames order, checked as far as their headers
 /// go: each face present once, square, of one size (stored in `face_size`), not oversized.

@@ -46,7 +46,8 @@ const char* TransportModeName(TransportMode mode);
 struct TransportOptions {
   TransportMode mode = TransportMode::kShadowed;
   int lmax = 2;
-  int samples = 1024;                ///< directions per vertex (stratified: floor(sqrt)^2)
+  int samples = 1024;                ///< directions per vertex (stratified: floor(sqrt)^2); 1024 =
+                                     ///< DefaultSamples(2, kFibonacci), precompute/sample_rule.h
   Sampler sampler = Sampler::kFibonacci;
   int bounces = 1;                   ///< interreflection bounces
   std::uint64_t seed = 1;

@@ -35,33 +35,42 @@ void Line(Image8& im, double x0, double y0, double x1, double y1, glm::vec3 c, b
 
 int TextWidth(const std::string& s, int scale) { return static_cast<int>(s.size()) * 6 * scale; }
 
-std::string Decade(int e) {
-  if (e == 0) return "1";
-  if (e == 1) return "10";
+/// The tick label of m 10^e: "1e-3", "2e-3", "1", "20".
+std::string TickLabel(int m, int e) {
+  if (e == 0) return std::to_string(m);
+  if (e == 1) return std::to_string(m * 10);
   char b[16];
-  std::snprintf(b, sizeof b, "1e%d", e);
+  std::snprintf(b, sizeof b, "%de%d", m, e);
   return b;
 }
 
-struct Range {
-  int lo = 0, hi = 1;  // decades
-};
-
-Range DecadeRange(const std::vector<PlotSeries>& series, bool use_x) {
-  double lo = INFINITY, hi = -INFINITY;
+/// Every value of `series` on the x (or y) axis that a log axis can show.
+std::vector<double> AxisValues(const std::vector<PlotSeries>& series, bool use_x) {
+  std::vector<double> values;
   for (const auto& s : series)
-    for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
-      const double v = use_x ? s.x[i] : s.y[i];
-      if (!(s.x[i] > 0) || !(s.y[i] > 0) || !std::isfinite(s.x[i]) || !std::isfinite(s.y[i])) continue;
-      lo = std::min(lo, std::log10(v));
-      hi = std::max(hi, std::log10(v));
+    for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i)
+      if (s.x[i] > 0 && s.y[i] > 0 && std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
+        values.push_back(use_x ? s.x[i] : s.y[i]);
+  return values;
+}
+
+/// Calls tick(m, e, value) for every m 10^e (m = 1..9) within `r`, in increasing order.
+template <class F>
+void ForEachTick(const LogRange& r, F tick) {
+  const int e0 = static_cast<int>(std::floor(std::log10(r.lo))) - 1;
+  const int e1 = static_cast<int>(std::ceil(std::log10(r.hi))) + 1;
+  for (int e = e0; e <= e1; ++e)
+    for (int m = 1; m <= 9; ++m) {
+      const double v = m * std::pow(10.0, e);
+      if (v >= r.lo * (1 - 1e-9) && v <= r.hi * (1 + 1e-9)) tick(m, e, v);
     }
-  Range r;
-  if (!std::isfinite(lo)) return r;
-  r.lo = static_cast<int>(std::floor(lo));
-  r.hi = static_cast<int>(std::ceil(hi));
-  if (r.hi <= r.lo) r.hi = r.lo + 1;
-  return r;
+}
+
+/// Which ticks carry a label: powers of ten always; 2 and 5 times them when the axis spans
+/// less than two decades; every tick when it spans less than a factor 3 (few ticks then).
+bool Labelled(const LogRange& r, int m) {
+  const double span = r.hi / r.lo;
+  return m == 1 || (span < 100.0 && (m == 2 || m == 5)) || span < 3.0;
 }
 
 }  // namespace
@@ -74,31 +83,67 @@ glm::vec3 PlotColor(int i) {
   return palette[((i % 10) + 10) % 10];
 }
 
+LogRange LogAxisRange(const std::vector<double>& values) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (double v : values)
+    if (v > 0 && std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+  if (!std::isfinite(lo)) return {};
+  // Largest m 10^e at or below lo; smallest at or above hi (m = 1..9, or 10 = the next decade).
+  const auto mantissa_step = [](double v, bool down) {
+    const double e = std::pow(10.0, std::floor(std::log10(v)));
+    const double m = v / e;  // in [1, 10)
+    const double tol = 1e-9;
+    return (down ? std::floor(m + tol) : std::ceil(m - tol)) * e;
+  };
+  LogRange r{mantissa_step(lo, true), mantissa_step(hi, false)};
+  if (!(r.hi > r.lo)) {  // one value on a tick: the next tick up
+    const double e = std::pow(10.0, std::floor(std::log10(r.lo) + 1e-9));
+    r.hi = r.lo + e;
+  }
+  return r;
+}
+
 Image8 DrawLogLogPlot(const std::vector<PlotSeries>& series, const PlotOptions& o) {
   Image8 im(std::max(o.width, 200), std::max(o.height, 150));
   std::fill(im.rgb.begin(), im.rgb.end(), std::uint8_t{255});
   const glm::vec3 black(0.f), grey(0.85f);
   // Plot area: room for tick labels and titles on the left and bottom, legend on the right.
   const int left = 70, top = 36, right = im.width - 200, bottom = im.height - 50;
-  const Range xr = DecadeRange(series, true), yr = DecadeRange(series, false);
-  auto px = [&](double x) { return left + (std::log10(x) - xr.lo) / (xr.hi - xr.lo) * (right - left); };
-  auto py = [&](double y) { return bottom - (std::log10(y) - yr.lo) / (yr.hi - yr.lo) * (bottom - top); };
+  const LogRange xr = LogAxisRange(AxisValues(series, true)), yr = LogAxisRange(AxisValues(series, false));
+  const double xl = std::log10(xr.lo), xh = std::log10(xr.hi), yl = std::log10(yr.lo), yh = std::log10(yr.hi);
+  auto px = [&](double x) { return left + (std::log10(x) - xl) / (xh - xl) * (right - left); };
+  auto py = [&](double y) { return bottom - (std::log10(y) - yl) / (yh - yl) * (bottom - top); };
 
-  // Grid, ticks and tick labels.
-  for (int e = xr.lo; e <= xr.hi; ++e)
-    for (int m = 1; m <= (e < xr.hi ? 9 : 1); ++m) {
-      const int x = static_cast<int>(std::lround(px(m * std::pow(10.0, e))));
-      Rect(im, x, top, x + 1, bottom, m == 1 ? grey : glm::vec3(0.94f));
-      Rect(im, x, bottom, x + 1, bottom + (m == 1 ? 7 : 4), black);
-      if (m == 1) DrawText(im, x - TextWidth(Decade(e), 1) / 2, bottom + 10, Decade(e), black);
-    }
-  for (int e = yr.lo; e <= yr.hi; ++e)
-    for (int m = 1; m <= (e < yr.hi ? 9 : 1); ++m) {
-      const int y = static_cast<int>(std::lround(py(m * std::pow(10.0, e))));
-      Rect(im, left, y, right, y + 1, m == 1 ? grey : glm::vec3(0.94f));
-      Rect(im, left - (m == 1 ? 7 : 4), y, left, y + 1, black);
-      if (m == 1) DrawText(im, left - 10 - TextWidth(Decade(e), 1), y - 4, Decade(e), black);
-    }
+  // Grid, ticks and tick labels: every m 10^e inside the range, powers of ten darker. The two
+  // ends are labelled too where that does not crowd a neighbouring label.
+  const auto labels = [](const LogRange& r, const auto& pos, int min_gap) {
+    std::vector<std::pair<double, std::string>> at;  // (pixel, text)
+    ForEachTick(r, [&](int m, int e, double v) {
+      if (Labelled(r, m)) at.emplace_back(pos(v), TickLabel(m, e));
+    });
+    ForEachTick(r, [&](int m, int e, double v) {
+      const bool end = std::abs(v / r.lo - 1) < 1e-9 || std::abs(v / r.hi - 1) < 1e-9;
+      if (!end || Labelled(r, m)) return;
+      for (const auto& [p, text] : at)
+        if (std::abs(p - pos(v)) < min_gap) return;
+      at.emplace_back(pos(v), TickLabel(m, e));
+    });
+    return at;
+  };
+  ForEachTick(xr, [&](int m, int, double v) {
+    const int x = static_cast<int>(std::lround(px(v)));
+    Rect(im, x, top, x + 1, bottom, m == 1 ? grey : glm::vec3(0.94f));
+    Rect(im, x, bottom, x + 1, bottom + (m == 1 ? 7 : 4), black);
+  });
+  for (const auto& [x, text] : labels(xr, px, 40))
+    DrawText(im, static_cast<int>(std::lround(x)) - TextWidth(text, 1) / 2, bottom + 10, text, black);
+  ForEachTick(yr, [&](int m, int, double v) {
+    const int y = static_cast<int>(std::lround(py(v)));
+    Rect(im, left, y, right, y + 1, m == 1 ? grey : glm::vec3(0.94f));
+    Rect(im, left - (m == 1 ? 7 : 4), y, left, y + 1, black);
+  });
+  for (const auto& [y, text] : labels(yr, py, 14))
+    DrawText(im, left - 10 - TextWidth(text, 1), static_cast<int>(std::lround(y)) - 4, text, black);
   // Axes and titles.
   Rect(im, left, top, left + 1, bottom + 1, black);
   Rect(im, left, bottom, right + 1, bottom + 1, black);

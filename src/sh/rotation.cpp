@@ -1,87 +1,119 @@
 #include "sh/rotation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+
+#include <glm/matrix.hpp>
+
+#include "core/error.h"
+#include "core/text.h"
+#include "sh/wigner_d.h"
 
 namespace prt {
 namespace {
 
-/// A band matrix with signed indices m, n in [-l, l].
-struct BandView {
-  int l;
-  const std::vector<double>* d;
-  double operator()(int m, int n) const { return (*d)[(m + l) * (2 * l + 1) + (n + l)]; }
+constexpr double kSqrt2 = 1.41421356237309504880;
+
+glm::dmat3 Rz(double a) {
+  const double c = std::cos(a), s = std::sin(a);
+  return glm::dmat3(c, s, 0, -s, c, 0, 0, 0, 1);  // glm: column by column
+}
+
+glm::dmat3 Ry(double b) {
+  const double c = std::cos(b), s = std::sin(b);
+  return glm::dmat3(c, 0, -s, 0, 1, 0, s, 0, c);
+}
+
+struct Zyz {
+  double alpha, beta, gamma;
 };
 
-/// The P function of [1]: one D_1 entry (row i) times one D_{l-1} entry, with the
-/// boundary cases |b| = l that reach just outside band l-1.
-double P(int i, int a, int b, int l, const BandView& r1, const BandView& prev) {
-  if (b == l) return r1(i, 1) * prev(a, l - 1) - r1(i, -1) * prev(a, -l + 1);
-  if (b == -l) return r1(i, 1) * prev(a, -l + 1) + r1(i, -1) * prev(a, l - 1);
-  return r1(i, 0) * prev(a, b);
+/// R = Rz(alpha) Ry(beta) Rz(gamma). beta from atan2 (acos loses digits near 0 and pi); gamma
+/// from what Rz(alpha) Ry(beta) leaves of R, so the product reproduces R to rounding even where
+/// alpha alone is ill-determined (beta near 0 or pi).
+Zyz ZyzAngles(const glm::dmat3& R) {
+  auto M = [&](int row, int col) { return R[col][row]; };
+  Zyz e{};
+  e.beta = std::atan2(std::hypot(M(0, 2), M(1, 2)), M(2, 2));
+  e.alpha = std::atan2(M(1, 2), M(0, 2));
+  const glm::dmat3 rest = glm::transpose(Rz(e.alpha) * Ry(e.beta)) * R;
+  e.gamma = std::atan2(rest[0][1], rest[0][0]);
+  return e;
 }
 
-double U(int m, int n, int l, const BandView& r1, const BandView& prev) {
-  return P(0, m, n, l, r1, prev);
-}
-
-double V(int m, int n, int l, const BandView& r1, const BandView& prev) {
-  if (m == 0) return P(1, 1, n, l, r1, prev) + P(-1, -1, n, l, r1, prev);
-  if (m > 0) {
-    const double d = (m == 1) ? 1.0 : 0.0;
-    return P(1, m - 1, n, l, r1, prev) * std::sqrt(1.0 + d) - P(-1, -m + 1, n, l, r1, prev) * (1.0 - d);
-  }
-  const double d = (m == -1) ? 1.0 : 0.0;
-  return P(1, m + 1, n, l, r1, prev) * (1.0 - d) + P(-1, -m - 1, n, l, r1, prev) * std::sqrt(1.0 + d);
-}
-
-double W(int m, int n, int l, const BandView& r1, const BandView& prev) {
-  if (m > 0) return P(1, m + 1, n, l, r1, prev) + P(-1, -m - 1, n, l, r1, prev);
-  return P(1, m - 1, n, l, r1, prev) - P(-1, -m + 1, n, l, r1, prev);  // m < 0 (w = 0 at m = 0)
-}
-
-/// Band l of [1] (no Condon–Shortley phase) from band 1 and band l-1.
-std::vector<double> NextBand(int l, const BandView& r1, const BandView& prev) {
-  std::vector<double> out((2 * l + 1) * (2 * l + 1));
-  for (int m = -l; m <= l; ++m) {
-    for (int n = -l; n <= l; ++n) {
-      const double d = (m == 0) ? 1.0 : 0.0;
-      const double denom = (std::abs(n) == l) ? (2.0 * l) * (2.0 * l - 1.0) : double(l + n) * (l - n);
-      const int am = std::abs(m);
-      const double u = std::sqrt(double(l + m) * (l - m) / denom);
-      const double v = 0.5 * std::sqrt((1.0 + d) * (l + am - 1.0) * (l + am) / denom) * (1.0 - 2.0 * d);
-      const double w = -0.5 * std::sqrt((l - am - 1.0) * (l - am) / denom) * (1.0 - d);
-      double value = 0.0;
-      if (u != 0.0) value += u * U(m, n, l, r1, prev);
-      if (v != 0.0) value += v * V(m, n, l, r1, prev);
-      if (w != 0.0) value += w * W(m, n, l, r1, prev);
-      out[(m + l) * (2 * l + 1) + (n + l)] = value;
+/// D := Z(a) D for band l, Z(a) = D_l(Rz(a)): rows m and -m mix by cos(m a), sin(m a).
+void TurnRows(std::vector<double>& D, int l, double a) {
+  const int n = 2 * l + 1;
+  for (int m = 1; m <= l; ++m) {
+    const double c = std::cos(m * a), s = std::sin(m * a);
+    double* top = &D[(l + m) * n];
+    double* bottom = &D[(l - m) * n];
+    for (int j = 0; j < n; ++j) {
+      const double t = top[j], b = bottom[j];
+      top[j] = c * t - s * b;
+      bottom[j] = s * t + c * b;
     }
   }
-  return out;
+}
+
+/// D := D Z(a) for band l.
+void TurnColumns(std::vector<double>& D, int l, double a) {
+  const int n = 2 * l + 1;
+  for (int m = 1; m <= l; ++m) {
+    const double c = std::cos(m * a), s = std::sin(m * a);
+    for (int i = 0; i < n; ++i) {
+      double& pos = D[i * n + l + m];
+      double& neg = D[i * n + l - m];
+      const double p = pos, q = neg;
+      pos = c * p + s * q;
+      neg = c * q - s * p;
+    }
+  }
+}
+
+/// Real band matrices of Ry(beta) from Wigner's d. With A_{mk} = d^l_{mk}(beta) (the complex
+/// harmonics obey Y^m(Ry d) = sum_k A_{mk} Y^k(d)) and our real harmonics y_{l,+-m} = sqrt(2)
+/// Re/Im Y^m (m > 0), y_{l0} = Y^0, taking real and imaginary parts (Y^{-k} = (-1)^k conj Y^k):
+///   D[m][k]  = A_{mk} + (-1)^k A_{m,-k},   D[-m][-k] = A_{mk} - (-1)^k A_{m,-k}   (m, k > 0)
+///   D[m][0]  = sqrt(2) A_{m0},   D[0][k] = (A_{0k} + (-1)^k A_{0,-k}) / sqrt(2),   D[0][0] = A_00,
+/// and zero between the cosine (m >= 0) and sine (m < 0) halves, which Ry never mixes.
+std::vector<std::vector<double>> AboutY(double beta, int lmax) {
+  std::vector<std::vector<double>> bands(lmax + 1);
+  for (int l = 0; l <= lmax; ++l) bands[l].assign((2 * l + 1) * (2 * l + 1), 0.0);
+  std::vector<double> plus(lmax + 1), minus(lmax + 1);
+  for (int m = 0; m <= lmax; ++m) {
+    for (int k = 0; k <= lmax; ++k) {
+      WignerDRun(m, k, beta, lmax, plus.data());
+      WignerDRun(m, -k, beta, lmax, minus.data());
+      const double sign = (k % 2 == 0) ? 1.0 : -1.0;
+      for (int l = std::max(m, k); l <= lmax; ++l) {
+        const int n = 2 * l + 1;
+        double* D = bands[l].data();
+        if (k == 0) {
+          D[(l + m) * n + l] = (m == 0) ? plus[l] : kSqrt2 * plus[l];
+        } else if (m == 0) {
+          D[l * n + l + k] = (plus[l] + sign * minus[l]) / kSqrt2;
+        } else {
+          D[(l + m) * n + l + k] = plus[l] + sign * minus[l];
+          D[(l - m) * n + l - k] = plus[l] - sign * minus[l];
+        }
+      }
+    }
+  }
+  return bands;
 }
 
 }  // namespace
 
-ShRotation::ShRotation(const glm::dmat3& R, int lmax) : lmax_(lmax), bands_(lmax + 1) {
-  bands_[0] = {1.0};
-  if (lmax == 0) return;
-  // D_1 without the phase: rows/columns in the order (y, z, x). glm is column-major: R[c][r].
-  const int axis[3] = {1, 2, 0};
-  std::vector<double> r1(9);
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) r1[i * 3 + j] = R[axis[j]][axis[i]];
-  const BandView v1{1, &r1};
-  std::vector<std::vector<double>> plain(lmax + 1);
-  plain[0] = {1.0};
-  plain[1] = r1;
-  for (int l = 2; l <= lmax; ++l) plain[l] = NextBand(l, v1, BandView{l - 1, &plain[l - 1]});
-  // Condon–Shortley phase: entry (m, n) gets (-1)^(m + n).
+ShRotation::ShRotation(const glm::dmat3& R, int lmax) : lmax_(lmax) {
+  if (lmax < 0 || lmax > kMaxBasisLmax)
+    throw Error(Formatted("SH rotation: lmax %d is outside 0..%d, the bands it is exact for", lmax, kMaxBasisLmax));
+  const Zyz e = ZyzAngles(R);
+  bands_ = AboutY(e.beta, lmax);
   for (int l = 1; l <= lmax; ++l) {
-    bands_[l] = plain[l];
-    for (int m = -l; m <= l; ++m)
-      for (int n = -l; n <= l; ++n)
-        if ((std::abs(m) + std::abs(n)) % 2 == 1) bands_[l][(m + l) * (2 * l + 1) + (n + l)] *= -1.0;
+    TurnColumns(bands_[l], l, e.gamma);
+    TurnRows(bands_[l], l, e.alpha);
   }
 }
 

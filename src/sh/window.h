@@ -8,7 +8,8 @@
 ///   none:    w_l = 1
 ///   hann:    w_l = (1 + cos(pi l / (lmax + 1))) / 2
 ///   lanczos: w_l = sinc(pi l / (lmax + 1)) = sin(x)/x     (w_0 = 1)
-/// Band 0 is never changed, so total energy (the average radiance) is preserved.
+/// Band 0 is never changed, so total energy (the average radiance) is preserved. Neither of these
+/// keeps a bright sun non-negative at every lmax; `--window auto` does (sh/dering.h).
 ///
 /// References
 /// [1] Sloan, "Stupid Spherical Harmonics (SH) Tricks", GDC 2008, section on windowing.
@@ -30,26 +31,5 @@ double WindowWeight(Window w, int l, int lmax);
 
 /// Multiplies each band of `coeffs` (of bands 0..lmax) by its weight.
 void ApplyWindow(Window w, ShRgb& coeffs);
-
-}  // namespace prt
-
-namespace prt {
-
-/// The result of `--window auto`.
-struct AutoWindow {
-  Window window;
-  double min_before;  ///< lowest reconstructed radiance (any channel) without a window
-  double min_after;   ///< the same with the chosen window
-};
-
-/// The mildest window (none, then lanczos, then hann) whose reconstruction of `coeffs` is
-/// non-negative everywhere, checked on a Gauss grid fine enough for bands 0..lmax; hann if
-/// none is (it rings least). Negative values relative to the mean radiance below 1e-9 count as
-/// zero, so rounding never forces a window.
-AutoWindow ChooseWindow(const ShRgb& coeffs);
-
-/// Lowest value of any channel of the reconstruction sum_k c_k Y_k over the sphere (sampled on
-/// a Gauss grid of lmax + 8 latitudes, exact for band-limited products of this size).
-double MinReconstruction(const ShRgb& coeffs);
 
 }  // namespace prt

@@ -234,7 +234,7 @@ TEST_SUITE("app") {
          }) {
       ExpectFailure(render + c.args, 2, {c.part});
     }
-    ExpectFailure("light --lmax 65", 2, {"--lmax: '65'", "(see prt help light)"});
+    ExpectFailure("light --lmax 201", 2, {"--lmax: '201' is out of range (expected an integer from 0 to 200", "(see prt help light)"});
     ExpectFailure("light --frames 3", 2, {"--frames: unknown option"});
     ExpectFailure("no-such-command", 2, {"'no-such-command': unknown command"});
     ExpectFailure("light --env sky:sun=-1", 2, {"--env: sky:sun=-1: sun '-1' is out of range", "prt help light"});

@@ -8,6 +8,8 @@
 #include "sh/quadrature.h"
 #include "sh/rotation.h"
 #include "sh/rotation_course.h"
+#include "sh/wigner_d.h"
+#include "core/error.h"
 
 using namespace prt;
 
@@ -31,9 +33,11 @@ glm::dmat3 RandomRotation(Pcg32& rng) {
   return AxisAngle(RandomDirection(rng), 2.0 * kPi * rng.NextDouble());
 }
 
-double BandOrthogonalityError(const ShRotation& rot) {
+/// max |D_l D_l^T - I| over bands l = 0, step, 2 step, ... and the last (the check costs
+/// (2l+1)^3 a band: all 201 bands of lmax 200 would take seconds).
+double BandOrthogonalityError(const ShRotation& rot, int step = 1) {
   double worst = 0.0;
-  for (int l = 0; l <= rot.lmax(); ++l) {
+  for (int l = 0; l <= rot.lmax(); l = (l == rot.lmax() || l + step <= rot.lmax()) ? l + step : rot.lmax()) {
     const int n = 2 * l + 1;
     const auto& d = rot.Band(l);
     for (int i = 0; i < n; ++i)
@@ -121,18 +125,55 @@ TEST_SUITE("sh") {
     for (std::size_t k = 0; k < cf.size(); ++k) CHECK(std::abs(rotated[k] - cg[k]) < kCommuteTolerance);
   }
 
-  TEST_CASE("lmax 64: orthogonal and exact at random directions") {
-    // Rounding grows with the recurrence depth; the stability report states the figure,
-    // this test keeps it bounded.
-    constexpr double kHighBandTolerance = 1e-10;
+  TEST_CASE("lmax 64, 100 and 200: orthogonal to 1e-12 and Y(R d) = D Y(d) to 1e-11") {
+    // What the rotation promises at every order it accepts. Random rotations and three
+    // near-degenerate ones (beta = 1e-9 and pi - 1e-9, where the Euler angles alpha and gamma are
+    // ill-determined alone, and an exact half turn about x).
+    constexpr double kOrthogonalityLimit = 1e-12;
+    constexpr double kEquivarianceLimit = 1e-11;
     Pcg32 rng(10, 0);
-    const glm::dmat3 R = RandomRotation(rng);
-    const ShRotation rot(R, 64);
-    const double ortho = BandOrthogonalityError(rot);
-    const double apply = ApplyError(rot, R, RandomDirection(rng));
-    MESSAGE("lmax 64: orthogonality error " << ortho << ", Y(Rd) - D Y(d) " << apply);
-    CHECK(ortho < kHighBandTolerance);
-    CHECK(apply < kHighBandTolerance);
+    std::vector<glm::dmat3> rotations = {RandomRotation(rng), AxisAngle(RandomDirection(rng), 1e-9) * RandomRotation(rng),
+                                         AxisAngle({0.6, 0.8, 0.0}, 1e-9), AxisAngle({1, 0, 0}, kPi - 1e-9),
+                                         AxisAngle({1, 0, 0}, kPi)};
+    for (int lmax : {64, 100, 200}) {
+      for (std::size_t r = 0; r < rotations.size(); ++r) {
+        if (lmax != 200 && r > 1) continue;  // the degenerate cases once, at the highest order
+        const ShRotation rot(rotations[r], lmax);
+        const double ortho = BandOrthogonalityError(rot, lmax > 64 ? 7 : 1);
+        double apply = 0.0;
+        for (int t = 0; t < 3; ++t) apply = std::max(apply, ApplyError(rot, rotations[r], RandomDirection(rng)));
+        MESSAGE("lmax " << lmax << ", rotation " << r << ": orthogonality error " << ortho
+                        << ", Y(Rd) - D Y(d) " << apply);
+        CHECK(ortho < kOrthogonalityLimit);
+        CHECK(apply < kEquivarianceLimit);
+      }
+    }
+  }
+
+  TEST_CASE("orders beyond the basis are refused, not returned as garbage") {
+    CHECK_THROWS_AS(ShRotation(glm::dmat3(1.0), kMaxBasisLmax + 1), Error);
+    CHECK_THROWS_AS(ShRotation(glm::dmat3(1.0), -1), Error);
+  }
+
+  TEST_CASE("Wigner d by the recurrence in l equals Wigner's explicit sum") {
+    // The explicit sum cancels for large l; to l = 14 in long double it is good to ~1e-15.
+    constexpr double kExplicitTolerance = 1e-13;
+    const int lmax = 14;
+    std::vector<double> run(lmax + 1);
+    double worst = 0.0;
+    for (double beta : {0.0, 1e-7, 0.3, kPi / 2, 2.5, kPi - 1e-7, kPi}) {
+      for (int m = -lmax; m <= lmax; ++m)
+        for (int k = -lmax; k <= lmax; ++k) {
+          WignerDRun(m, k, beta, lmax, run.data());
+          for (int l = std::max(std::abs(m), std::abs(k)); l <= lmax; ++l)
+            worst = std::max(worst, std::abs(run[l] - WignerDExplicit(l, m, k, beta)));
+        }
+    }
+    MESSAGE("worst |recurrence - explicit| to l = " << lmax << ": " << worst);
+    CHECK(worst < kExplicitTolerance);
+    // One hand value: d^1_{10}(beta) = -sin(beta) / sqrt(2).
+    WignerDRun(1, 0, 0.4, 1, run.data());
+    CHECK(run[1] == doctest::Approx(-std::sin(0.4) / std::sqrt(2.0)).epsilon(1e-15));
   }
 
   TEST_CASE("the course's projection method equals the exact matrices for bands 1 and 2") {

@@ -1,0 +1,145 @@
+// --window auto (sh/dering.h) and the non-negative kernel it ends at (sh/nonnegative_kernel.h).
+// Everything is checked against something the code does not compute itself: Legendre zeros in
+// closed form, an independent scan of random directions, and the minimality of the strength.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "core/rng.h"
+#include "sh/basis.h"
+#include "sh/dering.h"
+#include "sh/nonnegative_kernel.h"
+#include "sh/zonal.h"
+
+using namespace prt;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+glm::dvec3 RandomDirection(Pcg32& rng) {
+  const double z = 2.0 * rng.NextDouble() - 1.0, phi = 2.0 * kPi * rng.NextDouble();
+  const double s = std::sqrt((1.0 - z) * (1.0 + z));
+  return {s * std::cos(phi), s * std::sin(phi), z};
+}
+
+/// Lowest channel of the reconstruction over `n` random directions: a scan independent of the
+/// grid-and-compass search under test.
+double RandomScanLowest(const ShRgb& c, int n, std::uint64_t seed) {
+  const int lmax = LmaxOfCount(c.size());
+  Pcg32 rng(seed, 1);
+  std::vector<double> y(c.size());
+  double lowest = 1e300;
+  for (int i = 0; i < n; ++i) {
+    EvalBasis(lmax, RandomDirection(rng), y.data());
+    glm::dvec3 v(0.0);
+    for (std::size_t k = 0; k < c.size(); ++k) v += y[k] * c[k];
+    lowest = std::min({lowest, v.x, v.y, v.z});
+  }
+  return lowest;
+}
+
+/// A sky-like light: a constant `floor` plus a sun of `sun` (the projection of a delta of that
+/// energy, which rings as hard as any light can) in direction `s`. The sun is bluest and the
+/// floor reddest, so blue, the last channel, rings most: a search that looked at red alone would
+/// stop short.
+ShRgb SunLight(int lmax, const glm::dvec3& s, double sun, double floor) {
+  ShRgb c(CoeffCount(lmax), glm::dvec3(0.0));
+  const std::vector<double> y = EvalBasis(lmax, glm::normalize(s));
+  for (std::size_t k = 0; k < c.size(); ++k) c[k] = sun * y[k] * glm::dvec3(0.5, 0.8, 1.0);
+  c[0] += floor * std::sqrt(4.0 * kPi) * glm::dvec3(1.0, 0.5, 0.3);
+  return c;
+}
+
+}  // namespace
+
+TEST_SUITE("sh") {
+  TEST_CASE("non-negative kernel: never negative, w_0 = 1, w_1 = the largest Legendre zero") {
+    // Rounding of a sum of up to 65 terms of size 1 against K(1).
+    constexpr double kRounding = 1e-14;
+    for (int lmax = 0; lmax <= kMaxAutoWindowLmax; ++lmax) {
+      const std::vector<double> w = NonNegativeKernelWeights(lmax);
+      REQUIRE(w.size() == std::size_t(lmax + 1));
+      CHECK(w[0] == 1.0);
+      CHECK(KernelMinimumRatio(w) > -kRounding);
+      for (int l = 1; l <= lmax; ++l) CHECK(w[l] <= w[l - 1] + kRounding);  // a low-pass window
+    }
+    // Largest zeros in closed form: P_2: 1/sqrt(3); P_3: sqrt(3/5).
+    CHECK(NonNegativeKernelWeights(2)[1] == doctest::Approx(1.0 / std::sqrt(3.0)).epsilon(1e-13));
+    CHECK(NonNegativeKernelWeights(4)[1] == doctest::Approx(std::sqrt(0.6)).epsilon(1e-13));
+    // Where the power of the cosine is sharper (lmax 1 and 3), it is taken: w_1 = lmax/(lmax+2).
+    CHECK(NonNegativeKernelWeights(1)[1] == doctest::Approx(1.0 / 3.0).epsilon(1e-13));
+    CHECK(NonNegativeKernelWeights(3)[1] == doctest::Approx(0.6).epsilon(1e-13));
+    // Sharper than Hann, whose kernel is not even non-negative, from lmax 8 on.
+    CHECK(NonNegativeKernelWeights(8)[1] > 0.9);
+  }
+
+  TEST_CASE("--window auto: a light already non-negative is left alone") {
+    ShRgb c = SunLight(6, {0.2, 0.9, 0.1}, 0.0, 1.0);  // constant
+    c[ShIndex(1, 0)] = glm::dvec3(0.5);                  // a gentle gradient, 1 + 0.5 Y_10 > 0
+    const AutoWindow a = ChooseAutoWindow(c);
+    CHECK(a.t == 0.0);
+    for (double w : a.weights) CHECK(w == 1.0);
+    CHECK(a.min_after == a.min_before);
+    CHECK(a.min_before > 0);
+    CHECK(a.irradiance_cost == 0.0);
+  }
+
+  TEST_CASE("--window auto: non-negative everywhere and no stronger than needed, lmax 1 to 64, suns to 1e5") {
+    Pcg32 rng(21, 4);
+    for (int lmax : {1, 2, 3, 4, 8, 16, 33, 64}) {
+      for (double ratio : {30.0, 1e5}) {
+        const double floor = 1.0, sun = ratio * 4.0 * kPi * floor;  // sun energy / sky energy = ratio
+        ShRgb c = SunLight(lmax, RandomDirection(rng), sun, floor);
+        const AutoWindow a = ChooseAutoWindow(c);
+        INFO("lmax " << lmax << ", sun " << ratio << ": t " << a.t << ", before " << a.min_before << ", after "
+                     << a.min_after);
+        CHECK(a.min_before < 0);  // the case rings
+        ShRgb windowed = c;
+        ApplyWeights(a.weights, windowed);
+        const int scan = lmax > 16 ? 4000 : 20000;
+        CHECK(a.min_after >= 0);
+        CHECK(RandomScanLowest(windowed, scan, 5) >= 0);
+        // Minimal: 1% less strength leaves a negative direction.
+        ShRgb weaker = c;
+        std::vector<double> w(a.weights.size());
+        const std::vector<double> k = NonNegativeKernelWeights(lmax);
+        const double t = 0.99 * a.t;
+        for (std::size_t l = 0; l < w.size(); ++l) w[l] = (1.0 - t) + t * k[l];
+        ApplyWeights(w, weaker);
+        CHECK(LowestRadiance(weaker) < 0);
+      }
+    }
+  }
+
+  TEST_CASE("--window auto: its irradiance cost is the Parseval sum of what it removes") {
+    // A light of bands 0 and 1 only: the cost is |1 - w_1| A_1 |L_1| / sqrt(A_0^2 |L_0|^2 + A_1^2 |L_1|^2).
+    ShRgb c(CoeffCount(1), glm::dvec3(0.0));
+    c[0] = glm::dvec3(1.0);
+    // 1.5 Y_10 against Y_00 = 1 dips below zero, yet is the projection of a non-negative light
+    // (a delta's band 1 is sqrt(3) times its band 0; any mix of deltas' is less).
+    c[ShIndex(1, 0)] = glm::dvec3(1.5);
+    const AutoWindow a = ChooseAutoWindow(c);
+    REQUIRE(a.t > 0);
+    const double a0 = ClampedCosineBand(0), a1 = ClampedCosineBand(1);
+    const double expected = (1.0 - a.weights[1]) * a1 * 1.5 / std::sqrt(a0 * a0 + a1 * a1 * 2.25);
+    CHECK(a.irradiance_cost == doctest::Approx(expected).epsilon(1e-12));
+    // And the window is the least: 1/sqrt(4pi) + w_1 1.5 sqrt(3/4pi) z >= 0 down to z = -1 needs
+    // w_1 <= 1/(1.5 sqrt(3)); the margin of 1e-6 in strength moves w_1 by less than 1e-6.
+    CHECK(a.weights[1] == doctest::Approx(1.0 / (1.5 * std::sqrt(3.0))).epsilon(1e-5));
+    CHECK(a.weights[1] <= 1.0 / (1.5 * std::sqrt(3.0)));
+    CHECK(a.min_after >= 0);
+  }
+
+  TEST_CASE("--window auto: a channel that is zero everywhere stays zero, the others are windowed") {
+    ShRgb c = SunLight(8, {0, 0, 1}, 1000.0, 1.0);
+    for (auto& v : c) v.y = 0.0;  // green: no light at all
+    const AutoWindow a = ChooseAutoWindow(c);
+    CHECK(a.t > 0);
+    CHECK(a.min_after >= 0);
+  }
+}
