@@ -142,4 +142,23 @@ TEST_SUITE("sh") {
     CHECK(a.t > 0);
     CHECK(a.min_after >= 0);
   }
+
+  TEST_CASE("--window auto: an RGB light needs the strength of its worst channel, no more") {
+    // Each channel alone (copied into all three) gives its own least strength; the RGB light's
+    // must be their maximum. A search that read one channel would find the wrong one and lean
+    // on the safety check, which overshoots.
+    Pcg32 rng(23, 2);
+    for (int lmax : {2, 8}) {
+      const ShRgb c = SunLight(lmax, RandomDirection(rng), 3000.0, 1.0);
+      double worst = 0.0;
+      for (int ch = 0; ch < 3; ++ch) {
+        ShRgb mono = c;
+        for (auto& v : mono) v = glm::dvec3(v[ch]);
+        worst = std::max(worst, ChooseAutoWindow(mono).t);
+      }
+      const AutoWindow a = ChooseAutoWindow(c);
+      INFO("lmax " << lmax << ": rgb " << a.t << ", worst channel " << worst);
+      CHECK(a.t == doctest::Approx(worst).epsilon(1e-5));
+    }
+  }
 }
