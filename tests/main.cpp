@@ -2,7 +2,7 @@
 // about the tests that need ../shared/data (those decorated with test::NeedsSharedData()):
 //
 // - Skipped, never passed. Without the data they carry doctest's skip decorator, so a whole run
-//   counts them as skipped. CTest runs each test case as its own process (tests/CMakeLists.txt);
+//   counts them as skipped. CTest runs each test case as its own process (the top-level CMakeLists.txt);
 //   a run whose filter selects only such skipped cases exits with kSkipExit, which CTest reports
 //   as "Skipped". Listing always names every case, so CTest knows them whether or not the data
 //   is there.
@@ -22,7 +22,7 @@
 
 namespace {
 
-/// The exit status CTest takes for "skipped" (SKIP_RETURN_CODE in tests/CMakeLists.txt).
+/// The exit status CTest takes for "skipped" (SKIP_RETURN_CODE in the top-level CMakeLists.txt).
 constexpr int kSkipExit = 77;
 
 /// Counts the test cases that start, and the ones a count query selects.

@@ -126,17 +126,22 @@ double Args::Double(const std::string& name, double fallback, double lo, double 
 std::optional<glm::dvec3> Args::Vec3(const std::string& name) {
   const auto text = String(name);
   if (!text) return std::nullopt;
+  const auto v = ParseVec3(*text);
+  if (!v) Fail(name + ": '" + *text + "' is not three numbers (expected X,Y,Z)");
+  return v;
+}
+
+std::optional<glm::dvec3> ParseVec3(const std::string& text) {
   glm::dvec3 out(0.0);
-  std::stringstream ss(*text);
-  std::string part;
-  int n = 0;
-  while (std::getline(ss, part, ',')) {
-    const auto v = ParseNumber(part);
-    if (!v || n >= 3) n = 4;  // marks failure
-    if (n < 3) out[n] = *v;
-    ++n;
+  std::size_t start = 0;
+  for (int i = 0; i < 3; ++i) {
+    const std::size_t comma = text.find(',', start);
+    if ((i < 2) != (comma != std::string::npos)) return std::nullopt;  // two commas, exactly
+    const auto v = ParseNumber(text.substr(start, i < 2 ? comma - start : std::string::npos));
+    if (!v) return std::nullopt;
+    out[i] = *v;
+    start = comma + 1;
   }
-  if (n != 3 || text->back() == ',') Fail(name + ": '" + *text + "' is not three numbers (expected X,Y,Z)");
   return out;
 }
 

@@ -82,6 +82,9 @@ class Args {
   bool positionals_taken_ = false;
 };
 
+/// "X,Y,Z": exactly three finite numbers (ParseNumber) between two commas, or nullopt.
+std::optional<glm::dvec3> ParseVec3(const std::string& text);
+
 /// Parses a finite number in decimal notation (an exponent is fine: 1e6), or returns nullopt
 /// (hexadecimal, blanks, inf and nan are not numbers here).
 std::optional<double> ParseNumber(const std::string& text);

@@ -27,24 +27,20 @@ Turn ReadTurn(Args& args, const std::string& text) {
   const std::string expected = " (expected X,Y,Z:DEGREES, an axis and a right-handed angle, such as 0,0,1:90)";
   const auto colon = text.find(':');
   if (colon == std::string::npos) args.Fail("--rotate: '" + text + "' has no ':DEGREES'" + expected);
-  std::vector<double> v;
-  std::size_t start = 0;
-  const std::string axis_text = text.substr(0, colon);
-  for (;;) {
-    const auto comma = axis_text.find(',', start);
-    const auto number = ParseNumber(axis_text.substr(start, comma == std::string::npos ? comma : comma - start));
-    if (!number) args.Fail("--rotate: '" + text + "': the axis is not three numbers" + expected);
-    v.push_back(*number);
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  if (v.size() != 3) args.Fail("--rotate: '" + text + "': the axis is not three numbers" + expected);
+  const auto axis = ParseVec3(text.substr(0, colon));
+  if (!axis) args.Fail("--rotate: '" + text + "': the axis is not three numbers" + expected);
   const auto degrees = ParseNumber(text.substr(colon + 1));
   if (!degrees) args.Fail("--rotate: '" + text + "': the angle is not a number" + expected);
-  const glm::dvec3 axis(v[0], v[1], v[2]);
-  if (!(glm::length(axis) > 1e-300) || !std::isfinite(glm::length(axis)))
+  if (!(glm::length(*axis) > 1e-300) || !std::isfinite(glm::length(*axis)))
     args.Fail("--rotate: '" + text + "': the axis is zero" + expected);
-  return {axis, *degrees};
+  return {*axis, *degrees};
+}
+
+/// `light` stores no per-vertex transport: it goes as far as the basis and rotation are exact.
+SceneOptions LightDefaults() {
+  SceneOptions d;
+  d.max_lmax = kMaxBasisLmax;
+  return d;
 }
 
 }  // namespace
@@ -53,7 +49,7 @@ CommandSpec LightSpec() {
   return {"prt light [--env ENV] [--lmax L] [--rotate X,Y,Z:DEGREES] [options]",
           "Prints the environment's SH coefficients to stdout: (L+1)^2 lines `R G B` (the course's light.txt "
           "format, 9 significant digits), nothing else. The run summary goes to stderr.",
-          {SceneOptionGroup(SceneOptions{}, LightOptionNames(), "light options"),
+          {SceneOptionGroup(LightDefaults(), LightOptionNames(), "light options"),
            {"other options",
             {{"--rotate", "X,Y,Z:DEGREES",
               "print the light turned by DEGREES, right-handed, about the axis X,Y,Z: light that came from "
@@ -65,7 +61,7 @@ CommandSpec LightSpec() {
 
 int RunLight(const std::vector<std::string>& tokens) {
   Args args("light", tokens, LightSpec());
-  const SceneOptions options = ReadSceneOptions(args);
+  const SceneOptions options = ReadSceneOptions(args, LightDefaults());
   std::optional<Turn> turn;
   if (const auto text = args.String("--rotate")) turn = ReadTurn(args, *text);
   if (options.window == "auto" && options.lmax > kMaxAutoWindowLmax)

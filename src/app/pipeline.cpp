@@ -62,7 +62,7 @@ ShRgb ComputeLight(const Environment& env, const SceneOptions& options) {
     ApplyWeights(choice.weights, light);
     line += "; window auto: " + choice.Describe() + Formatted(" [%.3f s]", SecondsSince(t1));
   } else if (options.window != "none") {
-    ApplyWindow(options.window == "hann" ? Window::kHann : Window::kLanczos, light);
+    ApplyWindow(WindowFromName(options.window), light);
     line += "; window " + options.window;
   }
   Summary(line);

@@ -31,9 +31,8 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
        "equirectangular .hdr/.exr/.png/.jpg file, or a built-in: furnace[:C] (constant radiance C, default 1) "
        "or sky[:sun=3,elevation=40,azimuth=35,radius=2] (an HDR sky with a sun disk)",
        d.env});
-  add({"--lmax", "L", "highest SH band, 0.." + std::to_string(kMaxLmax) + " (prt light: 0.." +
-                          std::to_string(kMaxBasisLmax) +
-                          "): (L+1)^2 coefficients; `auto`: the smallest whose irradiance error is within --tolerance",
+  add({"--lmax", "L", "highest SH band, 0.." + std::to_string(d.max_lmax) +
+                          ": (L+1)^2 coefficients; `auto`: the smallest whose irradiance error is within --tolerance",
        std::to_string(d.lmax) + ", " + std::to_string(CoeffCount(d.lmax)) + " coefficients"});
   add({"--tolerance", "X", "relative irradiance error that --lmax auto must reach, 1e-12..1", Formatted("%g", double(d.tolerance))});
   add({"--transport", "MODE",
@@ -42,9 +41,9 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
        d.transport});
   add({"--samples", "N",
        "ray directions per vertex, 1..16777216; fewer than the sample rule's minimum for --lmax and --sampler "
-       "(fibonacci: 2 (L+1)^2, rounded up to a power of two) is warned about",
+       "is warned about (" + SampleRuleText(Sampler::kFibonacci) + ")",
        d.samples ? std::to_string(d.samples)
-                 : "follows --lmax and --sampler: max(1024, 8 x the minimum), e.g. fibonacci " +
+                 : "follows --lmax and --sampler, e.g. fibonacci " +
                        std::to_string(DefaultSamples(2, Sampler::kFibonacci)) + " at lmax 2, " +
                        std::to_string(DefaultSamples(15, Sampler::kFibonacci)) + " at lmax 15"});
   add({"--sampler", "NAME", "fibonacci (spherical Fibonacci) | stratified (the course's jittered grid) | uniform",
@@ -109,7 +108,7 @@ void CheckInputs(Args& args, const SceneOptions& o) {
 /// below the rule's minimum and the transport casts rays (unshadowed is closed form).
 void ResolveSamples(Args& args, SceneOptions& o) {
   const Sampler sampler = SamplerFromName(o.sampler);
-  const bool given = args.Accepts("--samples") && args.String("--samples").has_value();
+  const bool given = args.Has("--samples");
   if (!given && o.samples == 0) {
     o.samples = DefaultSamples(o.lmax, sampler);
     o.samples_from_rule = true;
@@ -156,11 +155,9 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
     if (text == "auto") {
       o.lmax_auto = true;
     } else {
-      // Printing coefficients needs no per-vertex storage: `light` goes as far as the basis is exact.
-      const int top = args.command() == "light" ? kMaxBasisLmax : kMaxLmax;
       const auto v = ParseNumber(text);
-      if (!v || *v != std::floor(*v) || *v < 0 || *v > top)
-        args.Fail("--lmax: " + NumberProblem(text, true, "an integer from 0 to " + std::to_string(top) + ", or auto"));
+      if (!v || *v != std::floor(*v) || *v < 0 || *v > d.max_lmax)
+        args.Fail("--lmax: " + NumberProblem(text, true, "an integer from 0 to " + std::to_string(d.max_lmax) + ", or auto"));
       o.lmax = static_cast<int>(*v);
     }
   }

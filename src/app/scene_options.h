@@ -14,6 +14,7 @@
 
 #include "app/args.h"
 #include "env/cube_faces.h"
+#include "sh/coeffs.h"
 
 namespace prt {
 
@@ -21,6 +22,9 @@ struct SceneOptions {
   std::string mesh;                  ///< OBJ path; empty = the embedded demo scene
   std::string env = "sky";           ///< cubemap folder, image file, or built-in name
   int lmax = 2;                      ///< highest SH band
+  /// The highest --lmax the command accepts: kMaxLmax where per-vertex transport is stored,
+  /// kMaxBasisLmax for `prt light`, which only prints coefficients.
+  int max_lmax = kMaxLmax;
   std::string transport = "shadowed";  ///< unshadowed | shadowed | interreflection
   /// Directions per vertex; 0: the sample rule's default for lmax and sampler
   /// (precompute/sample_rule.h), which ReadSceneOptions puts here.

@@ -64,7 +64,7 @@ void Progress::Draw(std::size_t done) {
   const int width = 30, filled = static_cast<int>(f * width);
   std::string bar(filled, '#');
   bar.resize(width, '.');
-  const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double elapsed = SecondsSince(start_);
   const std::string left = TimeLeft(f, elapsed);
   std::fprintf(stderr, "\r%s [%s] %3.0f%%%s%s\033[K", label_.c_str(), bar.c_str(), 100.0 * f, left.empty() ? "" : "  ",
                left.c_str());

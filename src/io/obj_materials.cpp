@@ -17,7 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// "0.8", not "0.800000".
 // "a", "a or b", "a, b or c" (with `last` = " or ").
 std::string Join(const std::vector<std::string>& items, const char* last) {
   std::string out;
@@ -81,7 +80,7 @@ void WarnMissingMaterials(const std::string& path, const std::map<std::string, s
   if (!libraries.read().empty()) where = " in " + Join(libraries.read(), " or ");
   if (!libraries.unread().empty()) where += (where.empty() ? ": " : ", and ") + Join(libraries.unread(), " and ");
   if (libraries.read().empty() && libraries.unread().empty()) where = ": the file names no material library (mtllib)";
-  const std::string albedo = "the default albedo " + Formatted("%g", double(kDefaultAlbedo));
+  const std::string albedo = "the default albedo " + ShortestFloat(kDefaultAlbedo);
   for (const auto& [name, faces] : faces_by_material) {
     if (defined.count(name)) {
       if (used_before_definition.count(name))

@@ -7,11 +7,6 @@
 namespace prt {
 namespace {
 
-/// The default never goes below the count prt has always used at its default lmax of 2.
-constexpr int kDefaultFloor = 1024;
-/// Safety factor of the default over the minimum (sample_rule.h says why 8).
-constexpr int kDefaultMargin = 8;
-
 int PowerOfTwoAtLeast(long long n) {
   int p = 1;
   while (p < n) p *= 2;
@@ -40,7 +35,8 @@ int DefaultSamples(int lmax, Sampler sampler) {
 
 std::string SampleRuleText(Sampler sampler) {
   return std::string(SamplerName(sampler)) + " needs " + std::to_string(SamplesPerCoefficient(sampler)) +
-         " (L+1)^2 rounded up to a power of two, the default is 8 times that, at least 1024";
+         " (L+1)^2 rounded up to a power of two, the default is " + std::to_string(kDefaultMargin) +
+         " times that, at least " + std::to_string(kDefaultFloor);
 }
 
 }  // namespace prt

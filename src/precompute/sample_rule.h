@@ -31,9 +31,9 @@
 ///
 /// The factor 8 of the default: at equal RMS, per-vertex noise is far more visible than the
 /// smooth truncation error. The demo scene at lmax 15 (480x360) shows blotches in the sun's
-/// shadow with 1024 fibonacci directions, although their sampling error (2.1%) is under half the
-/// truncation error (4.8%); fainter ones with 2048 (1.1%); none to see with 4096 (0.7%), which
-/// is 8 times the minimum of 512. Eight times the minimum cuts the sampling error by
+/// shadow with 1024 fibonacci directions, fainter ones with 2048 and none to see with 4096,
+/// which is 8 times the minimum of 512; yet on the report scene the sampling error of 1024 is
+/// already under half the truncation error (2.1% against 4.8%; 1.1% at 2048, 0.7% at 4096). Eight times the minimum cuts the sampling error by
 /// 8^0.77 = 5 for fibonacci (measured slope -0.77 against directions) and by 2.8 for uniform.
 /// The floor of 1024 keeps the low bands where they were: the default is 1024 up to lmax 4 for
 /// stratified and up to lmax 7 for fibonacci (the default sampler); uniform, the baseline the
@@ -52,6 +52,11 @@
 #include "precompute/samplers.h"
 
 namespace prt {
+
+/// The default never goes below the count prt has always used at its default lmax of 2.
+constexpr int kDefaultFloor = 1024;
+/// Safety factor of the default over the minimum (above: why 8).
+constexpr int kDefaultMargin = 8;
 
 /// Directions per coefficient at which the sampling error met the truncation error (above).
 int SamplesPerCoefficient(Sampler sampler);

@@ -5,19 +5,13 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/log.h"
 #include "core/parallel.h"
 #include "precompute/transport_steps.h"
 #include "sh/basis.h"
 #include "sh/zonal.h"
 
 namespace prt {
-namespace {
-
-double Since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-}  // namespace
 
 TransportMode TransportModeFromName(const std::string& name) {
   if (name == "unshadowed") return TransportMode::kUnshadowed;
@@ -68,14 +62,14 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
       }
     });
     r.closed_form_vertices = transport.vertices;
-    r.direct_seconds = Since(t0);
+    r.direct_seconds = SecondsSince(t0);
     return transport;
   }
 
   auto t0 = std::chrono::steady_clock::now();
   const Bvh bvh = Bvh::Build(mesh);
   r.bvh_built = true;
-  r.bvh_seconds = Since(t0);
+  r.bvh_seconds = SecondsSince(t0);
 
   t0 = std::chrono::steady_clock::now();
   const DirectionPool pool =
@@ -85,7 +79,7 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
   DirectResult direct = ComputeDirect(mesh, bvh, pool, options.lmax, keep_hits);
   r.rays = direct.rays;
   r.closed_form_vertices = direct.closed_form_vertices;
-  r.direct_seconds = Since(t0);
+  r.direct_seconds = SecondsSince(t0);
 
   if (!keep_hits) {
     transport.coeffs.resize(direct.transfer.size());
@@ -95,7 +89,7 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
 
   t0 = std::chrono::steady_clock::now();
   BounceResult bounced = AddBounces(mesh, pool, direct, options, r);
-  r.bounce_seconds = Since(t0);
+  r.bounce_seconds = SecondsSince(t0);
   transport.channels = bounced.channels;
   transport.coeffs.resize(bounced.transfer.size());
   for (std::size_t i = 0; i < bounced.transfer.size(); ++i) transport.coeffs[i] = static_cast<float>(bounced.transfer[i]);

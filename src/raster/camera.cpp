@@ -122,20 +122,6 @@ Camera FitClipPlanes(Camera camera, const glm::vec3& min, const glm::vec3& max) 
   return camera;
 }
 
-Camera FitClipPlanes(Camera camera, const std::vector<glm::vec3>& points) {
-  if (points.empty()) return camera;
-  const glm::dvec3 f = glm::normalize(glm::dvec3(camera.target) - glm::dvec3(camera.eye));
-  double nearest = std::numeric_limits<double>::infinity(), farthest = -nearest;
-  for (const glm::vec3& p : points) {
-    const double d = glm::dot(glm::dvec3(p) - glm::dvec3(camera.eye), f);
-    nearest = std::min(nearest, d), farthest = std::max(farthest, d);
-  }
-  const double size = Size(points);
-  camera.near_plane = static_cast<float>(std::max(0.5 * nearest, 1e-3 * size));
-  camera.far_plane = std::max(static_cast<float>(farthest + size), 2.f * camera.near_plane);
-  return camera;
-}
-
 Camera FrameBounds(const glm::vec3& min, const glm::vec3& max, float aspect) {
   Camera c;
   const glm::vec3 centre = 0.5f * (min + max);
@@ -194,7 +180,9 @@ Camera FramePoints(const std::vector<glm::vec3>& points, float aspect, float fov
   const glm::dvec3 eye = x_e * s + y_e * u + z_e * f;
   camera.eye = glm::vec3(eye);
   camera.target = glm::vec3(eye + (z_sum / double(n) - z_e) * f);
-  return FitClipPlanes(camera, pts);
+  glm::vec3 lo = pts[0], hi = pts[0];
+  for (const glm::vec3& p : pts) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  return FitClipPlanes(camera, lo, hi);
 }
 
 std::string CameraArgs(const Camera& c) {

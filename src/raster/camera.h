@@ -84,12 +84,6 @@ glm::vec3 ViewDirection(const Camera& camera, float aspect, float ndc_x, float n
 /// automatically framed one, so a printed camera reproduces the same image.
 Camera FitClipPlanes(Camera camera, const glm::vec3& min, const glm::vec3& max);
 
-/// Sets near_plane and far_plane from the points themselves: near is half the nearest point's
-/// depth, never below 1e-3 of the points' bounding-box diagonal (1 for a single point); far is
-/// the farthest depth plus that diagonal. Same determinism as the box version. An empty set
-/// keeps the camera's planes.
-Camera FitClipPlanes(Camera camera, const std::vector<glm::vec3>& points);
-
 /// A pleasant 3/4 view of the box [min, max]: from the front-right (+Z, +X) and 20 degrees above,
 /// looking at the box centre, far enough that the box's bounding sphere fits the view with a 5%
 /// margin at the given aspect (width / height). Clip planes fitted with FitClipPlanes. Wasteful
@@ -105,7 +99,8 @@ constexpr float kFrameMargin = 0.05f;
 /// the horizon, up = world +Y, vertical field of view fov_deg) placed so that the points'
 /// projection fills the frame exactly, up to kFrameMargin, on the tighter of the two axes, and is
 /// centred on both (the closed form above). The target lies on the view axis at the depth of the
-/// points' centroid; clip planes come from FitClipPlanes(points).
+/// points' centroid; clip planes come from FitClipPlanes on the points' bounding box, as for a
+/// camera given on the command line.
 /// Deterministic. Degenerate sets (empty, one point, all equal, a segment along the view axis)
 /// get a finite camera that stands at least 5% of the set's size (1 when it has none) before the
 /// nearest point. Preconditions: aspect > 0, fov_deg in (0, 180).

@@ -24,12 +24,11 @@ AxisRotation::AxisRotation(const glm::dvec3& axis, int lmax)
     : axis_(glm::normalize(axis)),
       polar_(std::abs(axis_.x) < 1e-15 && std::abs(axis_.y) < 1e-15),
       sign_(axis_.z < 0 ? -1.0 : 1.0),
-      to_pole_(ToPole(axis_), polar_ ? 0 : lmax),
-      from_pole_(glm::transpose(ToPole(axis_)), polar_ ? 0 : lmax) {}
+      to_pole_(ToPole(axis_), polar_ ? 0 : lmax) {}
 
 ShRgb AxisRotation::Rotate(const ShRgb& coeffs, double angle) const {
   if (polar_) return RotateAboutZ(coeffs, sign_ * angle);
-  return from_pole_.Apply(RotateAboutZ(to_pole_.Apply(coeffs), angle));
+  return to_pole_.Apply(RotateAboutZ(to_pole_.Apply(coeffs), angle), /*transposed=*/true);
 }
 
 std::string AxisRotation::Describe() const {

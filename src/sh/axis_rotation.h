@@ -7,7 +7,7 @@
 /// +Z by a fixed rotation Q (Q k = +Z), so that
 ///     R_k(a) = Q^T R_z(a) Q   and   D(R_k(a)) = D(Q)^T D(R_z(a)) D(Q):
 /// the band matrices of Q are built once, and each frame applies D(Q), the cheap polar turn,
-/// and D(Q)^T. Every frame is built from its absolute angle, never by accumulating per-frame
+/// and D(Q)^T (the same matrices, transposed). Every frame is built from its absolute angle, never by accumulating per-frame
 /// steps, so frame 36000 is as exact as frame 1.
 
 #include <string>
@@ -35,8 +35,7 @@ class AxisRotation {
   glm::dvec3 axis_;
   bool polar_;
   double sign_;        ///< +1 for +Z, -1 for -Z (polar case)
-  ShRotation to_pole_;  ///< D(Q)
-  ShRotation from_pole_;  ///< D(Q)^T = D(Q^T)
+  ShRotation to_pole_;  ///< D(Q); D(Q)^T turns back
 };
 
 }  // namespace prt

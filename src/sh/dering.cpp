@@ -12,6 +12,7 @@
 #include "sh/basis.h"
 #include "sh/nonnegative_kernel.h"
 #include "sh/quadrature.h"
+#include "sh/window.h"
 #include "sh/zonal.h"
 
 namespace prt {
@@ -116,12 +117,13 @@ Sampled Sample(const Field& field) {
 /// max over the sphere of score(Pair): the grid's best, refined from the kStarts best points.
 template <class Score>
 double Maximum(const Field& field, const Sampled& s, const Score& score) {
+  std::vector<double> scores(s.values.size());
+  for (std::size_t i = 0; i < scores.size(); ++i) scores[i] = score(s.values[i]);
   std::vector<std::size_t> order(s.dirs.size());
   std::iota(order.begin(), order.end(), 0);
   const std::size_t starts = std::min<std::size_t>(kStarts, order.size());
   std::partial_sort(order.begin(), order.begin() + starts, order.end(), [&](std::size_t i, std::size_t j) {
-    const double si = score(s.values[i]), sj = score(s.values[j]);
-    return si > sj || (si == sj && i < j);
+    return scores[i] > scores[j] || (scores[i] == scores[j] && i < j);
   });
   std::vector<double> found(starts);
   ParallelFor(starts, 1, [&](std::size_t begin, std::size_t end) {
@@ -146,12 +148,6 @@ double IrradianceCost(const ShRgb& c, const std::vector<double>& w) {
 }
 
 }  // namespace
-
-void ApplyWeights(const std::vector<double>& weights, ShRgb& coeffs) {
-  const int lmax = LmaxOfCount(coeffs.size());
-  for (int l = 0; l <= lmax; ++l)
-    for (int k = l * l; k < (l + 1) * (l + 1); ++k) coeffs[k] *= weights[l];
-}
 
 AutoWindow ChooseAutoWindow(const ShRgb& coeffs) {
   const int lmax = LmaxOfCount(coeffs.size());

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "sh/coeffs.h"
+#include "sh/window.h"
 
 namespace prt {
 
@@ -39,7 +40,7 @@ constexpr int kMaxAutoWindowLmax = 64;
 
 struct AutoWindow {
   double t = 0;                  ///< strength in the family above; 0 = no window
-  std::vector<double> weights;   ///< w_0..w_lmax
+  std::vector<double> weights;   ///< w_0..w_lmax (ApplyWeights, sh/window.h)
   double min_before = 0;         ///< lowest reconstructed radiance, any channel, no window
   double min_after = 0;          ///< the same with the window
   double peak = 0;               ///< highest reconstructed radiance without a window
@@ -50,9 +51,6 @@ struct AutoWindow {
 
 /// The window above for `coeffs` (bands 0..lmax, 0 <= lmax <= kMaxAutoWindowLmax).
 AutoWindow ChooseAutoWindow(const ShRgb& coeffs);
-
-/// Multiplies each band l of `coeffs` by weights[l].
-void ApplyWeights(const std::vector<double>& weights, ShRgb& coeffs);
 
 /// Lowest value of any channel of sum_k c_k Y_k over the sphere: the grid and compass search
 /// above. Stands apart from ChooseAutoWindow's own pass for reports.

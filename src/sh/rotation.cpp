@@ -15,16 +15,6 @@ namespace {
 
 constexpr double kSqrt2 = 1.41421356237309504880;
 
-glm::dmat3 Rz(double a) {
-  const double c = std::cos(a), s = std::sin(a);
-  return glm::dmat3(c, s, 0, -s, c, 0, 0, 0, 1);  // glm: column by column
-}
-
-glm::dmat3 Ry(double b) {
-  const double c = std::cos(b), s = std::sin(b);
-  return glm::dmat3(c, 0, -s, 0, 1, 0, s, 0, c);
-}
-
 struct Zyz {
   double alpha, beta, gamma;
 };
@@ -37,16 +27,24 @@ Zyz ZyzAngles(const glm::dmat3& R) {
   Zyz e{};
   e.beta = std::atan2(std::hypot(M(0, 2), M(1, 2)), M(2, 2));
   e.alpha = std::atan2(M(1, 2), M(0, 2));
-  const glm::dmat3 rest = glm::transpose(Rz(e.alpha) * Ry(e.beta)) * R;
+  const glm::dmat3 rest = glm::transpose(AxisAngle({0, 0, 1}, e.alpha) * AxisAngle({0, 1, 0}, e.beta)) * R;
   e.gamma = std::atan2(rest[0][1], rest[0][0]);
   return e;
 }
 
+/// cos(m a) and sin(m a) for m = 0..lmax.
+struct Turn {
+  std::vector<double> c, s;
+  Turn(double a, int lmax) : c(lmax + 1), s(lmax + 1) {
+    for (int m = 0; m <= lmax; ++m) c[m] = std::cos(m * a), s[m] = std::sin(m * a);
+  }
+};
+
 /// D := Z(a) D for band l, Z(a) = D_l(Rz(a)): rows m and -m mix by cos(m a), sin(m a).
-void TurnRows(std::vector<double>& D, int l, double a) {
+void TurnRows(std::vector<double>& D, int l, const Turn& a) {
   const int n = 2 * l + 1;
   for (int m = 1; m <= l; ++m) {
-    const double c = std::cos(m * a), s = std::sin(m * a);
+    const double c = a.c[m], s = a.s[m];
     double* top = &D[(l + m) * n];
     double* bottom = &D[(l - m) * n];
     for (int j = 0; j < n; ++j) {
@@ -58,10 +56,10 @@ void TurnRows(std::vector<double>& D, int l, double a) {
 }
 
 /// D := D Z(a) for band l.
-void TurnColumns(std::vector<double>& D, int l, double a) {
+void TurnColumns(std::vector<double>& D, int l, const Turn& a) {
   const int n = 2 * l + 1;
   for (int m = 1; m <= l; ++m) {
-    const double c = std::cos(m * a), s = std::sin(m * a);
+    const double c = a.c[m], s = a.s[m];
     for (int i = 0; i < n; ++i) {
       double& pos = D[i * n + l + m];
       double& neg = D[i * n + l - m];
@@ -85,7 +83,7 @@ std::vector<std::vector<double>> AboutY(double beta, int lmax) {
   for (int m = 0; m <= lmax; ++m) {
     for (int k = 0; k <= lmax; ++k) {
       WignerDRun(m, k, beta, lmax, plus.data());
-      WignerDRun(m, -k, beta, lmax, minus.data());
+      if (k > 0) WignerDRun(m, -k, beta, lmax, minus.data());  // k = 0 reads plus only
       const double sign = (k % 2 == 0) ? 1.0 : -1.0;
       for (int l = std::max(m, k); l <= lmax; ++l) {
         const int n = 2 * l + 1;
@@ -111,9 +109,10 @@ ShRotation::ShRotation(const glm::dmat3& R, int lmax) : lmax_(lmax) {
     throw Error(Formatted("SH rotation: lmax %d is outside 0..%d, the bands it is exact for", lmax, kMaxBasisLmax));
   const Zyz e = ZyzAngles(R);
   bands_ = AboutY(e.beta, lmax);
+  const Turn alpha(e.alpha, lmax), gamma(e.gamma, lmax);
   for (int l = 1; l <= lmax; ++l) {
-    TurnColumns(bands_[l], l, e.gamma);
-    TurnRows(bands_[l], l, e.alpha);
+    TurnColumns(bands_[l], l, gamma);
+    TurnRows(bands_[l], l, alpha);
   }
 }
 
@@ -129,15 +128,17 @@ void ShRotation::Apply(const double* in, double* out) const {
   }
 }
 
-ShRgb ShRotation::Apply(const ShRgb& in) const {
+ShRgb ShRotation::Apply(const ShRgb& in, bool transposed) const {
   const int lmax = LmaxOfCount(in.size());
   ShRgb out(in.size(), glm::dvec3(0.0));
   for (int l = 0; l <= lmax && l <= lmax_; ++l) {
     const int size = 2 * l + 1, base = l * l;
     const double* d = bands_[l].data();
+    // Entry (i, j) of D, or of D^T = D(R^T), the inverse rotation.
+    const int row_stride = transposed ? 1 : size, column_stride = transposed ? size : 1;
     for (int i = 0; i < size; ++i) {
       glm::dvec3 sum(0.0);
-      for (int j = 0; j < size; ++j) sum += d[i * size + j] * in[base + j];
+      for (int j = 0; j < size; ++j) sum += d[i * row_stride + j * column_stride] * in[base + j];
       out[base + i] = sum;
     }
   }

@@ -11,11 +11,14 @@
 /// where Z_l(a), the turn about the polar axis, only mixes each (m, -m) pair by cos(m a) and
 /// sin(m a) (exact: no recurrence at all), and Y_l(beta) is Wigner's small d-matrix
 /// (sh/wigner_d.h, a recurrence in l that stays stable at high order) taken to the real basis.
-/// Measured (tests/sh/test_rotation.cpp): max |D_l D_l^T - I| 1.1e-15 at lmax 64, 2.4e-15 at
-/// 100, 2e-14 at 200, and max |Y(R d) - D Y(d)| 1e-13 at 200, near-degenerate rotations
-/// (beta within 1e-9 of 0 or pi) included. The Ivanic–Ruedenberg recurrence on whole band
-/// matrices [1], used before, drifts from orthogonality as l grows (2.4e-11 at lmax 64, 5.7e-8
-/// at 100, useless by 200). Orders above kMaxBasisLmax are refused with an Error.
+/// Measured by `prt report --stability` (one seeded random rotation; above lmax 64 every 7th
+/// band and the last): max |D_l D_l^T - I| 1.1e-15 at lmax 64, 1.2e-15 at 100, 2.6e-15 at
+/// 200, and max |Y(R d) - D Y(d)| 2.3e-14, 5.0e-14, 1.0e-13; rotations within 1e-9 of beta = 0
+/// or pi reach 2e-14 in orthogonality at 200 (tests/sh/test_rotation.cpp, which bounds them all
+/// by 1e-12 and 1e-11). The Ivanic–Ruedenberg recurrence on whole band matrices [1], used
+/// before, drifts as l grows, by an amount that depends on the rotation: measured on the
+/// replaced code, 1e-12 to 8e-12 at lmax 64, 4e-10 to 2e-8 at 100, 5e-3 to 7e4 at 200. Orders
+/// above kMaxBasisLmax are refused with an Error.
 ///
 /// Rotations about the polar axis +Z need no matrices at all (RotateAboutZ).
 ///
@@ -37,7 +40,7 @@ namespace prt {
 class ShRotation {
  public:
   /// R must be a proper rotation (orthonormal, det +1); lmax outside 0..kMaxBasisLmax throws
-  /// Error. Costs O(lmax^3): 0.16 s at lmax 200.
+  /// Error. Costs O(lmax^3): 0.14 to 0.16 s at lmax 200 (AMD EPYC, one core).
   ShRotation(const glm::dmat3& R, int lmax);
 
   int lmax() const { return lmax_; }
@@ -46,8 +49,9 @@ class ShRotation {
 
   /// c' = D c for one coefficient vector of bands 0..lmax (in and out may not alias).
   void Apply(const double* in, double* out) const;
-  /// The same for RGB coefficients (their own lmax may be lower than lmax()).
-  ShRgb Apply(const ShRgb& in) const;
+  /// The same for RGB coefficients (their own lmax may be lower than lmax()); `transposed`
+  /// applies D^T = D(R^T), the inverse rotation, from the same matrices.
+  ShRgb Apply(const ShRgb& in, bool transposed = false) const;
 
  private:
   int lmax_;

@@ -1,14 +1,14 @@
 #pragma once
 /// \file
 /// The course's rotation method for bands 1 and 2, kept for teaching and cross-checked against
-/// the exact Ivanic–Ruedenberg matrices (tests/sh/test_rotation.cpp).
+/// the exact band matrices of sh/rotation.h (tests/sh/test_rotation.cpp).
 ///
 /// Band l is a (2l+1)-dimensional space closed under rotation, so D_l is fixed by its action on
 /// 2l+1 directions n_i whose basis vectors are linearly independent. Stack A = [Y_l(n_i)] and
 /// B = [Y_l(R n_i)] as columns: Y_l(R d) = D_l Y_l(d) at every n_i gives B = D_l A, so
 /// D_l = B A^-1. Exact whenever A is invertible; its accuracy follows A's condition number
 /// (1 for the course's band-1 directions, 2.74 for its band-2 ones). For high bands, good
-/// point sets get hard to find, which is why the program uses the recurrence.
+/// point sets get hard to find, which is why the program uses Wigner's d (sh/rotation.h).
 
 #include <vector>
 

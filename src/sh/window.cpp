@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "core/error.h"
+
 namespace prt {
 
 const char* WindowName(Window w) {
@@ -22,12 +24,23 @@ double WindowWeight(Window w, int l, int lmax) {
   }
 }
 
+Window WindowFromName(const std::string& name) {
+  for (Window w : {Window::kNone, Window::kHann, Window::kLanczos})
+    if (name == WindowName(w)) return w;
+  throw Error("window '" + name + "' is not one of none, hann, lanczos");
+}
+
+void ApplyWeights(const std::vector<double>& weights, ShRgb& coeffs) {
+  const int lmax = LmaxOfCount(coeffs.size());
+  for (int l = 0; l <= lmax; ++l)
+    for (int k = l * l; k < (l + 1) * (l + 1); ++k) coeffs[k] *= weights[l];
+}
+
 void ApplyWindow(Window w, ShRgb& coeffs) {
   const int lmax = LmaxOfCount(coeffs.size());
-  for (int l = 0; l <= lmax; ++l) {
-    const double weight = WindowWeight(w, l, lmax);
-    for (int k = l * l; k < (l + 1) * (l + 1); ++k) coeffs[k] *= weight;
-  }
+  std::vector<double> weights(lmax + 1);
+  for (int l = 0; l <= lmax; ++l) weights[l] = WindowWeight(w, l, lmax);
+  ApplyWeights(weights, coeffs);
 }
 
 }  // namespace prt

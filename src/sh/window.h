@@ -16,6 +16,7 @@
 /// [2] Hanson, "Stupid Spherical Harmonics" notes; Lanczos sigma factors (Lanczos 1956).
 
 #include <string>
+#include <vector>
 
 #include "sh/coeffs.h"
 
@@ -28,6 +29,12 @@ const char* WindowName(Window w);
 
 /// The weight w_l of band l for a truncation at lmax.
 double WindowWeight(Window w, int l, int lmax);
+
+/// "none", "hann" or "lanczos" as a Window; throws Error for any other name.
+Window WindowFromName(const std::string& name);
+
+/// Multiplies each band l of `coeffs` by weights[l] (weights of at least its bands).
+void ApplyWeights(const std::vector<double>& weights, ShRgb& coeffs);
 
 /// Multiplies each band of `coeffs` (of bands 0..lmax) by its weight.
 void ApplyWindow(Window w, ShRgb& coeffs);

@@ -7,13 +7,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
-#include "sh/basis.h"
+#include "io/light_txt.h"
 #include "sh/coeffs.h"
+#include "tests/sh/sh_test_util.h"
 #include "tests/test_support.h"
 
 using namespace prt;
@@ -25,22 +25,17 @@ constexpr double kPi = 3.14159265358979323846;
 // light.txt prints 9 significant digits: relative rounding 5e-9 a coefficient.
 constexpr double kPrintedTolerance = 2e-8;
 
-std::vector<glm::dvec3> Coefficients(const std::string& text) {
-  std::vector<glm::dvec3> out;
-  std::istringstream in(text);
-  glm::dvec3 v;
-  while (in >> v.x >> v.y >> v.z) out.push_back(v);
-  return out;
-}
+/// The printed light, read as light.txt is (a square count of finite `R G B` lines).
+ShRgb Coefficients(const std::string& text) { return ParseLightTxt(text, "stdout"); }
 
-std::vector<glm::dvec3> Light(const std::string& arguments) {
+ShRgb Light(const std::string& arguments) {
   const RunResult r = RunPrt("light --quiet " + arguments);
   REQUIRE_MESSAGE(r.exit_code == 0, r.err);
   return Coefficients(r.out);
 }
 
 /// Sum over the band's coefficients of squares, per channel.
-glm::dvec3 BandEnergy(const std::vector<glm::dvec3>& c, int l) {
+glm::dvec3 BandEnergy(const ShRgb& c, int l) {
   glm::dvec3 e(0.0);
   for (int k = l * l; k < (l + 1) * (l + 1); ++k) e += c[k] * c[k];
   return e;
@@ -113,21 +108,15 @@ TEST_SUITE("app") {
     CHECK(windowed.err.find("without a window") != std::string::npos);
     CHECK(windowed.err.find("with one") != std::string::npos);
     CHECK(windowed.err.find("of the irradiance") != std::string::npos);
-    auto lowest = [](const std::vector<glm::dvec3>& c) {
-      // 40,000 directions on a latitude-longitude grid, nodes offset from the poles.
-      std::vector<double> y(c.size());
-      double low = 1e300;
-      for (int i = 0; i < 200; ++i)
-        for (int j = 0; j < 200; ++j) {
-          const double z = 1.0 - 2.0 * (i + 0.5) / 200, phi = 2.0 * kPi * (j + 0.25) / 200;
-          const double s = std::sqrt(1.0 - z * z);
-          EvalBasis(8, {s * std::cos(phi), s * std::sin(phi), z}, y.data());
-          glm::dvec3 v(0.0);
-          for (std::size_t k = 0; k < c.size(); ++k) v += y[k] * c[k];
-          low = std::min({low, v.x, v.y, v.z});
-        }
-      return low;
-    };
+    // 40,000 directions on a latitude-longitude grid, nodes offset from the poles.
+    std::vector<glm::dvec3> grid;
+    for (int i = 0; i < 200; ++i)
+      for (int j = 0; j < 200; ++j) {
+        const double z = 1.0 - 2.0 * (i + 0.5) / 200, phi = 2.0 * kPi * (j + 0.25) / 200;
+        const double s = std::sqrt(1.0 - z * z);
+        grid.push_back({s * std::cos(phi), s * std::sin(phi), z});
+      }
+    auto lowest = [&grid](const ShRgb& c) { return test::LowestOver(c, grid); };
     const auto before = Coefficients(plain.out), after = Coefficients(windowed.out);
     REQUIRE(after.size() == std::size_t(CoeffCount(8)));
     CHECK(lowest(before) < 0);   // it rings unwindowed

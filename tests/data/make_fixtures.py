@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the binary and generated fixtures of tests/data/ (one per failure mode of issue 8).
+"""Writes the binary and generated fixtures of tests/data/ (one per failure mode of bad input).
 
 Run from anywhere: `python3 tests/data/make_fixtures.py`. Needs only the standard library; the
 output is byte-for-byte reproducible, so re-running it leaves `git status` clean. The fixtures

@@ -13,7 +13,7 @@ using namespace prt;
 
 namespace {
 constexpr double kFourPi = 4.0 * 3.14159265358979323846;
-// The bound: exact texel solid angles sum to 4 pi up to rounding.
+// Exact texel solid angles sum to 4 pi up to rounding.
 constexpr double kSolidAngleSumTolerance = 1e-12;
 
 /// A standard cube of size^2 faces whose texels hold their own (face, row, column).

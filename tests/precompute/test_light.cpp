@@ -14,9 +14,9 @@ using namespace prt;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// The bound for the furnace: exact to 1e-12 in double.
+// The furnace's bound: exact to 1e-12 in double.
 constexpr double kFurnaceTolerance = 1e-12;
-// The bound for a band-limited function on a 64^2-per-face cubemap.
+// The bound for a band-limited function on a 64^2-per-face cubemap.
 constexpr double kBandLimited64Tolerance = 2e-4;
 
 /// A band-limited test function: fixed random coefficients up to band 4, plus a constant that

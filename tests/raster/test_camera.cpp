@@ -199,11 +199,6 @@ TEST_SUITE("raster") {
     c = prt::FitClipPlanes(c, lo, hi);
     CHECK(c.near_plane > 0.f);
     CHECK_NOTHROW(prt::CheckCamera(c));
-    // The points version: half the nearest point's depth.
-    const std::vector<glm::vec3> points = {{0.f, 0.f, -4.f}, {1.f, 0.f, -10.f}};
-    c = prt::FitClipPlanes(c, points);
-    CHECK(c.near_plane == doctest::Approx(2.f));
-    CHECK(c.far_plane > 10.f);
   }
 
   TEST_CASE("CameraArgs prints the command-line syntax") {

@@ -6,19 +6,15 @@
 #include "core/rng.h"
 #include "sh/basis.h"
 #include "sh/quadrature.h"
+#include "tests/sh/sh_test_util.h"
 
 using namespace prt;
 
 namespace {
 
-glm::dvec3 RandomDirection(Pcg32& rng) {
-  const double z = 2.0 * rng.NextDouble() - 1.0;
-  const double phi = 2.0 * 3.14159265358979323846 * rng.NextDouble();
-  const double s = std::sqrt((1.0 - z) * (1.0 + z));
-  return {s * std::cos(phi), s * std::sin(phi), z};
-}
+using test::RandomDirection;
 
-// The bound: at most 1e-12 from the long-double reference for lmax <= 64.
+// The basis promise: at most 1e-12 from the long-double reference for lmax <= 64.
 constexpr double kReferenceTolerance = 1e-12;
 // Closed forms and recurrence are two double evaluations of the same polynomials: a few ulps.
 constexpr double kClosedFormTolerance = 1e-15;

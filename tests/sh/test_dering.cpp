@@ -14,6 +14,7 @@
 #include "sh/dering.h"
 #include "sh/nonnegative_kernel.h"
 #include "sh/zonal.h"
+#include "tests/sh/sh_test_util.h"
 
 using namespace prt;
 
@@ -21,26 +22,15 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-glm::dvec3 RandomDirection(Pcg32& rng) {
-  const double z = 2.0 * rng.NextDouble() - 1.0, phi = 2.0 * kPi * rng.NextDouble();
-  const double s = std::sqrt((1.0 - z) * (1.0 + z));
-  return {s * std::cos(phi), s * std::sin(phi), z};
-}
+using test::RandomDirection;
 
 /// Lowest channel of the reconstruction over `n` random directions: a scan independent of the
 /// grid-and-compass search under test.
 double RandomScanLowest(const ShRgb& c, int n, std::uint64_t seed) {
-  const int lmax = LmaxOfCount(c.size());
   Pcg32 rng(seed, 1);
-  std::vector<double> y(c.size());
-  double lowest = 1e300;
-  for (int i = 0; i < n; ++i) {
-    EvalBasis(lmax, RandomDirection(rng), y.data());
-    glm::dvec3 v(0.0);
-    for (std::size_t k = 0; k < c.size(); ++k) v += y[k] * c[k];
-    lowest = std::min({lowest, v.x, v.y, v.z});
-  }
-  return lowest;
+  std::vector<glm::dvec3> directions(n);
+  for (auto& d : directions) d = RandomDirection(rng);
+  return test::LowestOver(c, directions);
 }
 
 /// A sky-like light: a constant `floor` plus a sun of `sun` (the projection of a delta of that
@@ -68,12 +58,14 @@ TEST_SUITE("sh") {
       CHECK(KernelMinimumRatio(w) > -kRounding);
       for (int l = 1; l <= lmax; ++l) CHECK(w[l] <= w[l - 1] + kRounding);  // a low-pass window
     }
-    // Largest zeros in closed form: P_2: 1/sqrt(3); P_3: sqrt(3/5).
+    // Even lmax, largest zeros of Legendre polynomials in closed form: P_2: 1/sqrt(3); P_3: sqrt(3/5).
     CHECK(NonNegativeKernelWeights(2)[1] == doctest::Approx(1.0 / std::sqrt(3.0)).epsilon(1e-13));
     CHECK(NonNegativeKernelWeights(4)[1] == doctest::Approx(std::sqrt(0.6)).epsilon(1e-13));
-    // Where the power of the cosine is sharper (lmax 1 and 3), it is taken: w_1 = lmax/(lmax+2).
+    // Odd lmax, of the polynomials orthogonal for the weight 1 + x, solved by hand from its
+    // moments: x - 1/3 (K = 1 + x, w_1 = 1/3) and x^2 - 0.4 x - 0.2 (w_1 = 0.2 + sqrt(0.24),
+    // sharper than the power of the cosine ((1 + x)/2)^3, whose w_1 is 0.6).
     CHECK(NonNegativeKernelWeights(1)[1] == doctest::Approx(1.0 / 3.0).epsilon(1e-13));
-    CHECK(NonNegativeKernelWeights(3)[1] == doctest::Approx(0.6).epsilon(1e-13));
+    CHECK(NonNegativeKernelWeights(3)[1] == doctest::Approx(0.2 + std::sqrt(0.24)).epsilon(1e-13));
     // Sharper than Hann, whose kernel is not even non-negative, from lmax 8 on.
     CHECK(NonNegativeKernelWeights(8)[1] > 0.9);
   }

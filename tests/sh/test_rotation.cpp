@@ -9,6 +9,7 @@
 #include "sh/rotation.h"
 #include "sh/rotation_course.h"
 #include "sh/wigner_d.h"
+#include "tests/sh/sh_test_util.h"
 #include "core/error.h"
 
 using namespace prt;
@@ -16,18 +17,13 @@ using namespace prt;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// The bound for orthogonality and Y(R d) = D Y(d), lmax <= 10.
+// The bound for orthogonality and Y(R d) = D Y(d) at lmax <= 10: rounding of a few products.
 constexpr double kRotationTolerance = 1e-13;
 // Rotate-then-project against project-then-rotate: exact quadrature on both sides, rounding
 // over a few thousand terms.
 constexpr double kCommuteTolerance = 1e-12;
 
-glm::dvec3 RandomDirection(Pcg32& rng) {
-  const double z = 2.0 * rng.NextDouble() - 1.0;
-  const double phi = 2.0 * kPi * rng.NextDouble();
-  const double s = std::sqrt((1.0 - z) * (1.0 + z));
-  return {s * std::cos(phi), s * std::sin(phi), z};
-}
+using test::RandomDirection;
 
 glm::dmat3 RandomRotation(Pcg32& rng) {
   return AxisAngle(RandomDirection(rng), 2.0 * kPi * rng.NextDouble());
@@ -36,8 +32,11 @@ glm::dmat3 RandomRotation(Pcg32& rng) {
 /// max |D_l D_l^T - I| over bands l = 0, step, 2 step, ... and the last (the check costs
 /// (2l+1)^3 a band: all 201 bands of lmax 200 would take seconds).
 double BandOrthogonalityError(const ShRotation& rot, int step = 1) {
+  std::vector<int> bands;
+  for (int l = 0; l <= rot.lmax(); l += step) bands.push_back(l);
+  if (bands.back() != rot.lmax()) bands.push_back(rot.lmax());
   double worst = 0.0;
-  for (int l = 0; l <= rot.lmax(); l = (l == rot.lmax() || l + step <= rot.lmax()) ? l + step : rot.lmax()) {
+  for (int l : bands) {
     const int n = 2 * l + 1;
     const auto& d = rot.Band(l);
     for (int i = 0; i < n; ++i)
