@@ -11,15 +11,6 @@
 
 namespace prt {
 
-std::optional<double> ParseNumber(const std::string& text) {
-  // Decimal notation only: strtod would also take hexadecimal (0x10), leading blanks, inf, nan.
-  if (text.empty() || text.find_first_not_of("0123456789+-.eE") != std::string::npos) return std::nullopt;
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (end != text.c_str() + text.size() || !std::isfinite(v)) return std::nullopt;
-  return v;
-}
-
 std::string NumberProblem(const std::string& text, bool integer, const std::string& expected) {
   const auto v = ParseNumber(text);
   std::string problem = "is out of range";

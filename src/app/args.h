@@ -17,6 +17,7 @@
 #include <glm/vec3.hpp>
 
 #include "app/option_table.h"
+#include "core/text.h"  // ParseNumber
 
 namespace prt {
 
@@ -84,10 +85,6 @@ class Args {
 
 /// "X,Y,Z": exactly three finite numbers (ParseNumber) between two commas, or nullopt.
 std::optional<glm::dvec3> ParseVec3(const std::string& text);
-
-/// Parses a finite number in decimal notation (an exponent is fine: 1e6), or returns nullopt
-/// (hexadecimal, blanks, inf and nan are not numbers here).
-std::optional<double> ParseNumber(const std::string& text);
 
 /// "'<text>' is not a number", "... is not an integer" or "... is out of range", followed by
 /// " (expected <expected>)": the message for a numeric value that was refused (not a finite

@@ -2,6 +2,7 @@
 /// \file
 /// Numbers as text for messages, help and the run summary.
 
+#include <optional>
 #include <string>
 
 namespace prt {
@@ -12,5 +13,9 @@ std::string Formatted(const char* format, ...) __attribute__((format(printf, 1, 
 /// The shortest decimal (at most 9 significant digits) that reads back as exactly `v`: 3.2, not
 /// 3.20000005; integers up to 9 digits in full (40, not 4e+01).
 std::string ShortestFloat(float v);
+
+/// Parses a finite number in decimal notation (an exponent is fine: 1e6), or returns nullopt
+/// (hexadecimal, blanks, inf and nan are not numbers here).
+std::optional<double> ParseNumber(const std::string& text);
 
 }  // namespace prt

@@ -1,0 +1,119 @@
+#include "material/lobe_transfer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "sh/basis.h"
+#include "sh/coeffs.h"
+#include "sh/quadrature.h"
+
+namespace prt {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+/// Gauss–Legendre nodes per theta piece and per arc beyond the arc's polynomial degree.
+constexpr int kThetaNodes = 24;
+constexpr int kArcExtraNodes = 16;
+/// Pieces next to a kink are graded geometrically by this ratio, this many times.
+constexpr double kGradeRatio = 0.25;
+constexpr int kGradeLevels = 4;
+
+struct Rule {
+  std::vector<double> x, w;  // on [-1, 1]
+};
+
+const Rule& GaussRule(int n) {
+  thread_local std::vector<Rule> rules;
+  if (rules.size() <= std::size_t(n)) rules.resize(n + 1);
+  Rule& r = rules[n];
+  if (r.x.empty()) GaussLegendre(n, r.x, r.w);
+  return r;
+}
+
+/// Any unit vector perpendicular to the unit vector r.
+glm::dvec3 Perpendicular(const glm::dvec3& r) {
+  const glm::dvec3 a = std::abs(r.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+  return glm::normalize(glm::cross(r, a));
+}
+
+/// The theta pieces: [0, end] split at the kinks (graded toward them) and every `width`.
+std::vector<double> ThetaBreaks(double end, double width, const std::vector<double>& kinks) {
+  std::vector<double> marks = {0.0, end};
+  for (double k : kinks) {
+    if (!(k > 0.0 && k < end)) continue;
+    marks.push_back(k);
+    double step = std::min(width, std::min(k, end - k));
+    for (int i = 0; i < kGradeLevels; ++i) {
+      step *= kGradeRatio;
+      if (k - step > 0.0) marks.push_back(k - step);
+      if (k + step < end) marks.push_back(k + step);
+    }
+  }
+  std::sort(marks.begin(), marks.end());
+  std::vector<double> breaks;
+  for (std::size_t i = 0; i + 1 < marks.size(); ++i) {
+    const double a = marks[i], b = marks[i + 1];
+    if (b <= a) continue;
+    const int pieces = std::max(1, int(std::ceil((b - a) / width)));
+    for (int j = 0; j < pieces; ++j) breaks.push_back(a + (b - a) * j / pieces);
+  }
+  breaks.push_back(end);
+  return breaks;
+}
+
+}  // namespace
+
+glm::dvec3 MirrorView(const glm::dvec3& n, const glm::dvec3& v) { return 2.0 * glm::dot(n, v) * n - v; }
+
+void LobeTransfer(const Lobe& lobe, const glm::dvec3& n, const glm::dvec3& r, int lmax, double* out) {
+  const int count = CoeffCount(lmax);
+  std::fill(out, out + count, 0.0);
+  const double cg = std::clamp(glm::dot(n, r), -1.0, 1.0);
+  const glm::dvec3 across = n - cg * r;
+  const double sg = glm::length(across);
+  const glm::dvec3 e1 = sg > 1e-12 ? across / sg : Perpendicular(r);
+  const glm::dvec3 e2 = glm::cross(r, e1);
+  const double g = std::acos(cg);
+  const double end = std::min(lobe.SupportAngle(), std::acos(lobe.MinMu()));
+  const std::vector<double> breaks = ThetaBreaks(end, lobe.Width(), {std::abs(kPi / 2 - g), kPi / 2 + g});
+
+  const Rule& theta_rule = GaussRule(kThetaNodes);
+  const Rule& arc_rule = GaussRule(lmax + kArcExtraNodes);
+  const int ring_points = lmax + 3;
+  std::vector<double> y(count);
+  for (std::size_t piece = 0; piece + 1 < breaks.size(); ++piece) {
+    const double t0 = breaks[piece], half = 0.5 * (breaks[piece + 1] - t0);
+    for (std::size_t i = 0; i < theta_rule.x.size(); ++i) {
+      const double theta = t0 + half * (theta_rule.x[i] + 1.0);
+      const double ct = std::cos(theta), st = std::sin(theta);
+      const double a = cg * ct, b = sg * st;
+      if (a + b <= 0.0) continue;  // the whole ring is below the horizon
+      const double ring_weight = half * theta_rule.w[i] * st * lobe.Value(ct);
+      if (ring_weight == 0.0) continue;
+      const bool whole = a - b >= 0.0;
+      const double alpha = whole ? kPi : std::acos(std::clamp(-a / b, -1.0, 1.0));
+      const int points = whole ? ring_points : int(arc_rule.x.size());
+      for (int j = 0; j < points; ++j) {
+        const double phi = whole ? 2.0 * kPi * j / points : alpha * arc_rule.x[j];
+        const double wphi = whole ? 2.0 * kPi / points : alpha * arc_rule.w[j];
+        const double c = a + b * std::cos(phi);
+        if (c <= 0.0) continue;
+        const glm::dvec3 s = ct * r + st * (std::cos(phi) * e1 + std::sin(phi) * e2);
+        EvalBasis(lmax, s, y.data());
+        const double f = ring_weight * wphi * c;
+        for (int k = 0; k < count; ++k) out[k] += f * y[k];
+      }
+    }
+  }
+}
+
+double LobeCosineIntegral(const Lobe& lobe, const glm::dvec3& n, const glm::dvec3& r) {
+  double t0 = 0.0;
+  LobeTransfer(lobe, n, r, 0, &t0);
+  return t0 * std::sqrt(4.0 * kPi);
+}
+
+}  // namespace prt

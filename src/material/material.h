@@ -1,0 +1,44 @@
+#pragma once
+/// \file
+/// The surface material of `--material` (CONVENTIONS: "Glossy transfer"):
+///
+///   diffuse      f(v, s) = albedo / pi
+///   phong:N,KS   f(v, s) = albedo / pi + KS (N+2)/(2 pi) max(0, r.s)^N,  r = reflect(-v, n)
+///
+/// v points from the surface to the eye, s toward the light, r is the mirror of v about the
+/// normal n. The outgoing radiance is B(v) = integral L(s) V(s) f(v, s) max(0, n.s) ds: the
+/// cosine stays in the integral for both terms. The lobe integrates to 1 against max(0, r.s)
+/// over the sphere, so at normal view (r = n) a white furnace gives exactly albedo + KS; at other
+/// views the horizon cuts the lobe and it gives less. albedo + KS <= 1 keeps energy.
+
+#include <string>
+
+#include "material/lobe.h"
+
+namespace prt {
+
+struct Material {
+  bool glossy = false;     ///< false: diffuse
+  Lobe lobe;               ///< the Phong lobe (glossy only)
+  double ks = 0.5;         ///< weight of the lobe (glossy only)
+
+  /// "diffuse" or "phong:N,KS", what --material takes.
+  std::string Name() const;
+};
+
+/// Exponent range of phong:N.
+constexpr int kMinPhongExponent = 1, kMaxPhongExponent = 1000;
+
+/// Parses `diffuse` or `phong:N[,KS]` (N an integer 1..1000, KS in [0, 1], default 0.5). Throws
+/// Error with the problem and what was expected when `text` is malformed.
+Material ParseMaterial(const std::string& text);
+
+/// Throws Error when albedo + KS exceeds 1 for the largest albedo channel `max_albedo` (the
+/// surface would reflect more than it receives); `where` names the albedo's origin.
+void CheckMaterialEnergy(const Material& material, double max_albedo, const std::string& where);
+
+/// The BRDF f(v, s) / albedo-free: the lobe's value KS h(r.s) (0 for diffuse), for r the
+/// mirrored view direction.
+double GlossyValue(const Material& material, double r_dot_s);
+
+}  // namespace prt
