@@ -39,6 +39,21 @@ void WarnIfMostlyBlocked(const Mesh& mesh, const Transport& transport, Transport
          "normals point outward");
 }
 
+/// The run-summary line of a glossy material's fixed-view transfer: what was done and why it is
+/// enough.
+std::string GlossyLine(const TransportOptions& o, const TransportReport& r) {
+  std::string line = "material: " + o.material.Name() +
+                     ", fixed camera: one view-dependent transfer vector per vertex toward the eye (exact for the "
+                     "band-limited light, the product of visibility, lobe and cosine not truncated; the camera does "
+                     "not move, so no transfer matrices are needed); the lobe's unshadowed transfer by quadrature";
+  if (o.mode != TransportMode::kUnshadowed)
+    line += " minus what " + std::to_string(r.lobe_samples) + " lobe rays per vertex find blocked (" +
+            std::to_string(r.lobe_rays) + " rays)";
+  if (o.mode == TransportMode::kInterreflection)
+    line += "; blocked lobe rays gather their hit points' light as diffuse surfaces (bounces up to B - 1 there)";
+  return line + Formatted(" [%.3f s]", r.glossy_seconds);
+}
+
 }  // namespace
 
 std::unique_ptr<Environment> LoadSceneEnvironment(const SceneOptions& options, OutputFolder* folder) {
@@ -81,8 +96,10 @@ void ReportAutoExposure(double ev, const std::string& what) {
           AutoExposureLimitNote(ev));
 }
 
-TransportOptions TransportOptionsOf(const SceneOptions& options) {
+TransportOptions TransportOptionsOf(const SceneOptions& options, const std::optional<glm::dvec3>& eye) {
   TransportOptions t;
+  t.material = options.material;
+  t.eye = eye;
   t.mode = TransportModeFromName(options.transport);
   t.lmax = options.lmax;
   t.samples = options.samples;
@@ -130,8 +147,11 @@ CachePlan PlanCache(const std::string& option, OutputFolder* folder) {
   return {given ? path : folder->OutputInPlace("transport.cache"), true};
 }
 
-Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, const CachePlan& cache) {
-  const TransportOptions topts = TransportOptionsOf(options);
+Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, const CachePlan& cache,
+                                const Camera* camera) {
+  std::optional<glm::dvec3> eye;
+  if (camera) eye = glm::dvec3(camera->eye);
+  const TransportOptions topts = TransportOptionsOf(options, eye);
   const std::uint64_t key = TransportKey(mesh, topts);
   std::string why;
   if (!cache.path.empty()) {
@@ -165,6 +185,7 @@ Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, c
     if (transport.channels == 3) bounces += "; coloured albedo: one transport vector per colour channel";
     Summary(bounces);
   }
+  if (topts.material.glossy) Summary(GlossyLine(topts, r));
   WarnIfMostlyBlocked(mesh, transport, topts.mode);
   if (!cache.path.empty() && cache.write) {
     if (why != "no cache yet") Summary("cache: " + cache.path + " ignored (" + why + "), recomputed");

@@ -13,6 +13,7 @@
 /// what it left out, and why) on the run summary.
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "app/render_frames.h"
@@ -52,8 +53,9 @@ Mesh LoadSceneMesh(const SceneOptions& options, OutputFolder* folder = nullptr);
 /// with an Error before splitting when it would make an unreasonable number of triangles).
 void ApplySceneEdits(Mesh& mesh, const SceneOptions& options);
 
-/// The transport options the scene options ask for.
-TransportOptions TransportOptionsOf(const SceneOptions& options);
+/// The transport options the scene options ask for; a glossy material's transfer is computed
+/// for the camera at `eye`.
+TransportOptions TransportOptionsOf(const SceneOptions& options, const std::optional<glm::dvec3>& eye = std::nullopt);
 
 /// Where the transport cache is read and written. The cache is an optimisation: a path that
 /// cannot be used is a warning (naming the cause) and the run goes on without it.
@@ -68,8 +70,10 @@ CachePlan PlanCache(const std::string& option, OutputFolder* folder);
 
 /// The transport of `mesh`: read from the cache when that file was made from the same mesh
 /// and options, else computed (and written there when the plan allows; a failed write is a
-/// warning). Warns when most vertices see no light at all (an inside-out or enclosed mesh).
-Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, const CachePlan& cache);
+/// warning). Warns when most vertices see no light at all (an inside-out or enclosed mesh). A
+/// glossy material gets its view-dependent transfer toward `camera`'s eye (required then).
+Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, const CachePlan& cache,
+                                const Camera* camera = nullptr);
 
 /// Ends a successful run's use of `folder` (OutputFolder::Finish): removes what an earlier run
 /// wrote there and this one did not, and says so on the run summary.

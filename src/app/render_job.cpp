@@ -44,7 +44,7 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
 
   const auto env = LoadSceneEnvironment(scene, &folder);
   const ShRgb light = ComputeLight(*env, scene);
-  const Transport transport = ComputeSceneTransport(mesh, scene, cache);
+  const Transport transport = ComputeSceneTransport(mesh, scene, cache, &camera);
   const AxisRotation rotation(render.axis, transport.lmax);
   Summary("rotation: " + rotation.Describe() + "; only the " + std::to_string(CoeffCount(transport.lmax)) +
           " coefficients the transport has are turned");

@@ -1,4 +1,5 @@
 // LoadSceneMesh (pipeline.h): the mesh of --mesh or the embedded scene, repaired and reported.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <limits>
@@ -85,6 +86,12 @@ Mesh LoadSceneMesh(const SceneOptions& options, OutputFolder* folder) {
 
 void ApplySceneEdits(Mesh& mesh, const SceneOptions& options) {
   if (options.albedo) SetUniformAlbedo(mesh, glm::vec3(*options.albedo));
+  if (options.material.glossy) {  // before any long work: the mesh's own albedo with KS
+    float brightest = 0.0f;
+    for (const glm::vec3& a : mesh.albedo) brightest = std::max({brightest, a.x, a.y, a.z});
+    CheckMaterialEnergy(options.material, brightest,
+                        options.albedo ? "--albedo" : options.mesh.empty() ? "the demo scene" : "the brightest Kd of " + options.mesh);
+  }
   if (options.max_edge > 0.0) SplitLongTriangles(mesh, options);
 }
 

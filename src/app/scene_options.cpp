@@ -54,6 +54,11 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
        "gives smooth, correlated error",
        std::to_string(d.direction_sets)});
   add({"--albedo", "R,G,B", "override the material colour, each channel in [0, 1]", albedo});
+  add({"--material", "M",
+       "diffuse: f = albedo/pi | phong:N[,KS]: f = albedo/pi + KS (N+2)/(2 pi) max(0, r.s)^N, r the view direction "
+       "mirrored about the normal, s the light direction, N an integer 1..1000, KS 0..1 (default 0.5); the "
+       "outgoing radiance is the integral of L V f max(0, n.s); albedo + KS must not exceed 1",
+       d.material.Name()});
   add({"--seed", "S", "random seed; the same seed gives the same bytes for any --threads", std::to_string(d.seed)});
   add({"--threads", "N", "worker threads, 1..1024; results do not depend on it",
        d.threads ? std::to_string(d.threads) : "all cores"});
@@ -128,7 +133,7 @@ void ResolveSamples(Args& args, SceneOptions& o) {
 const std::vector<std::string>& AllSceneOptionNames() {
   static const std::vector<std::string> names = {
       "--mesh",    "--env",          "--lmax",   "--tolerance", "--transport",      "--samples",
-      "--sampler", "--bounces",      "--direction-sets",        "--albedo",         "--seed",
+      "--sampler", "--bounces",      "--direction-sets",        "--albedo",         "--material", "--seed",
       "--threads", "--games202-faces", "--window", "--max-edge"};
   return names;
 }
@@ -173,6 +178,22 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
         if ((*albedo)[c] < 0.0 || (*albedo)[c] > 1.0)
           args.Fail("--albedo: '" + *args.String("--albedo") + "' is out of range (expected R,G,B, each from 0 to 1)");
       o.albedo = albedo;
+    }
+  }
+  if (has("--material")) {
+    if (const auto text = args.String("--material")) {
+      try {
+        o.material = ParseMaterial(*text);
+      } catch (const Error& e) {
+        args.Fail(std::string("--material: ") + e.what());
+      }
+    }
+    if (o.albedo) {
+      try {
+        CheckMaterialEnergy(o.material, std::max({o.albedo->x, o.albedo->y, o.albedo->z}), "--albedo");
+      } catch (const Error& e) {
+        args.Fail(e.what());
+      }
     }
   }
   if (has("--seed")) {

@@ -14,6 +14,7 @@
 
 #include "app/args.h"
 #include "env/cube_faces.h"
+#include "material/material.h"
 #include "sh/coeffs.h"
 
 namespace prt {
@@ -34,6 +35,7 @@ struct SceneOptions {
   int bounces = 1;                   ///< interreflection bounces
   int direction_sets = 64;           ///< pool of direction sets (1: every vertex shares one)
   std::optional<glm::dvec3> albedo;  ///< overrides the material colour
+  Material material;                 ///< --material: diffuse, or phong:N,KS
   std::uint64_t seed = 1;
   int threads = 0;                   ///< 0 = all cores
   CubeLayout layout = CubeLayout::kStandard;  ///< --games202-faces selects the course's

@@ -13,11 +13,11 @@ namespace prt {
 namespace {
 
 constexpr char kMagic[8] = {'P', 'R', 'T', 'C', 'A', 'C', 'H', 'E'};
-constexpr std::uint32_t kFormatVersion = 1;
+constexpr std::uint32_t kFormatVersion = 2;
 
 struct Header {
   char magic[8];
-  std::uint32_t version, lmax, channels, reserved;
+  std::uint32_t version, lmax, channels, glossy;  ///< glossy: 1 when G follows T
   std::uint64_t vertices, key, checksum;
 };
 static_assert(sizeof(Header) == 48, "cache header layout");
@@ -39,7 +39,12 @@ std::uint64_t TransportKey(const Mesh& mesh, const TransportOptions& o) {
                               " lmax=" + std::to_string(o.lmax) + " samples=" + std::to_string(o.samples) +
                               " sampler=" + SamplerName(o.sampler) + " bounces=" + std::to_string(o.bounces) +
                               " seed=" + std::to_string(o.seed) + " tol=" + std::to_string(o.bounce_tolerance) +
-                              " sets=" + std::to_string(o.direction_sets);
+                              " sets=" + std::to_string(o.direction_sets) + " material=" + o.material.Name() +
+                              " lobe_samples=" + std::to_string(o.lobe_samples);
+  if (o.material.glossy && o.eye) {  // the glossy transfer is toward this eye, to the bit
+    const glm::dvec3 eye = *o.eye;
+    h = Fnv1a(&eye, sizeof eye, h);
+  }
   return Fnv1a(options, h);
 }
 
@@ -51,10 +56,14 @@ void WriteTransportCache(const std::string& path, const Transport& t, std::uint6
   h.channels = static_cast<std::uint32_t>(t.channels);
   h.vertices = t.vertices;
   h.key = key;
-  h.checksum = HashVector(t.coeffs, kFnvOffset);
-  std::string bytes(sizeof h + t.coeffs.size() * sizeof(float), '\0');
+  h.glossy = t.glossy.empty() ? 0 : 1;
+  h.checksum = HashVector(t.glossy, HashVector(t.coeffs, kFnvOffset));
+  const std::size_t floats = t.coeffs.size() + t.glossy.size();
+  std::string bytes(sizeof h + floats * sizeof(float), '\0');
   std::memcpy(bytes.data(), &h, sizeof h);
   std::memcpy(bytes.data() + sizeof h, t.coeffs.data(), t.coeffs.size() * sizeof(float));
+  if (!t.glossy.empty())
+    std::memcpy(bytes.data() + sizeof h + t.coeffs.size() * sizeof(float), t.glossy.data(), t.glossy.size() * sizeof(float));
   WriteFileAtomic(path, bytes);
 }
 
@@ -84,11 +93,12 @@ std::optional<Transport> ReadTransportCache(const std::string& path, std::uint64
     why = "made from other inputs";
     return std::nullopt;
   }
-  if (h.lmax > 64 || (h.channels != 1 && h.channels != 3) || h.vertices > (1ULL << 32)) {
+  if (h.lmax > 64 || (h.channels != 1 && h.channels != 3) || h.glossy > 1 || h.vertices > (1ULL << 32)) {
     why = "corrupt header";
     return std::nullopt;
   }
-  const std::uint64_t floats = h.vertices * h.channels * (h.lmax + 1) * (h.lmax + 1);
+  const std::uint64_t per_part = h.vertices * h.channels * (h.lmax + 1) * (h.lmax + 1);
+  const std::uint64_t floats = per_part * (1 + h.glossy);
   const auto size = std::filesystem::file_size(path, ec);
   if (ec || size != sizeof h + floats * sizeof(float)) {
     why = "truncated or oversized (" + std::to_string(size) + " bytes, expected " +
@@ -99,12 +109,14 @@ std::optional<Transport> ReadTransportCache(const std::string& path, std::uint64
   t.lmax = static_cast<int>(h.lmax);
   t.channels = static_cast<int>(h.channels);
   t.vertices = h.vertices;
-  t.coeffs.resize(floats);
-  if (!in.read(reinterpret_cast<char*>(t.coeffs.data()), static_cast<std::streamsize>(floats * sizeof(float)))) {
+  t.coeffs.resize(per_part);
+  t.glossy.resize(h.glossy ? per_part : 0);
+  if (!in.read(reinterpret_cast<char*>(t.coeffs.data()), static_cast<std::streamsize>(per_part * sizeof(float))) ||
+      !in.read(reinterpret_cast<char*>(t.glossy.data()), static_cast<std::streamsize>(t.glossy.size() * sizeof(float)))) {
     why = "truncated";
     return std::nullopt;
   }
-  if (HashVector(t.coeffs, kFnvOffset) != h.checksum) {
+  if (HashVector(t.glossy, HashVector(t.coeffs, kFnvOffset)) != h.checksum) {
     why = "checksum mismatch (corrupted)";
     return std::nullopt;
   }

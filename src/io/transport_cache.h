@@ -6,9 +6,9 @@
 ///
 /// Layout (little-endian):
 ///   "PRTCACHE"  8 bytes magic
-///   u32 format version, u32 lmax, u32 channels, u32 reserved
+///   u32 format version (2), u32 lmax, u32 channels, u32 glossy (0 or 1)
 ///   u64 vertex count, u64 key (hash of every input, see TransportKey), u64 payload checksum
-///   float payload[vertices * channels * (lmax+1)^2]
+///   float T[vertices * channels * (lmax+1)^2], then (glossy) float G[the same count]
 /// Written to a temporary name and renamed (core/atomic_file.h).
 
 #include <cstdint>
@@ -21,7 +21,7 @@
 namespace prt {
 
 /// Hash of everything the transport depends on: the mesh's positions, normals, albedo and
-/// triangles, and every option of `options`.
+/// triangles, and every option of `options` (a glossy material's eye included).
 std::uint64_t TransportKey(const Mesh& mesh, const TransportOptions& options);
 
 /// Writes `transport` with `key` to `path` atomically. Throws Error if it cannot.

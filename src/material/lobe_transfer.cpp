@@ -5,10 +5,13 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
 
+#include "core/parallel.h"
 #include "sh/basis.h"
 #include "sh/coeffs.h"
 #include "sh/quadrature.h"
+#include "sh/rotation.h"
 
 namespace prt {
 namespace {
@@ -20,6 +23,9 @@ constexpr int kArcExtraNodes = 16;
 /// Pieces next to a kink are graded geometrically by this ratio, this many times.
 constexpr double kGradeRatio = 0.25;
 constexpr int kGradeLevels = 4;
+/// LobeTransferTable's grid: nodes per lobe width and the fewest nodes.
+constexpr double kNodesPerWidth = 32.0;
+constexpr int kMinTableNodes = 1024;
 
 struct Rule {
   std::vector<double> x, w;  // on [-1, 1]
@@ -108,6 +114,44 @@ void LobeTransfer(const Lobe& lobe, const glm::dvec3& n, const glm::dvec3& r, in
       }
     }
   }
+}
+
+LobeTransferTable::LobeTransferTable(const Lobe& lobe, int lmax)
+    : lmax_(lmax), count_(CoeffCount(lmax)),
+      nodes_(std::max(kMinTableNodes, int(std::ceil(kPi * kNodesPerWidth / lobe.Width()))) + 1) {
+  table_.resize(std::size_t(nodes_) * count_);
+  ParallelFor(std::size_t(nodes_), 8, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const double g = kPi * double(i) / double(nodes_ - 1);
+      LobeTransfer(lobe, glm::dvec3(std::sin(g), 0.0, std::cos(g)), glm::dvec3(0, 0, 1), lmax_,
+                   table_.data() + i * count_);
+    }
+  });
+}
+
+void LobeTransferTable::Transfer(const glm::dvec3& n, const glm::dvec3& r, double* out) const {
+  const double cg = std::clamp(glm::dot(n, r), -1.0, 1.0);
+  const glm::dvec3 across = n - cg * r;
+  const double sg = glm::length(across);
+  const glm::dvec3 e1 = sg > 1e-12 ? across / sg : Perpendicular(r);
+  const glm::dvec3 e2 = glm::cross(r, e1);
+  // Cubic Lagrange interpolation in g on the four nodes around it (clamped at the ends).
+  const double x = std::atan2(sg, cg) / kPi * double(nodes_ - 1);
+  const int first = std::clamp(int(std::floor(x)) - 1, 0, nodes_ - 4);
+  double w[4];
+  for (int a = 0; a < 4; ++a) {
+    w[a] = 1.0;
+    for (int b = 0; b < 4; ++b)
+      if (b != a) w[a] *= (x - double(first + b)) / double(a - b);
+  }
+  std::vector<double> local(count_, 0.0);
+  for (int a = 0; a < 4; ++a) {
+    const double* row = table_.data() + std::size_t(first + a) * count_;
+    for (int k = 0; k < count_; ++k) local[k] += w[a] * row[k];
+  }
+  // Local frame (X = e1, Y = e2, Z = r) to world: the transfer turns with it, t = D(R) t_local.
+  const glm::dmat3 rotation(e1, e2, r);
+  ShRotation(rotation, lmax_).Apply(local.data(), out);
 }
 
 double LobeCosineIntegral(const Lobe& lobe, const glm::dvec3& n, const glm::dvec3& r) {

@@ -20,6 +20,13 @@ std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transpor
         sum[c] = s;
       }
       colors[v] = albedo ? glm::vec3(glm::dvec3(mesh.albedo[v]) * sum) : glm::vec3(sum);
+      if (transport.glossy.empty() || !albedo) continue;
+      for (int c = 0; c < 3; ++c) {
+        const float* g = transport.glossy_at(v, c);
+        double s = 0.0;
+        for (int k = 0; k < count; ++k) s += light[k][c] * g[k];
+        colors[v][c] += static_cast<float>(s);
+      }
     }
   });
   return colors;

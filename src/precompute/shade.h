@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Shading with precomputed transfer: the outgoing radiance of vertex v is
-///     albedo(v) * sum_k L_k T_k(v)     per colour channel,
+///     albedo(v) * sum_k L_k T_k(v)  [+ sum_k L_k G_k(v) for a glossy material's fixed view]
+/// per colour channel,
 /// a dot product of (lmax+1)^2 numbers: this is why PRT relights in real time. Only the bands
 /// the transport has are used (a light of more bands is truncated, of fewer padded with 0).
 
@@ -16,7 +17,8 @@
 namespace prt {
 
 /// Linear RGB outgoing radiance of every vertex of `mesh` under `light`; without `albedo`, as if
-/// every albedo were 1 (the irradiance over pi, shadows and bounces included).
+/// every albedo were 1 and the material diffuse (the irradiance over pi, shadows and bounces
+/// included; a glossy material's lobe is left out).
 std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transport, const ShRgb& light,
                                      bool albedo = true);
 

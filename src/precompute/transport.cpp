@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/error.h"
 #include "core/log.h"
 #include "core/parallel.h"
 #include "precompute/transport_steps.h"
@@ -12,6 +13,20 @@
 #include "sh/zonal.h"
 
 namespace prt {
+namespace {
+
+std::vector<float> ToFloat(const std::vector<double>& v) { return std::vector<float>(v.begin(), v.end()); }
+
+/// The glossy transfer of `options.material` into `transport` (transport_glossy.cpp).
+void AddGlossy(const Mesh& mesh, const Bvh* bvh, const TransportOptions& options, const std::vector<double>* hits,
+               Transport& transport, TransportReport& r) {
+  if (!options.eye) throw Error("glossy transfer needs the camera's eye (internal: TransportOptions::eye unset)");
+  const auto t0 = std::chrono::steady_clock::now();
+  transport.glossy = ToFloat(ComputeGlossy(mesh, bvh, options, hits, transport.channels, r));
+  r.glossy_seconds = SecondsSince(t0);
+}
+
+}  // namespace
 
 TransportMode TransportModeFromName(const std::string& name) {
   if (name == "unshadowed") return TransportMode::kUnshadowed;
@@ -63,6 +78,7 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
     });
     r.closed_form_vertices = transport.vertices;
     r.direct_seconds = SecondsSince(t0);
+    if (options.material.glossy) AddGlossy(mesh, nullptr, options, nullptr, transport, r);
     return transport;
   }
 
@@ -82,17 +98,17 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
   r.direct_seconds = SecondsSince(t0);
 
   if (!keep_hits) {
-    transport.coeffs.resize(direct.transfer.size());
-    for (std::size_t i = 0; i < direct.transfer.size(); ++i) transport.coeffs[i] = static_cast<float>(direct.transfer[i]);
+    transport.coeffs = ToFloat(direct.transfer);
+    if (options.material.glossy) AddGlossy(mesh, &bvh, options, nullptr, transport, r);
     return transport;
   }
 
   t0 = std::chrono::steady_clock::now();
-  BounceResult bounced = AddBounces(mesh, pool, direct, options, r);
+  BounceResult bounced = AddBounces(mesh, pool, direct, options, r, options.material.glossy);
   r.bounce_seconds = SecondsSince(t0);
   transport.channels = bounced.channels;
-  transport.coeffs.resize(bounced.transfer.size());
-  for (std::size_t i = 0; i < bounced.transfer.size(); ++i) transport.coeffs[i] = static_cast<float>(bounced.transfer[i]);
+  transport.coeffs = ToFloat(bounced.transfer);
+  if (options.material.glossy) AddGlossy(mesh, &bvh, options, &bounced.before_last, transport, r);
   return transport;
 }
 

@@ -16,6 +16,20 @@
 ///                    once a bounce adds less than `bounce_tolerance` of the direct energy.
 ///                    With coloured albedo, bounces differ per channel: three vectors a vertex.
 ///
+/// Glossy materials with a fixed camera (material/material.h; transport_glossy.cpp) add a second
+/// vector per vertex, the view-dependent transfer of the lobe toward the camera:
+///
+///   G_k = KS integral Y_k(s) V(s) h(r.s) max(0, n.s) ds      (+ its bounces),
+///
+/// r the mirror of the direction to the eye. Estimated with the same control variate: the
+/// unshadowed lobe transfer by quadrature (material/lobe_transfer.h) minus what is blocked,
+/// found by `lobe_samples` rays drawn from the lobe itself (a rank-1 lattice, shifted per vertex),
+/// so an unoccluded vertex gets the quadrature and a sharp lobe costs no more rays than a broad
+/// one. With interreflection, a blocked lobe ray gathers the light its hit point sends out,
+/// treating the hit as diffuse: albedo(h) times h's diffuse transfer through bounce B - 1.
+/// Then  B = albedo (L . T) + L . G  is exact for a light of bands <= lmax: no product is
+/// truncated, only the light.
+///
 /// The albedo of the receiving vertex stays outside T (the course's convention). Directions
 /// come from a pool of `direction_sets` sets drawn by the chosen sampler, each prepared once as
 /// a ray fan (geometry/ray_fan.h); vertex v uses set hash(seed, v) mod pool size, so neighbours
@@ -32,7 +46,12 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
+#include <glm/vec3.hpp>
+
 #include "geometry/mesh.h"
+#include "material/material.h"
 #include "precompute/samplers.h"
 #include "sh/coeffs.h"
 
@@ -53,7 +72,14 @@ struct TransportOptions {
   std::uint64_t seed = 1;
   double bounce_tolerance = 1e-4;    ///< stop when a bounce adds less than this share of direct
   int direction_sets = 64;           ///< size of the pool of direction sets
+  Material material;                 ///< diffuse, or a Phong lobe (needs `eye`)
+  std::optional<glm::dvec3> eye;     ///< the fixed camera the glossy transfer is computed for
+  int lobe_samples = 0;              ///< lobe rays per vertex; 0: LobeSamplesOf(samples)
 };
+
+/// The lobe rays per vertex for `samples` pool directions: a quarter of them, at least 64
+/// (drawn from the lobe, they have far less variance than uniform directions).
+int LobeSamplesOf(int samples);
 
 /// Transfer vectors of every vertex.
 struct Transport {
@@ -61,9 +87,15 @@ struct Transport {
   int channels = 1;  ///< 1: one vector for R, G and B; 3: one per channel (coloured bounces)
   std::size_t vertices = 0;
   std::vector<float> coeffs;  ///< [(v * channels + c) * CoeffCount(lmax) + k]
+  /// Glossy materials: the lobe's view-dependent transfer G, KS included, laid out as `coeffs`;
+  /// empty for diffuse.
+  std::vector<float> glossy;
 
   const float* at(std::size_t v, int c) const {
     return coeffs.data() + (v * channels + (channels == 1 ? 0 : c)) * CoeffCount(lmax);
+  }
+  const float* glossy_at(std::size_t v, int c) const {
+    return glossy.data() + (v * channels + (channels == 1 ? 0 : c)) * CoeffCount(lmax);
   }
 };
 
@@ -76,6 +108,9 @@ struct TransportReport {
   int directions_per_vertex = 0;
   std::vector<double> bounce_share;       ///< energy each bounce added, relative to direct
   std::string bounce_stop;                ///< why the bounces stopped
+  double glossy_seconds = 0;              ///< the lobe's transfer (glossy materials)
+  std::uint64_t lobe_rays = 0;            ///< rays traced from the lobes
+  int lobe_samples = 0;                   ///< lobe rays per vertex
 };
 
 /// Computes the transport of `mesh` (unit normals, albedo in [0, 1]).

@@ -28,7 +28,7 @@ double Energy(const std::vector<double>& t, int count) {
 }  // namespace
 
 BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const DirectResult& direct,
-                        const TransportOptions& options, TransportReport& report) {
+                        const TransportOptions& options, TransportReport& report, bool keep_before_last) {
   const int count = CoeffCount(options.lmax);
   const std::size_t nv = mesh.vertex_count();
   BounceResult result;
@@ -43,6 +43,7 @@ BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const Direc
       std::copy(direct.transfer.begin() + v * count, direct.transfer.begin() + (v + 1) * count,
                 current.begin() + v * stride + c * count);
   result.transfer = current;
+  if (keep_before_last) result.before_last = current;
   const double direct_energy = Energy(current, count);
   const double weight = 4.0 / double(pool.size());  // (4 pi / N) * (1 / pi)
 
@@ -80,6 +81,7 @@ BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const Direc
       }
       progress.Advance(end - begin);
     });
+    if (keep_before_last) result.before_last = result.transfer;
     for (std::size_t i = 0; i < next.size(); ++i) result.transfer[i] += next[i];
     const double share = direct_energy > 0.0 ? Energy(next, count) / direct_energy : 0.0;
     report.bounce_share.push_back(share);

@@ -12,8 +12,6 @@
 #include "sh/zonal.h"
 
 namespace prt {
-namespace {
-
 
 /// Does the ray along `dir` hit the lit side of the triangle, the side its vertex normals face?
 /// The side is decided by the triangle's plane (the geometric normal), oriented by the sum of
@@ -27,8 +25,6 @@ bool FrontSide(const Mesh& mesh, const Hit& hit, const glm::vec3& dir) {
   if (glm::dot(g, mesh.normals[tri[0]] + mesh.normals[tri[1]] + mesh.normals[tri[2]]) < 0.0f) g = -g;
   return glm::dot(g, dir) < 0.0f;
 }
-
-}  // namespace
 
 DirectResult ComputeDirect(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lmax,
                            bool keep_hits) {

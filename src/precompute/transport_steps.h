@@ -13,6 +13,10 @@
 
 namespace prt {
 
+/// Does the ray along `dir` hit the lit (front) side of the surface it hit? Decided by the hit
+/// triangle's plane, oriented by the sum of its vertex normals (transport_direct.cpp).
+bool FrontSide(const Mesh& mesh, const Hit& hit, const glm::vec3& dir);
+
 /// A blocked direction of a vertex and what it hit (kept for the bounces).
 struct VertexHit {
   std::uint32_t triangle;
@@ -36,10 +40,19 @@ DirectResult ComputeDirect(const Mesh& mesh, const Bvh& bvh, const DirectionPool
 struct BounceResult {
   int channels = 1;
   std::vector<double> transfer;  ///< [(v * channels + c) * count + k], direct + all bounces
+  /// The same without the last bounce computed (what a glossy receiver gathers from a diffuse
+  /// hit point: its light through bounce B - 1); filled only when asked for.
+  std::vector<double> before_last;
 };
 
 /// Adds up to options.bounces bounces to `direct`; records each bounce's share in `report`.
 BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const DirectResult& direct,
-                        const TransportOptions& options, TransportReport& report);
+                        const TransportOptions& options, TransportReport& report, bool keep_before_last = false);
+
+/// The glossy transfer G of every vertex (transport.h) for options.material seen from
+/// options.eye; `hit_transfer` (layout of BounceResult::transfer with `channels`) is what hit
+/// points send out with interreflection, null otherwise. Null `bvh`: unshadowed.
+std::vector<double> ComputeGlossy(const Mesh& mesh, const Bvh* bvh, const TransportOptions& options,
+                                  const std::vector<double>* hit_transfer, int channels, TransportReport& report);
 
 }  // namespace prt

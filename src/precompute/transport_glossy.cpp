@@ -1,0 +1,97 @@
+// Glossy transfer toward a fixed camera (transport.h): the lobe's unshadowed transfer by
+// quadrature, minus what lobe-sampled rays find blocked, plus (interreflection) what their hit
+// points send out as diffuse surfaces.
+#include <atomic>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "core/parallel.h"
+#include "core/progress.h"
+#include "geometry/ray.h"
+#include "material/lobe_transfer.h"
+#include "precompute/lobe_rays.h"
+#include "precompute/transport_steps.h"
+#include "sh/basis.h"
+
+namespace prt {
+int LobeSamplesOf(int samples) { return std::max(64, samples / 4); }
+
+std::vector<double> ComputeGlossy(const Mesh& mesh, const Bvh* bvh, const TransportOptions& o,
+                                  const std::vector<double>* hit_transfer, int channels, TransportReport& report) {
+  const int count = CoeffCount(o.lmax);
+  const std::size_t nv = mesh.vertex_count();
+  const std::size_t stride = static_cast<std::size_t>(channels) * count;
+  const Lobe& lobe = o.material.lobe;
+  const double ks = o.material.ks;
+  const int m = o.lobe_samples > 0 ? o.lobe_samples : LobeSamplesOf(o.samples);
+  report.lobe_samples = bvh ? m : 0;
+  const float scene_scale = bvh ? bvh->SceneScale() : 0.0f;
+  const glm::dvec3 eye = *o.eye;
+  const LobeTransferTable table(lobe, o.lmax);
+  std::vector<double> glossy(nv * stride, 0.0);
+  std::atomic<std::uint64_t> rays{0};
+  Progress progress("glossy transfer", nv);
+
+  ParallelFor(nv, 32, [&](std::size_t begin, std::size_t end) {
+    std::vector<double> t(count), y(count);
+    LobeRays lobe_rays;
+    std::uint64_t local_rays = 0;
+    for (std::size_t v = begin; v < end; ++v) {
+      const glm::dvec3 p(mesh.positions[v]), n(mesh.normals[v]);
+      const glm::dvec3 to_eye = eye - p;
+      const double distance = glm::length(to_eye);
+      const glm::dvec3 view = distance > 0.0 ? to_eye / distance : n;
+      const glm::dvec3 r = glm::normalize(MirrorView(n, view));
+      table.Transfer(n, r, t.data());
+      double* out = glossy.data() + v * stride;
+      for (int c = 0; c < channels; ++c)
+        for (int k = 0; k < count; ++k) out[c * count + k] = ks * t[k];
+      if (!bvh) continue;
+
+      // What is blocked, from m rays drawn from the lobe (lobe_rays.h).
+      DrawLobeRays(lobe, r, m, o.seed, v, lobe_rays);
+      const glm::vec3 origin = OffsetRayOrigin(mesh.positions[v], mesh.normals[v], scene_scale);
+      for (int i = 0; i < m; ++i) {
+        const glm::dvec3& s = lobe_rays.dirs[i];
+        const double cosine = glm::dot(n, s);
+        if (cosine <= 0.0) continue;
+        Ray ray;
+        ray.origin = origin;
+        ray.dir = glm::vec3(s);
+        ++local_rays;
+        const double f = ks * lobe_rays.weights[i] * cosine;
+        if (!hit_transfer) {
+          if (!bvh->Occluded(ray)) continue;
+          EvalBasis(o.lmax, s, y.data());
+          for (int c = 0; c < channels; ++c)
+            for (int k = 0; k < count; ++k) out[c * count + k] -= f * y[k];
+          continue;
+        }
+        const auto hit = bvh->Intersect(ray);
+        if (!hit) continue;
+        EvalBasis(o.lmax, s, y.data());
+        for (int c = 0; c < channels; ++c)
+          for (int k = 0; k < count; ++k) out[c * count + k] -= f * y[k];
+        if (!FrontSide(mesh, *hit, ray.dir)) continue;  // the unlit back of a surface sends nothing
+        const auto& tri = mesh.triangles[hit->triangle];
+        const double b[3] = {1.0 - hit->u - hit->v, hit->u, hit->v};
+        for (int c = 0; c < channels; ++c) {
+          double rho = 0.0;
+          for (int j = 0; j < 3; ++j) rho += b[j] * mesh.albedo[tri[j]][c];
+          const double g = f * rho;
+          const double* h0 = hit_transfer->data() + tri[0] * stride + c * count;
+          const double* h1 = hit_transfer->data() + tri[1] * stride + c * count;
+          const double* h2 = hit_transfer->data() + tri[2] * stride + c * count;
+          for (int k = 0; k < count; ++k) out[c * count + k] += g * (b[0] * h0[k] + b[1] * h1[k] + b[2] * h2[k]);
+        }
+      }
+    }
+    rays += local_rays;
+    progress.Advance(end - begin);
+  });
+  report.lobe_rays = rays;
+  return glossy;
+}
+
+}  // namespace prt
