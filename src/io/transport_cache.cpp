@@ -14,10 +14,11 @@ namespace {
 
 constexpr char kMagic[8] = {'P', 'R', 'T', 'C', 'A', 'C', 'H', 'E'};
 constexpr std::uint32_t kFormatVersion = 2;
+constexpr std::uint32_t kHasGlossy = 1, kHasMatrices = 2;
 
 struct Header {
   char magic[8];
-  std::uint32_t version, lmax, channels, glossy;  ///< glossy: 1 when G follows T
+  std::uint32_t version, lmax, channels, parts;  ///< parts: kHasGlossy | kHasMatrices
   std::uint64_t vertices, key, checksum;
 };
 static_assert(sizeof(Header) == 48, "cache header layout");
@@ -40,7 +41,7 @@ std::uint64_t TransportKey(const Mesh& mesh, const TransportOptions& o) {
                               " sampler=" + SamplerName(o.sampler) + " bounces=" + std::to_string(o.bounces) +
                               " seed=" + std::to_string(o.seed) + " tol=" + std::to_string(o.bounce_tolerance) +
                               " sets=" + std::to_string(o.direction_sets) + " material=" + o.material.Name() +
-                              " lobe_samples=" + std::to_string(o.lobe_samples);
+                              " lobe_samples=" + std::to_string(o.lobe_samples) + " matrices=" + std::to_string(o.matrices);
   if (o.material.glossy && o.eye) {  // the glossy transfer is toward this eye, to the bit
     const glm::dvec3 eye = *o.eye;
     h = Fnv1a(&eye, sizeof eye, h);
@@ -56,14 +57,12 @@ void WriteTransportCache(const std::string& path, const Transport& t, std::uint6
   h.channels = static_cast<std::uint32_t>(t.channels);
   h.vertices = t.vertices;
   h.key = key;
-  h.glossy = t.glossy.empty() ? 0 : 1;
-  h.checksum = HashVector(t.glossy, HashVector(t.coeffs, kFnvOffset));
-  const std::size_t floats = t.coeffs.size() + t.glossy.size();
-  std::string bytes(sizeof h + floats * sizeof(float), '\0');
+  h.parts = (t.glossy.empty() ? 0 : kHasGlossy) | (t.matrices.empty() ? 0 : kHasMatrices);
+  h.checksum = HashVector(t.matrices, HashVector(t.glossy, HashVector(t.coeffs, kFnvOffset)));
+  std::string bytes(sizeof h, '\0');
   std::memcpy(bytes.data(), &h, sizeof h);
-  std::memcpy(bytes.data() + sizeof h, t.coeffs.data(), t.coeffs.size() * sizeof(float));
-  if (!t.glossy.empty())
-    std::memcpy(bytes.data() + sizeof h + t.coeffs.size() * sizeof(float), t.glossy.data(), t.glossy.size() * sizeof(float));
+  for (const std::vector<float>* part : {&t.coeffs, &t.glossy, &t.matrices})
+    bytes.append(reinterpret_cast<const char*>(part->data()), part->size() * sizeof(float));
   WriteFileAtomic(path, bytes);
 }
 
@@ -93,12 +92,14 @@ std::optional<Transport> ReadTransportCache(const std::string& path, std::uint64
     why = "made from other inputs";
     return std::nullopt;
   }
-  if (h.lmax > 64 || (h.channels != 1 && h.channels != 3) || h.glossy > 1 || h.vertices > (1ULL << 32)) {
+  if (h.lmax > 64 || (h.channels != 1 && h.channels != 3) || h.parts > (kHasGlossy | kHasMatrices) || h.vertices > (1ULL << 32)) {
     why = "corrupt header";
     return std::nullopt;
   }
-  const std::uint64_t per_part = h.vertices * h.channels * (h.lmax + 1) * (h.lmax + 1);
-  const std::uint64_t floats = per_part * (1 + h.glossy);
+  const std::uint64_t n = std::uint64_t(h.lmax + 1) * (h.lmax + 1);
+  const std::uint64_t per_part = h.vertices * h.channels * n;
+  const std::uint64_t matrix_floats = (h.parts & kHasMatrices) ? per_part * n : 0;
+  const std::uint64_t floats = per_part * ((h.parts & kHasGlossy) ? 2 : 1) + matrix_floats;
   const auto size = std::filesystem::file_size(path, ec);
   if (ec || size != sizeof h + floats * sizeof(float)) {
     why = "truncated or oversized (" + std::to_string(size) + " bytes, expected " +
@@ -110,13 +111,15 @@ std::optional<Transport> ReadTransportCache(const std::string& path, std::uint64
   t.channels = static_cast<int>(h.channels);
   t.vertices = h.vertices;
   t.coeffs.resize(per_part);
-  t.glossy.resize(h.glossy ? per_part : 0);
-  if (!in.read(reinterpret_cast<char*>(t.coeffs.data()), static_cast<std::streamsize>(per_part * sizeof(float))) ||
-      !in.read(reinterpret_cast<char*>(t.glossy.data()), static_cast<std::streamsize>(t.glossy.size() * sizeof(float)))) {
-    why = "truncated";
-    return std::nullopt;
+  t.glossy.resize((h.parts & kHasGlossy) ? per_part : 0);
+  t.matrices.resize(matrix_floats);
+  for (std::vector<float>* part : {&t.coeffs, &t.glossy, &t.matrices}) {
+    if (!in.read(reinterpret_cast<char*>(part->data()), static_cast<std::streamsize>(part->size() * sizeof(float)))) {
+      why = "truncated";
+      return std::nullopt;
+    }
   }
-  if (HashVector(t.glossy, HashVector(t.coeffs, kFnvOffset)) != h.checksum) {
+  if (HashVector(t.matrices, HashVector(t.glossy, HashVector(t.coeffs, kFnvOffset))) != h.checksum) {
     why = "checksum mismatch (corrupted)";
     return std::nullopt;
   }

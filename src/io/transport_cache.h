@@ -6,9 +6,10 @@
 ///
 /// Layout (little-endian):
 ///   "PRTCACHE"  8 bytes magic
-///   u32 format version (2), u32 lmax, u32 channels, u32 glossy (0 or 1)
+///   u32 format version (2), u32 lmax, u32 channels, u32 parts (1: G follows, 2: matrices follow)
 ///   u64 vertex count, u64 key (hash of every input, see TransportKey), u64 payload checksum
-///   float T[vertices * channels * (lmax+1)^2], then (glossy) float G[the same count]
+///   float T[vertices * channels * n], n = (lmax+1)^2; then (parts & 1) float G[the same count];
+///   then (parts & 2) float M[vertices * channels * n * n]
 /// Written to a temporary name and renamed (core/atomic_file.h).
 
 #include <cstdint>

@@ -85,4 +85,14 @@ EnvSample EnvSampler::Sample(double u1, double u2) const {
   return s;
 }
 
+double EnvSampler::Pdf(const glm::dvec3& dir) const {
+  // Direction() inverted: y = cos theta about +Y, phi from -Z towards +X.
+  const double y = std::clamp(dir.y, -1.0, 1.0);
+  double phi = std::atan2(dir.x, -dir.z);
+  if (phi < 0.0) phi += 2.0 * kPi;
+  const int r = std::clamp(int((y + 1.0) * 0.5 * rows_), 0, rows_ - 1);
+  const int c = std::clamp(int(phi / (2.0 * kPi) * cols_), 0, cols_ - 1);
+  return weight_[std::size_t(r) * std::size_t(cols_) + std::size_t(c)] / (total_ * cell_solid_angle_);
+}
+
 }  // namespace prt

@@ -51,6 +51,11 @@ class EnvSampler {
   /// The direction for the point (u1, u2) of the unit square (u in [0, 1)).
   EnvSample Sample(double u1, double u2) const;
 
+  /// The density (per steradian) with which Sample draws the unit direction `dir`: that of the
+  /// cell holding it (what multiple importance sampling needs for a direction another
+  /// technique drew, reference.h).
+  double Pdf(const glm::dvec3& dir) const;
+
   /// Integral of the environment's luminance over the sphere as the table sees it (for tests).
   double TableIntegral() const { return total_ * cell_solid_angle_; }
 

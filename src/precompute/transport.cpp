@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/parallel.h"
+#include "precompute/transfer_matrix.h"
 #include "precompute/transport_steps.h"
 #include "sh/basis.h"
 #include "sh/zonal.h"
@@ -17,9 +18,16 @@ namespace {
 
 std::vector<float> ToFloat(const std::vector<double>& v) { return std::vector<float>(v.begin(), v.end()); }
 
-/// The glossy transfer of `options.material` into `transport` (transport_glossy.cpp).
-void AddGlossy(const Mesh& mesh, const Bvh* bvh, const TransportOptions& options, const std::vector<double>* hits,
-               Transport& transport, TransportReport& r) {
+/// The glossy transfer of `options.material` into `transport`: the fixed view's vector
+/// (transport_glossy.cpp) or the matrices for any view (transfer_matrix.h).
+void AddGlossy(const Mesh& mesh, const Bvh* bvh, const DirectionPool* pool, const TransportOptions& options,
+               const std::vector<double>* hits, Transport& transport, TransportReport& r) {
+  if (options.matrices) {
+    const auto t0 = std::chrono::steady_clock::now();
+    ComputeTransferMatrices(mesh, bvh, pool, options.lmax, hits, transport);
+    r.matrix_seconds = SecondsSince(t0);
+    return;
+  }
   if (!options.eye) throw Error("glossy transfer needs the camera's eye (internal: TransportOptions::eye unset)");
   const auto t0 = std::chrono::steady_clock::now();
   transport.glossy = ToFloat(ComputeGlossy(mesh, bvh, options, hits, transport.channels, r));
@@ -78,7 +86,7 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
     });
     r.closed_form_vertices = transport.vertices;
     r.direct_seconds = SecondsSince(t0);
-    if (options.material.glossy) AddGlossy(mesh, nullptr, options, nullptr, transport, r);
+    if (options.material.glossy) AddGlossy(mesh, nullptr, nullptr, options, nullptr, transport, r);
     return transport;
   }
 
@@ -99,7 +107,7 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
 
   if (!keep_hits) {
     transport.coeffs = ToFloat(direct.transfer);
-    if (options.material.glossy) AddGlossy(mesh, &bvh, options, nullptr, transport, r);
+    if (options.material.glossy) AddGlossy(mesh, &bvh, &pool, options, nullptr, transport, r);
     return transport;
   }
 
@@ -108,7 +116,7 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
   r.bounce_seconds = SecondsSince(t0);
   transport.channels = bounced.channels;
   transport.coeffs = ToFloat(bounced.transfer);
-  if (options.material.glossy) AddGlossy(mesh, &bvh, options, &bounced.before_last, transport, r);
+  if (options.material.glossy) AddGlossy(mesh, &bvh, &pool, options, &bounced.before_last, transport, r);
   return transport;
 }
 

@@ -75,6 +75,9 @@ struct TransportOptions {
   Material material;                 ///< diffuse, or a Phong lobe (needs `eye`)
   std::optional<glm::dvec3> eye;     ///< the fixed camera the glossy transfer is computed for
   int lobe_samples = 0;              ///< lobe rays per vertex; 0: LobeSamplesOf(samples)
+  /// Transfer matrices instead of the fixed-view vector G (a glossy material seen from a camera
+  /// that moves; transfer_matrix.h).
+  bool matrices = false;
 };
 
 /// The lobe rays per vertex for `samples` pool directions: a quarter of them, at least 64
@@ -90,6 +93,9 @@ struct Transport {
   /// Glossy materials: the lobe's view-dependent transfer G, KS included, laid out as `coeffs`;
   /// empty for diffuse.
   std::vector<float> glossy;
+  /// Transfer matrices (transfer_matrix.h) for views that move: n x n per vertex and channel,
+  /// [((v * channels + c) * n + i) * n + j], n = CoeffCount(lmax); empty unless asked for.
+  std::vector<float> matrices;
 
   const float* at(std::size_t v, int c) const {
     return coeffs.data() + (v * channels + (channels == 1 ? 0 : c)) * CoeffCount(lmax);
@@ -111,6 +117,7 @@ struct TransportReport {
   double glossy_seconds = 0;              ///< the lobe's transfer (glossy materials)
   std::uint64_t lobe_rays = 0;            ///< rays traced from the lobes
   int lobe_samples = 0;                   ///< lobe rays per vertex
+  double matrix_seconds = 0;              ///< the transfer matrices
 };
 
 /// Computes the transport of `mesh` (unit normals, albedo in [0, 1]).

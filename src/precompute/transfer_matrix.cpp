@@ -1,0 +1,157 @@
+#include "precompute/transfer_matrix.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+#include "core/parallel.h"
+#include "core/progress.h"
+#include "geometry/ray.h"
+#include "material/lobe_transfer.h"
+#include "precompute/transport_steps.h"
+#include "sh/basis.h"
+#include "sh/quadrature.h"
+
+namespace prt {
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+/// A right-handed frame (e1, e2) across the unit vector n (Duff et al. 2017).
+void Frame(const glm::dvec3& n, glm::dvec3& e1, glm::dvec3& e2) {
+  const double sign = std::copysign(1.0, n.z);
+  const double a = -1.0 / (sign + n.z), b = n.x * n.y * a;
+  e1 = {1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x};
+  e2 = {b, sign + n.y * n.y * a, -n.y};
+}
+
+/// out += f * a b^T (n x n).
+void AddOuter(double f, const double* a, const double* b, int n, double* out) {
+  for (int i = 0; i < n; ++i) {
+    const double fa = f * a[i];
+    double* row = out + std::size_t(i) * n;
+    for (int j = 0; j < n; ++j) row[j] += fa * b[j];
+  }
+}
+
+}  // namespace
+
+std::uint64_t TransferMatrixBytes(std::size_t vertices, int lmax, int channels) {
+  const std::uint64_t n = std::uint64_t(CoeffCount(lmax));
+  return std::uint64_t(vertices) * std::uint64_t(channels) * n * n * sizeof(float);
+}
+
+void UnshadowedTransferMatrix(const glm::dvec3& normal, int lmax, double* out) {
+  const int n = CoeffCount(lmax);
+  std::fill(out, out + std::size_t(n) * n, 0.0);
+  std::vector<double> z, wz, y(n);
+  GaussLegendre(lmax + 1, z, wz);  // on [-1, 1]; mapped to z in [0, 1]
+  const int azimuths = 2 * lmax + 2;
+  glm::dvec3 e1, e2;
+  Frame(normal, e1, e2);
+  for (std::size_t i = 0; i < z.size(); ++i) {
+    const double c = 0.5 * (z[i] + 1.0), rho = std::sqrt(std::max(0.0, 1.0 - c * c));
+    for (int j = 0; j < azimuths; ++j) {
+      const double phi = 2.0 * kPi * (j + 0.5) / azimuths;
+      const glm::dvec3 s = c * normal + rho * (std::cos(phi) * e1 + std::sin(phi) * e2);
+      EvalBasis(lmax, s, y.data());
+      AddOuter(0.5 * wz[i] * (2.0 * kPi / azimuths) * c, y.data(), y.data(), n, out);
+    }
+  }
+}
+
+void ComputeTransferMatrices(const Mesh& mesh, const Bvh* bvh, const DirectionPool* pool, int lmax,
+                             const std::vector<double>* hit_transfer, Transport& transport) {
+  const int n = CoeffCount(lmax);
+  const std::size_t nn = std::size_t(n) * n, nv = mesh.vertex_count();
+  const int channels = transport.channels;
+  const std::size_t stride = std::size_t(channels) * n;  // of hit_transfer
+  transport.matrices.assign(nv * channels * nn, 0.0f);
+  const float scene_scale = bvh ? bvh->SceneScale() : 0.0f;
+  const double weight = pool ? 4.0 * kPi / double(pool->size()) : 0.0;
+  Progress progress("transfer matrices", nv);
+  ParallelFor(nv, 32, [&](std::size_t begin, std::size_t end) {
+    std::vector<double> m(channels * nn), y(n), lit(n);
+    std::vector<std::uint8_t> blocked;
+    std::vector<std::optional<Hit>> hits;
+    for (std::size_t v = begin; v < end; ++v) {
+      const glm::dvec3 normal(mesh.normals[v]);
+      UnshadowedTransferMatrix(normal, lmax, m.data());
+      for (int c = 1; c < channels; ++c) std::copy(m.begin(), m.begin() + nn, m.begin() + c * nn);
+      if (bvh) {
+        const std::size_t set = pool->SetOf(v);
+        const auto& dirs = pool->sets[set];
+        const glm::vec3 origin = OffsetRayOrigin(mesh.positions[v], mesh.normals[v], scene_scale);
+        if (hit_transfer) bvh->IntersectFan(pool->fans[set], origin, mesh.normals[v], std::numeric_limits<float>::infinity(), hits);
+        else bvh->OccludedFan(pool->fans[set], origin, mesh.normals[v], std::numeric_limits<float>::infinity(), blocked);
+        bool any_open = false;
+        for (std::size_t i = 0; i < dirs.size(); ++i) {
+          const double cosine = glm::dot(normal, dirs[i]);
+          if (cosine <= 0.0) continue;
+          const bool is_blocked = hit_transfer ? hits[i].has_value() : blocked[i] != 0;
+          any_open |= !is_blocked;
+          if (!is_blocked) continue;
+          EvalBasis(lmax, dirs[i], y.data());
+          for (int c = 0; c < channels; ++c) AddOuter(-weight * cosine, y.data(), y.data(), n, m.data() + c * nn);
+          if (!hit_transfer || !FrontSide(mesh, *hits[i], glm::vec3(dirs[i]))) continue;
+          // The hit point's diffuse light: albedo(h) T(h), barycentric.
+          const Hit& h = *hits[i];
+          const auto& tri = mesh.triangles[h.triangle];
+          const double b[3] = {1.0 - h.u - h.v, h.u, h.v};
+          for (int c = 0; c < channels; ++c) {
+            double rho = 0.0;
+            for (int j = 0; j < 3; ++j) rho += b[j] * mesh.albedo[tri[j]][c];
+            for (int k = 0; k < n; ++k) {
+              double t = 0.0;
+              for (int j = 0; j < 3; ++j) t += b[j] * (*hit_transfer)[tri[j] * stride + c * n + k];
+              lit[k] = rho * t;
+            }
+            AddOuter(weight * cosine, y.data(), lit.data(), n, m.data() + c * nn);
+          }
+        }
+        if (!any_open && !hit_transfer) std::fill(m.begin(), m.end(), 0.0);
+      }
+      std::copy(m.begin(), m.end(), transport.matrices.begin() + v * channels * nn);
+    }
+    progress.Advance(end - begin);
+  });
+}
+
+std::vector<glm::vec3> GlossyFromMatrices(const Mesh& mesh, const Transport& transport, const Material& material,
+                                          const ShRgb& light, const glm::dvec3& eye) {
+  const int lmax = transport.lmax, n = CoeffCount(lmax);
+  const std::size_t nn = std::size_t(n) * n;
+  const int used = std::min<int>(n, int(light.size()));
+  const std::vector<double> h = material.lobe.ZonalCoefficients(lmax);
+  std::vector<glm::vec3> out(mesh.vertex_count(), glm::vec3(0.0f));
+  if (!material.glossy) return out;
+  ParallelFor(out.size(), 256, [&](std::size_t begin, std::size_t end) {
+    std::vector<double> y(n), hy(n);
+    for (std::size_t v = begin; v < end; ++v) {
+      const glm::dvec3 p(mesh.positions[v]), normal(mesh.normals[v]);
+      const glm::dvec3 to_eye = eye - p;
+      const double d = glm::length(to_eye);
+      const glm::dvec3 r = glm::normalize(MirrorView(normal, d > 0.0 ? to_eye / d : normal));
+      EvalBasis(lmax, r, y.data());
+      for (int l = 0, k = 0; l <= lmax; ++l)
+        for (int m = -l; m <= l; ++m, ++k) hy[k] = h[l] * y[k];
+      for (int c = 0; c < 3; ++c) {
+        // KS hy^T M L: the lobe row times the matrix, then the light.
+        const float* m = transport.matrices.data() + (v * transport.channels + (transport.channels == 1 ? 0 : c)) * nn;
+        double sum = 0.0;
+        for (int i = 0; i < n; ++i) {
+          if (hy[i] == 0.0) continue;
+          const float* row = m + std::size_t(i) * n;
+          double ml = 0.0;
+          for (int j = 0; j < used; ++j) ml += double(row[j]) * light[j][c];
+          sum += hy[i] * ml;
+        }
+        out[v][c] = static_cast<float>(material.ks * sum);
+      }
+    }
+  });
+  return out;
+}
+
+}  // namespace prt

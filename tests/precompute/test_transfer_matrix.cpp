@@ -1,0 +1,138 @@
+// Transfer matrices (precompute/transfer_matrix.h): the unshadowed matrix against closed forms,
+// and the matrix path's glossy radiance against brute force when the lobe is band-limited (the
+// case where the matrix path is exact), with the same visibility rays.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "geometry/bvh.h"
+#include "geometry/mesh_ops.h"
+#include "geometry/procedural.h"
+#include "geometry/ray.h"
+#include "material/lobe_transfer.h"
+#include "precompute/direction_pool.h"
+#include "precompute/transfer_matrix.h"
+#include "precompute/transport.h"
+#include "sh/basis.h"
+#include "sh/zonal.h"
+
+using namespace prt;
+
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+/// A light positive everywhere with every coefficient of bands 0..lmax in use, different per
+/// channel.
+ShRgb BandLimitedLight(int lmax) {
+  ShRgb light(CoeffCount(lmax));
+  for (std::size_t k = 0; k < light.size(); ++k)
+    light[k] = glm::dvec3(0.05 * std::sin(1.3 * k + 0.2), 0.04 * std::cos(0.7 * k), 0.03 * std::sin(2.1 * k + 1.0));
+  light[0] = glm::dvec3(2.0, 1.5, 1.0);
+  return light;
+}
+
+glm::dvec3 LightAt(const ShRgb& light, const glm::dvec3& d) {
+  std::vector<double> y(light.size());
+  EvalBasis(LmaxOfCount(light.size()), d, y.data());
+  glm::dvec3 sum(0.0);
+  for (std::size_t k = 0; k < light.size(); ++k) sum += y[k] * light[k];
+  return sum;
+}
+
+/// A sphere resting over a plane: the plane's vertices under the sphere are occluded.
+Mesh SphereOverPlane() {
+  Mesh mesh = MakePlane(6.0f, 12);
+  AppendMesh(mesh, MakeSphere(16, 1.0f, glm::vec3(0.0f, 1.2f, 0.0f)));
+  for (auto& a : mesh.albedo) a = glm::vec3(0.5f);
+  return mesh;
+}
+
+Material RaisedCosine(int degree, double ks) {
+  Material m;
+  m.glossy = true;
+  m.lobe = Lobe{LobeKind::kRaisedCosine, degree};
+  m.ks = ks;
+  return m;
+}
+
+}  // namespace
+
+TEST_CASE("the unshadowed transfer matrix is symmetric and its first column is the clamped-cosine closed form") {
+  // Tolerance: the product rule is exact for Y_i Y_j z; what is left is rounding.
+  constexpr double kTol = 1e-13;
+  const int lmax = 4, n = CoeffCount(lmax);
+  for (const glm::dvec3& normal : {glm::dvec3(0, 0, 1), glm::normalize(glm::dvec3(0.3, -0.8, 0.5)), glm::dvec3(0, -1, 0)}) {
+    std::vector<double> m(n * n), t(n);
+    UnshadowedTransferMatrix(normal, lmax, m.data());
+    UnshadowedTransfer(lmax, normal, t.data());  // (1/pi) integral Y max(0, n.s)
+    const double y00 = 0.5 / std::sqrt(kPi);
+    for (int i = 0; i < n; ++i) {
+      CHECK(std::abs(m[i * n] - y00 * kPi * t[i]) < kTol);
+      for (int j = 0; j < n; ++j) CHECK(std::abs(m[i * n + j] - m[j * n + i]) < kTol);
+    }
+    // Trace: sum_i integral Y_i^2 cos = (n / 4 pi) * pi (the addition theorem: sum_m Y_lm^2 = (2l+1)/(4 pi)).
+    double trace = 0.0;
+    for (int i = 0; i < n; ++i) trace += m[i * n + i];
+    CHECK(trace == doctest::Approx(n / 4.0).epsilon(1e-13));
+  }
+}
+
+TEST_CASE("matrix path: exact for a band-limited lobe, unoccluded and with the same visibility rays") {
+  // Tolerance: both sides are exact sums of the same terms in a different order (and floats for
+  // the stored matrices): 1e-6 relative.
+  constexpr double kTol = 1e-6;
+  const int lmax = 3;
+  const Mesh mesh = SphereOverPlane();
+  const ShRgb light = BandLimitedLight(lmax);
+  const Material material = RaisedCosine(3, 0.4);  // band-limited to 3 = lmax
+  const glm::dvec3 eye(4.0, 3.0, 5.0);
+  for (TransportMode mode : {TransportMode::kUnshadowed, TransportMode::kShadowed}) {
+    TransportOptions o;
+    o.mode = mode;
+    o.lmax = lmax;
+    o.samples = 256;
+    o.material = material;
+    o.matrices = true;
+    const Transport transport = ComputeTransport(mesh, o, nullptr);
+    REQUIRE(transport.matrices.size() == mesh.vertex_count() * CoeffCount(lmax) * CoeffCount(lmax));
+    const std::vector<glm::vec3> glossy = GlossyFromMatrices(mesh, transport, material, light, eye);
+
+    // Brute force: KS [integral L h cos (unshadowed, by the lobe quadrature applied to L's values)
+    // minus (4 pi / N) sum over the same blocked pool directions of L(s) h(r.s) cos].
+    const Bvh bvh = Bvh::Build(mesh);
+    const DirectionPool pool = MakeDirectionPool(o.sampler, o.samples, o.direction_sets, o.seed);
+    std::vector<std::uint8_t> blocked;
+    double worst = 0.0, peak = 0.0;
+    for (std::size_t v = 0; v < mesh.vertex_count(); v += 7) {
+      const glm::dvec3 p(mesh.positions[v]), n(mesh.normals[v]);
+      const glm::dvec3 r = glm::normalize(MirrorView(n, glm::normalize(eye - p)));
+      std::vector<double> t(CoeffCount(lmax));
+      LobeTransfer(material.lobe, n, r, lmax, t.data());
+      glm::dvec3 expected(0.0);
+      for (std::size_t k = 0; k < t.size(); ++k) expected += t[k] * light[k];
+      if (mode == TransportMode::kShadowed) {
+        const std::size_t set = pool.SetOf(v);
+        bvh.OccludedFan(pool.fans[set], OffsetRayOrigin(mesh.positions[v], mesh.normals[v], bvh.SceneScale()),
+                        mesh.normals[v], std::numeric_limits<float>::infinity(), blocked);
+        for (std::size_t i = 0; i < pool.sets[set].size(); ++i) {
+          const glm::dvec3& s = pool.sets[set][i];
+          const double c = glm::dot(n, s);
+          if (c > 0.0 && blocked[i])
+            expected -= (4.0 * kPi / double(pool.size())) * c * material.lobe.Value(glm::dot(r, s)) * LightAt(light, s);
+        }
+      }
+      expected *= material.ks;
+      for (int c = 0; c < 3; ++c) {
+        worst = std::max(worst, std::abs(double(glossy[v][c]) - expected[c]));
+        peak = std::max(peak, std::abs(expected[c]));
+      }
+    }
+    CAPTURE(TransportModeName(mode));
+    CHECK(peak > 0.01);
+    CHECK(worst <= kTol * peak);
+  }
+}
