@@ -5,6 +5,7 @@
 #include "core/color.h"
 #include "core/log.h"
 #include "io/light_txt.h"
+#include "io/transfer_matrix_file.h"
 #include "io/transport_txt.h"
 
 namespace prt {
@@ -52,7 +53,11 @@ CommandSpec PrecomputeSpec() {
           "9 numbers per row: use --lmax 2 (the default) for it.\n\n"
           "With coloured albedo and interreflection the transport differs per colour channel: the exact "
           "DIR/transport_r.txt, transport_g.txt and transport_b.txt are written too, and transport.txt holds "
-          "their luminance-weighted mix 0.2126 R + 0.7152 G + 0.0722 B, which the viewer loads.",
+          "their luminance-weighted mix 0.2126 R + 0.7152 G + 0.0722 B, which the viewer loads.\n\n"
+          "With --material phong:N,KS, transport.txt keeps the diffuse part (the course's format) and "
+          "DIR/transfer_matrices.bin adds the glossy part for any view: per vertex its position, normal, albedo, "
+          "diffuse transfer and (L+1)^2 x (L+1)^2 transfer matrix, with the lobe's zonal coefficients "
+          "(layout in docs/CLI.md).",
           {scene, output}};
 }
 
@@ -75,9 +80,12 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
   const CachePlan cache = PlanCache(cache_option, &folder);
 
   const Mesh mesh = LoadSceneMesh(options, &folder);
+  // A glossy material is exported as transfer matrices (any view): memory checked first.
+  const bool glossy = options.material.glossy;
+  if (glossy) CheckMatrixMemory(mesh, options);
   const auto env = LoadSceneEnvironment(options, &folder);
   const ShRgb light = ComputeLight(*env, options);
-  const Transport transport = ComputeSceneTransport(mesh, options, cache);
+  const Transport transport = ComputeSceneTransport(mesh, options, cache, nullptr, glossy);
 
   WriteFileAtomic(folder.Output("light.txt"), FormatLightTxt(light));
   std::string wrote;
@@ -92,6 +100,11 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
     wrote = "wrote " + *out + "/light.txt, transport_r.txt, transport_g.txt, transport_b.txt (coloured "
             "interreflection: the exact transport of each channel) and transport.txt (their luminance-weighted "
             "mix 0.2126 R + 0.7152 G + 0.0722 B, for the course's viewer, which reads one vector per row)";
+  }
+  if (glossy) {
+    WriteTransferMatrixFile(folder.Output("transfer_matrices.bin"), mesh, transport);
+    wrote += "; the glossy part (" + options.material.Name() + ") as transfer matrices for any view in " + *out +
+             "/transfer_matrices.bin (layout in docs/CLI.md)";
   }
   FinishOutputs(folder);  // the files are in place from here on
   Summary(wrote);

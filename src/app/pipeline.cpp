@@ -9,16 +9,22 @@
 #include "core/error.h"
 #include "core/atomic_file.h"  // WriteProblem
 #include "core/log.h"
+#include "core/memory.h"
 #include "core/text.h"
 #include "env/load_environment.h"
 #include "io/transport_cache.h"
 #include "precompute/light.h"
+#include "precompute/transfer_matrix.h"
 #include "raster/exposure.h"
 #include "sh/dering.h"
 #include "sh/window.h"
 
 namespace prt {
 namespace {
+
+/// The share of the available memory the transfer matrices may take (the rest is for the mesh,
+/// BVH, frames and the system).
+constexpr double kMatrixMemoryShare = 0.6;
 
 /// A vertex whose T_0 is below this share of the unoccluded T_0 sees (almost) no light: inside
 /// an inside-out mesh only what leaks through holes in it, a few percent.
@@ -41,7 +47,16 @@ void WarnIfMostlyBlocked(const Mesh& mesh, const Transport& transport, Transport
 
 /// The run-summary line of a glossy material's fixed-view transfer: what was done and why it is
 /// enough.
-std::string GlossyLine(const TransportOptions& o, const TransportReport& r) {
+std::string GlossyLine(const TransportOptions& o, const TransportReport& r, const Transport& t) {
+  if (o.matrices)
+    return "material: " + o.material.Name() + ", transfer matrices for a view that moves: " +
+           std::to_string(CoeffCount(o.lmax)) + "x" + std::to_string(CoeffCount(o.lmax)) + " per vertex" +
+           (t.channels == 3 ? " and colour channel" : "") + " (" + ByteText(t.matrices.size() * sizeof(float)) +
+           "), each frame's view applied by the lobe's zonal coefficients; they truncate the product of light, "
+           "visibility and cosine to lmax before the lobe (prt report measures the difference from the "
+           "fixed-camera vectors)" +
+           (o.mode == TransportMode::kInterreflection ? "; blocked directions carry their hit points' light as diffuse surfaces" : "") +
+           Formatted(" [%.3f s]", r.matrix_seconds);
   std::string line = "material: " + o.material.Name() +
                      ", fixed camera: one view-dependent transfer vector per vertex toward the eye (exact for the "
                      "band-limited light, the product of visibility, lobe and cosine not truncated; the camera does "
@@ -148,15 +163,17 @@ CachePlan PlanCache(const std::string& option, OutputFolder* folder) {
 }
 
 Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, const CachePlan& cache,
-                                const Camera* camera) {
+                                const Camera* camera, bool matrices) {
   std::optional<glm::dvec3> eye;
-  if (camera) eye = glm::dvec3(camera->eye);
-  const TransportOptions topts = TransportOptionsOf(options, eye);
+  if (camera && !matrices) eye = glm::dvec3(camera->eye);
+  TransportOptions topts = TransportOptionsOf(options, eye);
+  topts.matrices = matrices && options.material.glossy;
   const std::uint64_t key = TransportKey(mesh, topts);
   std::string why;
   if (!cache.path.empty()) {
     if (auto cached = ReadTransportCache(cache.path, key, why)) {
       Summary("transport: taken from the cache " + cache.path + " (same mesh and options)");
+      cached->material = topts.material;
       WarnIfMostlyBlocked(mesh, *cached, topts.mode);
       return std::move(*cached);
     }
@@ -185,7 +202,7 @@ Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, c
     if (transport.channels == 3) bounces += "; coloured albedo: one transport vector per colour channel";
     Summary(bounces);
   }
-  if (topts.material.glossy) Summary(GlossyLine(topts, r));
+  if (topts.material.glossy) Summary(GlossyLine(topts, r, transport));
   WarnIfMostlyBlocked(mesh, transport, topts.mode);
   if (!cache.path.empty() && cache.write) {
     if (why != "no cache yet") Summary("cache: " + cache.path + " ignored (" + why + "), recomputed");
@@ -196,6 +213,30 @@ Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, c
     }
   }
   return transport;
+}
+
+void CheckMatrixMemory(const Mesh& mesh, const SceneOptions& options) {
+  // Coloured albedo with interreflection needs one matrix per channel (transport.h).
+  bool grey = true;
+  for (const glm::vec3& a : mesh.albedo) grey = grey && a.x == a.y && a.y == a.z;
+  const int channels = options.transport == "interreflection" && !grey ? 3 : 1;
+  const std::uint64_t need = TransferMatrixBytes(mesh.vertex_count(), options.lmax, channels);
+  const std::uint64_t available = AvailableMemoryBytes();
+  const std::uint64_t budget = std::uint64_t(kMatrixMemoryShare * double(available));
+  if (available == 0 || need <= budget) {
+    Summary("transfer matrices: " + ByteText(need) + " for " + std::to_string(mesh.vertex_count()) + " vertices at lmax " +
+            std::to_string(options.lmax) + (available ? " (" + ByteText(available) + " available)" : ""));
+    return;
+  }
+  int fits = -1;
+  while (fits + 1 <= options.lmax && TransferMatrixBytes(mesh.vertex_count(), fits + 1, channels) <= budget) ++fits;
+  throw Error("--lmax " + std::to_string(options.lmax) + ": the transfer matrices would take " + ByteText(need) + " (" +
+              std::to_string(mesh.vertex_count()) + " vertices x " + std::to_string(channels) + " x " +
+              std::to_string(CoeffCount(options.lmax)) + "^2 floats), more than the " + ByteText(budget) +
+              " prt allows itself (" + Formatted("%.0f%%", 100.0 * kMatrixMemoryShare) + " of the " + ByteText(available) +
+              " available) (expected " +
+              (fits >= 0 ? "--lmax " + std::to_string(fits) + " or lower" : "a mesh with fewer vertices") +
+              ", or no --orbit: the fixed camera needs one vector per vertex)");
 }
 
 void FinishOutputs(OutputFolder& folder) {

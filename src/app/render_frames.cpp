@@ -35,7 +35,7 @@ glm::vec3 Reconstruct(const ShRgb& light, const glm::dvec3& d) {
 
 /// Per-vertex colours of the chosen view; `scale` is TransportViewScale for the transport view.
 std::vector<glm::vec3> ViewColors(const Mesh& mesh, const Transport& transport, const ShRgb& lit,
-                                  const RenderOptions& o, double scale) {
+                                  const RenderOptions& o, double scale, const glm::dvec3& eye) {
   if (o.view == "irradiance") return ShadeVertices(mesh, transport, lit, false);
   if (o.view == "albedo") return mesh.albedo;
   std::vector<glm::vec3> colors(mesh.vertex_count());
@@ -52,7 +52,7 @@ std::vector<glm::vec3> ViewColors(const Mesh& mesh, const Transport& transport, 
     }
     return colors;
   }
-  return ShadeVertices(mesh, transport, lit);
+  return ShadeVertices(mesh, transport, lit, true, &eye);
 }
 
 /// A perpendicular up for a view along world up: looking down, the image's top shows -Z (the
@@ -104,7 +104,7 @@ const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, cons
   // bands the transport has are turned.
   const ShRgb used(light.begin(), light.begin() + std::min(light.size(), std::size_t(CoeffCount(transport.lmax))));
   const ShRgb lit = rotation.Rotate(used, angle);
-  const std::vector<glm::vec3> colors = ViewColors(mesh, transport, lit, o, view_scale);
+  const std::vector<glm::vec3> colors = ViewColors(mesh, transport, lit, o, view_scale, glm::dvec3(camera.eye));
   RasterOptions ro;
   ro.ssaa = o.ssaa;
   ro.background.color = o.background_color;
@@ -158,12 +158,14 @@ FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRg
   const bool measure = !o.exposure && !transport_view;
   stats.exposure = o.exposure.value_or(0.0);
   std::future<void> writing;  // the previous frame's encode-and-write
+  const Bounds3 bounds = MeshBounds(mesh);
   Progress progress("rendering", static_cast<std::size_t>(o.frames));
   for (int i = 0; i < o.frames; ++i) {
     // Each frame from its absolute angle: no accumulated drift.
     const double angle = 2.0 * kPi * o.turns * double(i) / double(o.frames);
     const auto t0 = std::chrono::steady_clock::now();
-    const RasterImage& frame = RasterizeFrame(rasterizer, mesh, transport, light, rotation, env, camera, o, angle, view_scale);
+    const Camera seen_from = Orbit(camera, o.orbit * double(i) / double(o.frames), bounds.lo, bounds.hi);
+    const RasterImage& frame = RasterizeFrame(rasterizer, mesh, transport, light, rotation, env, seen_from, o, angle, view_scale);
     if (i == 0 && measure) stats.exposure = AutoExposureEv(frame, o.tonemap);
     ToneMapped mapped = ToneMapFrame(frame, o, stats.exposure, view_scale);
     stats.draw_seconds += SecondsSince(t0);

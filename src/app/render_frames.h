@@ -2,6 +2,7 @@
 /// \file
 /// The frame loop of `render` and `demo`. For frame i of N the light is turned by
 ///     a_i = 2 pi * turns * i / N
+/// and the camera by orbit * i / N degrees about its target (raster/camera.h, Orbit)
 /// about the axis (sh/axis_rotation.h, built from the absolute angle: no drift), the vertices are
 /// shaded by their transport (precompute/shade.h), the mesh is rasterized over the environment
 /// turned by the same rotation, tone-mapped, and written as DIR/frame_NNNN.png (four digits, more

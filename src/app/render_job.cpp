@@ -4,7 +4,10 @@
 #include <regex>
 
 #include "app/pipeline.h"
+#include "core/atomic_file.h"
 #include "core/log.h"
+#include "io/transport_txt.h"
+#include "precompute/shade.h"
 #include "core/text.h"
 
 namespace prt {
@@ -32,6 +35,17 @@ void NoteForeignFrames(OutputFolder& folder) {
             (n > 1 ? "them)" : "it)"));
 }
 
+/// Frame 0's per-vertex radiance toward the camera (its light not turned), as RenderFrames
+/// shades it, to `path` (io/transport_txt.h).
+void WriteVertexRadiance(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Camera& camera,
+                         const std::string& path) {
+  const ShRgb used(light.begin(), light.begin() + std::min(light.size(), std::size_t(CoeffCount(transport.lmax))));
+  const glm::dvec3 eye(camera.eye);
+  WriteFileAtomic(path, FormatVertexRadianceTxt(mesh, ShadeVertices(mesh, transport, used, true, &eye)));
+  Summary("vertex radiance: frame 0's linear RGB radiance of " + std::to_string(mesh.vertex_count()) +
+          " vertices toward the camera, three rows per face, in " + path);
+}
+
 }  // namespace
 
 void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
@@ -42,9 +56,15 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
   const Mesh mesh = LoadSceneMesh(scene, &folder);
   const Camera camera = SceneCamera(mesh, render);
 
+  // A glossy surface seen from a moving camera needs transfer matrices: their memory is
+  // checked before the light is loaded.
+  const bool matrices = scene.material.glossy && render.orbit != 0.0;
+  if (matrices) CheckMatrixMemory(mesh, scene);
+
   const auto env = LoadSceneEnvironment(scene, &folder);
   const ShRgb light = ComputeLight(*env, scene);
-  const Transport transport = ComputeSceneTransport(mesh, scene, cache, &camera);
+  const Transport transport = ComputeSceneTransport(mesh, scene, cache, &camera, matrices);
+  if (!render.vertex_radiance.empty()) WriteVertexRadiance(mesh, transport, light, camera, render.vertex_radiance);
   const AxisRotation rotation(render.axis, transport.lmax);
   Summary("rotation: " + rotation.Describe() + "; only the " + std::to_string(CoeffCount(transport.lmax)) +
           " coefficients the transport has are turned");

@@ -2,11 +2,13 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <sstream>
 
 #include <glm/geometric.hpp>
 
+#include "core/error.h"
 #include "core/text.h"
 #include "raster/camera.h"
 #include "raster/rasterizer.h"
@@ -56,6 +58,15 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
        d.up ? VecText(*d.up) : "0,1,0"});
   add({"--fov", "DEGREES", "vertical field of view, 0.001..179", d.fov ? Formatted("%g", double(*d.fov))
              : Formatted("%g; %g for the embedded scene", double(Camera{}.fov_deg), *demo.fov)});
+  add({"--orbit", "DEGREES",
+       "the camera turns this many degrees about the target (around its up direction) over the frames, "
+       "-1e6..1e6; a glossy --material then uses transfer matrices, so highlights follow the view",
+       Formatted("%g", d.orbit)});
+  add({"--vertex-radiance", "FILE",
+       "write frame 0's per-vertex linear RGB radiance toward the camera (albedo in, before tone mapping) in "
+       "transport.txt's layout: the welded vertex count, then three `R G B` rows per face of the mesh in file "
+       "order, one per corner",
+       d.vertex_radiance.empty() ? "none" : d.vertex_radiance});
   add({"--cache", "PATH",
        "transport cache to reuse and update, so a re-run with the same mesh and options skips the precompute; "
        "`none` disables it; a path that cannot be used is a warning, not an error",
@@ -140,7 +151,8 @@ RenderOptions WithDemoCamera(RenderOptions o) {
 const std::vector<std::string>& AllRenderOptionNames() {
   static const std::vector<std::string> names = {
       "--frames", "--size",     "--out",  "--axis", "--turns",  "--background", "--tonemap", "--exposure",
-      "--ssaa",   "--view",     "--eye",  "--target", "--up",   "--fov",        "--cache"};
+      "--ssaa",   "--view",     "--eye",  "--target", "--up",   "--fov",        "--orbit",
+      "--vertex-radiance", "--cache"};
   return names;
 }
 
@@ -186,6 +198,17 @@ RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
   if (has("--view")) ReadView(args, o, d);
   if (has("--eye")) ReadCamera(args, o);
   if (has("--cache")) o.cache = args.String("--cache", d.cache);
+  if (has("--orbit")) o.orbit = args.Double("--orbit", d.orbit, -1e6, 1e6);
+  if (has("--vertex-radiance") && args.Has("--vertex-radiance")) {
+    o.vertex_radiance = args.String("--vertex-radiance", d.vertex_radiance);
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::path dir = fs::path(o.vertex_radiance).parent_path();
+    if (o.vertex_radiance.empty() || fs::is_directory(o.vertex_radiance, ec))
+      args.Fail("--vertex-radiance: '" + o.vertex_radiance + "' is not a file name (expected FILE)");
+    if (!dir.empty() && !fs::is_directory(dir, ec))
+      throw Error(o.vertex_radiance + ": folder '" + dir.string() + "' does not exist (expected a file in an existing folder for --vertex-radiance)");
+  }
   return o;
 }
 

@@ -37,6 +37,11 @@ struct RenderOptions {
   int transport_index = 0;
   /// The transport cache to reuse and update: empty for "DIR/transport.cache", "none" for none.
   std::string cache;
+  /// Degrees the camera turns about the target (around its up direction) over all frames: frame
+  /// i is seen from the camera turned by orbit * i / frames.
+  double orbit = 0.0;
+  /// Where frame 0's per-vertex linear radiance is written (io/transport_txt.h); empty: nowhere.
+  std::string vertex_radiance;
 };
 
 /// The camera of `prt demo`, also used by render and reference on the embedded scene: a

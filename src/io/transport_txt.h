@@ -6,6 +6,9 @@
 /// Written with 7 significant digits (float precision).
 
 #include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "geometry/mesh.h"
 #include "precompute/transport.h"
@@ -14,5 +17,10 @@ namespace prt {
 
 /// The text of transport.txt for channel `channel` of `transport` (0 when it has one channel).
 std::string FormatTransportTxt(const Mesh& mesh, const Transport& transport, int channel);
+
+/// Per-vertex linear RGB radiance in the same layout (`render --vertex-radiance`): the welded
+/// vertex count, then three rows `R G B` per face in file order, one per corner, 9 significant
+/// digits (a float reads back exactly). A stable format for comparing results from outside.
+std::string FormatVertexRadianceTxt(const Mesh& mesh, const std::vector<glm::vec3>& radiance);
 
 }  // namespace prt

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 
+#include "core/error.h"
 #include "core/parallel.h"
+#include "precompute/transfer_matrix.h"
 
 namespace prt {
 
 std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                                     bool albedo) {
+                                     bool albedo, const glm::dvec3* eye) {
   const int count = std::min<int>(CoeffCount(transport.lmax), static_cast<int>(light.size()));
   std::vector<glm::vec3> colors(mesh.vertex_count());
   ParallelFor(colors.size(), 1024, [&](std::size_t begin, std::size_t end) {
@@ -29,6 +31,11 @@ std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transpor
       }
     }
   });
+  if (albedo && !transport.matrices.empty()) {
+    if (!eye) throw Error("shading by transfer matrices needs the camera's eye (internal)");
+    const std::vector<glm::vec3> glossy = GlossyFromMatrices(mesh, transport, transport.material, light, *eye);
+    for (std::size_t v = 0; v < colors.size(); ++v) colors[v] += glossy[v];
+  }
   return colors;
 }
 

@@ -19,7 +19,9 @@ namespace prt {
 /// Linear RGB outgoing radiance of every vertex of `mesh` under `light`; without `albedo`, as if
 /// every albedo were 1 and the material diffuse (the irradiance over pi, shadows and bounces
 /// included; a glossy material's lobe is left out).
+/// Transfer matrices (a glossy material seen from a camera that moves) add the lobe's radiance
+/// toward `eye` (precompute/transfer_matrix.h), which they then need.
 std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                                     bool albedo = true);
+                                     bool albedo = true, const glm::dvec3* eye = nullptr);
 
 }  // namespace prt

@@ -69,6 +69,7 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
   r = TransportReport{};
 
   Transport transport;
+  transport.material = options.material;
   transport.lmax = options.lmax;
   transport.vertices = mesh.vertex_count();
   const int count = CoeffCount(options.lmax);

@@ -96,6 +96,8 @@ struct Transport {
   /// Transfer matrices (transfer_matrix.h) for views that move: n x n per vertex and channel,
   /// [((v * channels + c) * n + i) * n + j], n = CoeffCount(lmax); empty unless asked for.
   std::vector<float> matrices;
+  /// The material the glossy parts were computed for (diffuse: none).
+  Material material;
 
   const float* at(std::size_t v, int c) const {
     return coeffs.data() + (v * channels + (channels == 1 ? 0 : c)) * CoeffCount(lmax);

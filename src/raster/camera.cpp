@@ -193,4 +193,17 @@ std::string CameraArgs(const Camera& c) {
          ShortestFloat(c.fov_deg);
 }
 
+Camera Orbit(const Camera& camera, double degrees, const glm::vec3& min, const glm::vec3& max) {
+  if (degrees == 0.0) return camera;
+  const glm::dvec3 axis = glm::normalize(glm::dvec3(camera.up));
+  const glm::dvec3 offset = glm::dvec3(camera.eye - camera.target);
+  const double a = degrees * 3.14159265358979323846 / 180.0;
+  // Rodrigues' rotation of the offset about the axis.
+  const glm::dvec3 turned = offset * std::cos(a) + glm::cross(axis, offset) * std::sin(a) +
+                            axis * glm::dot(axis, offset) * (1.0 - std::cos(a));
+  Camera c = camera;
+  c.eye = camera.target + glm::vec3(turned);
+  return FitClipPlanes(c, min, max);
+}
+
 }  // namespace prt

@@ -84,6 +84,11 @@ glm::vec3 ViewDirection(const Camera& camera, float aspect, float ndc_x, float n
 /// automatically framed one, so a printed camera reproduces the same image.
 Camera FitClipPlanes(Camera camera, const glm::vec3& min, const glm::vec3& max);
 
+/// The camera turned `degrees` (right-handed) about the line through its target along its up
+/// direction: the eye circles the target at its distance and height, still looking at it.
+/// Clip planes refitted to the box [min, max].
+Camera Orbit(const Camera& camera, double degrees, const glm::vec3& min, const glm::vec3& max);
+
 /// A pleasant 3/4 view of the box [min, max]: from the front-right (+Z, +X) and 20 degrees above,
 /// looking at the box centre, far enough that the box's bounding sphere fits the view with a 5%
 /// margin at the given aspect (width / height). Clip planes fitted with FitClipPlanes. Wasteful

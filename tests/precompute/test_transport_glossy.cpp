@@ -18,34 +18,15 @@
 #include "precompute/transport.h"
 #include "core/parallel.h"
 #include "sh/basis.h"
+#include "tests/precompute/glossy_test_util.h"
 
 using namespace prt;
+using test::BandLimitedLight;
+using test::LightAt;
+using test::SphereOverPlane;
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
-
-Mesh SphereOverPlane() {
-  Mesh mesh = MakePlane(6.0f, 12);
-  AppendMesh(mesh, MakeSphere(16, 1.0f, glm::vec3(0.0f, 1.2f, 0.0f)));
-  for (auto& a : mesh.albedo) a = glm::vec3(0.5f);
-  return mesh;
-}
-
-ShRgb BandLimitedLight(int lmax) {
-  ShRgb light(CoeffCount(lmax));
-  for (std::size_t k = 0; k < light.size(); ++k)
-    light[k] = glm::dvec3(0.05 * std::sin(1.3 * k + 0.2), 0.04 * std::cos(0.7 * k), 0.03 * std::sin(2.1 * k + 1.0));
-  light[0] = glm::dvec3(2.0, 1.5, 1.0);
-  return light;
-}
-
-glm::dvec3 LightAt(const ShRgb& light, const glm::dvec3& d) {
-  std::vector<double> y(light.size());
-  EvalBasis(LmaxOfCount(light.size()), d, y.data());
-  glm::dvec3 sum(0.0);
-  for (std::size_t k = 0; k < light.size(); ++k) sum += y[k] * light[k];
-  return sum;
-}
 
 }  // namespace
 

@@ -1,0 +1,17 @@
+#pragma once
+/// \file
+/// How much memory the system can give this process now: MemAvailable of /proc/meminfo (the
+/// kernel's estimate of what can be allocated without swapping), else the free pages.
+
+#include <cstdint>
+#include <string>
+
+namespace prt {
+
+/// Bytes available now (0 if unknown).
+std::uint64_t AvailableMemoryBytes();
+
+/// "3.2 GiB", "850 MiB", "12 KiB": a byte count for messages.
+std::string ByteText(std::uint64_t bytes);
+
+}  // namespace prt

@@ -1,0 +1,44 @@
+#pragma once
+// Scenes and lights shared by the glossy transfer tests.
+#include <cmath>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "geometry/mesh_ops.h"
+#include "geometry/procedural.h"
+#include "sh/basis.h"
+#include "sh/coeffs.h"
+
+namespace prt::test {
+
+/// A sphere resting over a plane, albedo 0.5: the plane's vertices under it are occluded.
+inline Mesh SphereOverPlane() {
+  Mesh mesh = MakePlane(6.0f, 12);
+  AppendMesh(mesh, MakeSphere(16, 1.0f, glm::vec3(0.0f, 1.2f, 0.0f)));
+  for (auto& a : mesh.albedo) a = glm::vec3(0.5f);
+  return mesh;
+}
+
+/// A light positive everywhere with every coefficient of bands 0..lmax in use, different per
+/// channel.
+inline ShRgb BandLimitedLight(int lmax) {
+  ShRgb light(CoeffCount(lmax));
+  for (std::size_t k = 0; k < light.size(); ++k) {
+    const double x = double(k);
+    light[k] = glm::dvec3(0.05 * std::sin(1.3 * x + 0.2), 0.04 * std::cos(0.7 * x), 0.03 * std::sin(2.1 * x + 1.0));
+  }
+  light[0] = glm::dvec3(2.0, 1.5, 1.0);
+  return light;
+}
+
+/// The light's radiance from direction d, sum_k L_k Y_k(d).
+inline glm::dvec3 LightAt(const ShRgb& light, const glm::dvec3& d) {
+  std::vector<double> y(light.size());
+  EvalBasis(LmaxOfCount(light.size()), d, y.data());
+  glm::dvec3 sum(0.0);
+  for (std::size_t k = 0; k < light.size(); ++k) sum += y[k] * light[k];
+  return sum;
+}
+
+}  // namespace prt::test
