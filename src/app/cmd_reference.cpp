@@ -14,8 +14,8 @@
 namespace prt {
 namespace {
 
-const std::vector<std::string> kSceneNames = {"--mesh", "--env", "--transport", "--bounces", "--albedo", "--seed",
-                                              "--threads", "--games202-faces", "--max-edge"};
+const std::vector<std::string> kSceneNames = {"--mesh",    "--env",  "--transport", "--bounces",        "--albedo",
+                                              "--material", "--seed", "--threads",   "--games202-faces", "--max-edge"};
 const std::vector<std::string> kPictureNames = {"--out", "--size", "--background", "--tonemap", "--exposure",
                                                 "--ssaa", "--eye", "--target", "--up", "--fov"};
 
@@ -33,11 +33,13 @@ CommandSpec ReferenceSpec() {
   return {"prt reference [scene options] [picture options] --out DIR",
           "Ground truth without SH truncation: each vertex's outgoing radiance, the environment integrated directly "
           "against max(0, n.w) V(w) albedo/pi by importance-sampled, randomly shifted lattice directions (plus "
-          "per-vertex path tracing of --bounces bounces for --transport interreflection). Its own error is "
-          "estimated from two independent halves.\n\nWrites DIR/reference.txt (the vertex count, then one `R G B` "
-          "line per vertex) and DIR/reference.png (the mesh drawn with these colours by the rasterizer, camera and "
-          "tone mapping of render's frame 0; with automatic exposure the EV is measured on this picture, so pass "
-          "render's printed --exposure to compare the two pixel by pixel).",
+          "per-vertex path tracing of --bounces bounces for --transport interreflection). A glossy --material adds "
+          "its lobe toward the picture camera's eye, sampled by multiple importance sampling of the environment and "
+          "the lobe (balance heuristic). Its own error is estimated from two independent halves.\n\nWrites "
+          "DIR/reference.txt (the vertex count, then one `R G B` line per vertex) and DIR/reference.png (the mesh "
+          "drawn with these colours by the rasterizer, camera and tone mapping of render's frame 0; with automatic "
+          "exposure the EV is measured on this picture, so pass render's printed --exposure to compare the two "
+          "pixel by pixel).",
           {SceneOptionGroup(SceneOptions{}, kSceneNames), RenderOptionGroup(PictureDefaults(), kPictureNames, "picture options"),
            reference}};
 }
@@ -59,16 +61,19 @@ int RunReference(const std::vector<std::string>& tokens) {
   ro.samples = samples;
   ro.bounces = scene.bounces;
   ro.seed = scene.seed;
+  ro.material = scene.material;
+  ro.eye = glm::dvec3(camera.eye);
   const auto t0 = std::chrono::steady_clock::now();
   const Reference ref = ComputeReference(mesh, *env, ro);
   const double seconds = SecondsSince(t0);
-  char line[400];
+  char line[512];
   std::snprintf(line, sizeof line,
-                "reference: %s, %d importance-sampled lattice directions per vertex in two halves, %llu rays "
-                "[%.3f s]; estimated RMS error %.3g (%.3g%% of the RMS radiance %.3g)",
-                TransportModeName(ro.mode), 2 * (samples / 2), static_cast<unsigned long long>(ref.rays), seconds,
-                ref.rms_error, 100.0 * ref.rms_error / (ref.rms_radiance > 0 ? ref.rms_radiance : 1.0),
-                ref.rms_radiance);
+                "reference: %s, %s%s, %d importance-sampled lattice directions per vertex in two halves, %llu "
+                "rays [%.3f s]; estimated RMS error %.3g (%.3g%% of the RMS radiance %.3g)",
+                TransportModeName(ro.mode), ro.material.Name().c_str(),
+                ro.material.glossy ? " seen from the picture's eye (environment and lobe by MIS)" : "",
+                2 * (samples / 2), static_cast<unsigned long long>(ref.rays), seconds, ref.rms_error,
+                100.0 * ref.rms_error / (ref.rms_radiance > 0 ? ref.rms_radiance : 1.0), ref.rms_radiance);
   Summary(line);
 
   std::string text = std::to_string(mesh.vertex_count()) + "\n";

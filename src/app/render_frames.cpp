@@ -38,6 +38,12 @@ std::vector<glm::vec3> ViewColors(const Mesh& mesh, const Transport& transport, 
                                   const RenderOptions& o, double scale, const glm::dvec3& eye) {
   if (o.view == "irradiance") return ShadeVertices(mesh, transport, lit, false);
   if (o.view == "albedo") return mesh.albedo;
+  if (o.view == "glossy") {  // the whole radiance minus the diffuse part albedo (L . T)
+    std::vector<glm::vec3> colors = ShadeVertices(mesh, transport, lit, true, &eye);
+    const std::vector<glm::vec3> diffuse = ShadeVertices(mesh, transport, lit, false);
+    for (std::size_t v = 0; v < colors.size(); ++v) colors[v] -= mesh.albedo[v] * diffuse[v];
+    return colors;
+  }
   std::vector<glm::vec3> colors(mesh.vertex_count());
   if (o.view == "light") {
     for (std::size_t v = 0; v < colors.size(); ++v) colors[v] = Reconstruct(lit, glm::dvec3(mesh.normals[v]));

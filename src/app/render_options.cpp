@@ -41,9 +41,10 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
        d.exposure ? Formatted("%g", double(*d.exposure)) : "auto"});
   add({"--ssaa", "K", "K x K supersampling per pixel, 1..8", std::to_string(d.ssaa)});
   add({"--view", "V",
-       "radiance | irradiance | albedo | transport:K | light: the final colour; the lighting alone (albedo 1); "
+       "radiance | irradiance | albedo | transport:K | light | glossy: the final colour; the lighting alone (albedo 1); "
        "the albedo; the K-th transport coefficient in false colour with a legend, on a grey background; the "
-       "light as the SH coefficients reconstruct it (on the mesh: in the normal's direction)",
+       "light as the SH coefficients reconstruct it (on the mesh: in the normal's direction); a glossy "
+       "material's lobe term alone (the highlights, without the diffuse part)",
        d.view == "transport" ? "transport:" + std::to_string(d.transport_index) : d.view});
   add({"--eye", "X,Y,Z", "camera position",
        d.eye ? VecText(*d.eye)
@@ -113,10 +114,10 @@ void ReadView(Args& args, RenderOptions& o, const RenderOptions& d) {
     if (k.empty() || *end != '\0' || index < 0 || index >= CoeffCount(kMaxLmax))
       args.Fail("--view: '" + view + "' is not a coefficient index (expected transport:K with K an integer from 0)");
     o.view = "transport", o.transport_index = static_cast<int>(index);
-  } else if (view == "radiance" || view == "irradiance" || view == "albedo" || view == "light") {
+  } else if (view == "radiance" || view == "irradiance" || view == "albedo" || view == "light" || view == "glossy") {
     o.view = view;
   } else {
-    args.Fail("--view: unknown value '" + view + "' (expected radiance, irradiance, albedo, transport:K or light)");
+    args.Fail("--view: unknown value '" + view + "' (expected radiance, irradiance, albedo, transport:K, light or glossy)");
   }
 }
 

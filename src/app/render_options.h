@@ -32,7 +32,8 @@ struct RenderOptions {
   std::optional<glm::dvec3> eye, target, up;
   std::optional<double> fov;
   /// What to draw: radiance (the final colour), irradiance (albedo 1), albedo, transport (the
-  /// coefficient transport_index in false colour) or light (the SH-reconstructed light).
+  /// coefficient transport_index in false colour), light (the SH-reconstructed light) or glossy
+  /// (a glossy material's lobe term alone).
   std::string view = "radiance";
   int transport_index = 0;
   /// The transport cache to reuse and update: empty for "DIR/transport.cache", "none" for none.

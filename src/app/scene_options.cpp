@@ -18,6 +18,9 @@
 namespace prt {
 namespace {
 
+/// The share of a glossy lobe's energy below which its bands are said to blur it.
+constexpr double kLobeShareWarning = 0.9;
+
 std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
   const std::string albedo =
       d.albedo ? VecText(*d.albedo)
@@ -128,6 +131,21 @@ void ResolveSamples(Args& args, SceneOptions& o) {
          std::to_string(DefaultSamples(o.lmax, sampler)) + ")");
 }
 
+/// Warns when the bands up to lmax keep less than kLobeShareWarning of a glossy lobe's energy: its
+/// highlight will be as broad as the bands, not as the lobe.
+void WarnIfLobeTooSharp(const SceneOptions& o) {
+  if (!o.material.glossy) return;
+  const double share = LobeBandShare(o.material.lobe, o.lmax);
+  if (share >= kLobeShareWarning) return;
+  int needed = o.lmax;
+  while (needed < kMaxLmax && LobeBandShare(o.material.lobe, needed) < kLobeShareWarning) ++needed;
+  Warn("--material " + o.material.Name() + Formatted(": bands 0..%d keep %.0f%% of the lobe's energy", o.lmax, 100.0 * share) +
+       ", so highlights come out as broad as lmax " + std::to_string(o.lmax) + " allows, not as sharp as N = " +
+       std::to_string(o.material.lobe.exponent) + " (lmax " + std::to_string(needed) + " keeps " +
+       Formatted("%.0f%%", 100.0 * kLobeShareWarning) + "; the rule of thumb lmax ~ sqrt(N) says " +
+       std::to_string(int(std::lround(std::sqrt(double(o.material.lobe.exponent))))) + ")");
+}
+
 }  // namespace
 
 const std::vector<std::string>& AllSceneOptionNames() {
@@ -229,6 +247,7 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
     Summary(choice.why);
   }
   ResolveSamples(args, o);
+  if (has("--lmax")) WarnIfLobeTooSharp(o);  // commands without bands (reference) have nothing to warn of
   return o;
 }
 

@@ -1,5 +1,6 @@
 #include "material/lobe.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "sh/quadrature.h"
@@ -67,6 +68,18 @@ std::vector<double> Lobe::ZonalCoefficients(int lmax) const {
     for (int l = 0; l <= lmax; ++l) h[l] += f * p[l];
   }
   return h;
+}
+
+double LobeBandShare(const Lobe& lobe, int lmax) {
+  const int last = std::max(lmax, int(3.0 * std::sqrt(double(lobe.exponent))) + 20);
+  const std::vector<double> h = lobe.ZonalCoefficients(last);
+  double kept = 0.0, total = 0.0;
+  for (int l = 0; l <= last; ++l) {
+    const double e = (2.0 * l + 1.0) * h[l] * h[l];
+    total += e;
+    if (l <= lmax) kept += e;
+  }
+  return kept / total;
 }
 
 std::string Lobe::Name() const {

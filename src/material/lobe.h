@@ -54,4 +54,9 @@ struct Lobe {
   std::string Name() const;
 };
 
+/// The share of the lobe's energy (its squared norm on the sphere, sum_l (2l+1)/(4 pi) h_l^2 by
+/// Parseval) in bands 0..lmax: how much of its sharpness lmax bands can show. The tail is summed
+/// to l = 3 sqrt(N) + 20, past which a Phong lobe's h_l are below 1e-4 of h_0.
+double LobeBandShare(const Lobe& lobe, int lmax);
+
 }  // namespace prt

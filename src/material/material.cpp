@@ -39,7 +39,8 @@ Material ParseMaterial(const std::string& text) {
 }
 
 void CheckMaterialEnergy(const Material& material, double max_albedo, const std::string& where) {
-  if (!material.glossy || max_albedo + material.ks <= 1.0 + 1e-12) return;
+  // Slack for albedo stored as float (0.8f is 0.800000012): 1e-6.
+  if (!material.glossy || max_albedo + material.ks <= 1.0 + 1e-6) return;
   throw Error("--material " + material.Name() + ": albedo " + ShortestFloat(float(max_albedo)) + " (" + where + ") + KS " +
               ShortestFloat(float(material.ks)) + " = " + ShortestFloat(float(max_albedo + material.ks)) +
               " exceeds 1: the surface would reflect more light than it receives (expected albedo + KS <= 1; lower KS "

@@ -54,7 +54,7 @@ struct Scene {
   std::unique_ptr<Environment> env;
 };
 
-Scene MakeScene(TransportMode mode, int lmax) {
+Scene MakeScene(TransportMode mode, int lmax, const std::string& material = "diffuse") {
   Scene s;
   s.mesh = SphereOnPlane();
   SkyParams sky;
@@ -65,6 +65,11 @@ Scene MakeScene(TransportMode mode, int lmax) {
   t.mode = mode;
   t.lmax = lmax;
   t.samples = 128;
+  t.material = ParseMaterial(material);
+  if (t.material.glossy) {
+    for (auto& albedo : s.mesh.albedo) albedo *= 0.5f;  // room for KS
+    t.eye = glm::dvec3(ChooseCamera(s.mesh, SmallFrame()).eye);
+  }
   s.transport = ComputeTransport(s.mesh, t, nullptr);
   return s;
 }
@@ -88,6 +93,11 @@ TEST_SUITE("render") {
     test::CheckGolden("shadowed_turned_90", Draw(shadowed, o, kPi / 2));
     const Scene inter = MakeScene(TransportMode::kInterreflection, 4);
     test::CheckGolden("interreflection", Draw(inter, o, 0.0));
+  }
+
+  TEST_CASE("golden frame: a glossy sphere (phong:40,0.5) toward the fixed camera") {
+    const Scene glossy = MakeScene(TransportMode::kShadowed, 6, "phong:40,0.5");
+    test::CheckGolden("glossy_phong40", Draw(glossy, SmallFrame(), 0.0));
   }
 
   TEST_CASE("furnace: every covered pixel is exactly the albedo") {

@@ -46,4 +46,6 @@ TEST_CASE("albedo + KS above 1 is refused, at 1 accepted") {
   CHECK_NOTHROW(CheckMaterialEnergy(m, 0.5, "--albedo"));
   CHECK_THROWS_AS(CheckMaterialEnergy(m, 0.51, "--albedo"), Error);
   CHECK_NOTHROW(CheckMaterialEnergy(ParseMaterial("diffuse"), 1.0, "--albedo"));
+  // An albedo stored as float: 0.8f + 0.2 is 1 to float precision, not above it.
+  CHECK_NOTHROW(CheckMaterialEnergy(ParseMaterial("phong:10,0.2"), double(0.8f), "the demo scene"));
 }
