@@ -58,7 +58,9 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
 
   // A glossy surface seen from a moving camera needs transfer matrices: their memory is
   // checked before the light is loaded.
-  const bool matrices = scene.material.glossy && render.orbit != 0.0;
+  // (Views that show no lobe do not need them.)
+  const bool matrices =
+      scene.material.glossy && render.orbit != 0.0 && (render.view == "radiance" || render.view == "glossy");
   if (matrices) CheckMatrixMemory(mesh, scene);
 
   const auto env = LoadSceneEnvironment(scene, &folder);

@@ -8,6 +8,10 @@
 
 #include <glm/geometric.hpp>
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include "core/atomic_file.h"  // WriteProblem
 #include "core/error.h"
 #include "core/text.h"
 #include "raster/camera.h"
@@ -202,13 +206,22 @@ RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
   if (has("--orbit")) o.orbit = args.Double("--orbit", d.orbit, -1e6, 1e6);
   if (has("--vertex-radiance") && args.Has("--vertex-radiance")) {
     o.vertex_radiance = args.String("--vertex-radiance", d.vertex_radiance);
+    // Checked now, not after the precompute: the folder exists and takes new files.
     namespace fs = std::filesystem;
     std::error_code ec;
-    fs::path dir = fs::path(o.vertex_radiance).parent_path();
-    if (o.vertex_radiance.empty() || fs::is_directory(o.vertex_radiance, ec))
-      args.Fail("--vertex-radiance: '" + o.vertex_radiance + "' is not a file name (expected FILE)");
-    if (!dir.empty() && !fs::is_directory(dir, ec))
-      throw Error(o.vertex_radiance + ": folder '" + dir.string() + "' does not exist (expected a file in an existing folder for --vertex-radiance)");
+    const std::string& file = o.vertex_radiance;
+    const std::string expected = " (expected a file name in a writable folder for --vertex-radiance)";
+    if (file.empty()) args.Fail("--vertex-radiance: an empty name" + expected);
+    if (fs::is_directory(file, ec)) throw Error(file + ": is a folder" + expected);
+    fs::path dir = fs::path(file).parent_path();
+    if (dir.empty()) dir = ".";
+    if (!fs::is_directory(dir, ec)) throw Error(file + ": folder '" + dir.string() + "' does not exist" + expected);
+    // A probe file, not access(): root passes access() on folders that take no files (/proc).
+    const std::string probe = (dir / (".prt-probe-" + std::to_string(::getpid()))).string();
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd < 0) throw Error(file + ": " + WriteProblem(file, errno) + expected);
+    ::close(fd);
+    ::unlink(probe.c_str());
   }
   return o;
 }

@@ -5,6 +5,8 @@
 /// A failed or interrupted run leaves the previous file, if any, untouched.
 
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace prt {
 
@@ -34,6 +36,10 @@ class AtomicFile {
 /// Writes `bytes` to `path` through an AtomicFile. Throws Error naming `path` and the cause
 /// (WriteProblem) on failure; the previous file at `path`, if any, is then left as it was.
 void WriteFileAtomic(const std::string& path, const std::string& bytes);
+
+/// The same for content in pieces, written one after the other: large outputs (the transport
+/// cache, transfer matrices) are never copied into one buffer first.
+void WriteFileAtomic(const std::string& path, const std::vector<std::string_view>& parts);
 
 /// Why writing into `path` failed with `error` (an errno value), in the user's terms: the
 /// folder does not exist (or is a file), exists but takes no new files (ENOENT from /proc and

@@ -1,5 +1,6 @@
 #include "core/memory.h"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -9,7 +10,26 @@
 
 namespace prt {
 
-std::uint64_t AvailableMemoryBytes() {
+namespace {
+
+/// The first number in `path`, if it holds one ("max" and missing files give nothing).
+bool ReadNumber(const std::string& path, std::uint64_t& value) {
+  std::ifstream in(path);
+  return bool(in >> value);
+}
+
+/// What the process's memory control group still allows (cgroup v2, then v1); 0 if no limit.
+std::uint64_t CgroupHeadroom() {
+  std::uint64_t limit = 0, used = 0;
+  if (ReadNumber("/sys/fs/cgroup/memory.max", limit) && ReadNumber("/sys/fs/cgroup/memory.current", used))
+    return limit > used ? limit - used : 1;
+  if (ReadNumber("/sys/fs/cgroup/memory/memory.limit_in_bytes", limit) && limit < (1ULL << 60) &&
+      ReadNumber("/sys/fs/cgroup/memory/memory.usage_in_bytes", used))
+    return limit > used ? limit - used : 1;
+  return 0;
+}
+
+std::uint64_t SystemAvailable() {
   std::ifstream in("/proc/meminfo");
   std::string line;
   while (std::getline(in, line)) {
@@ -20,6 +40,14 @@ std::uint64_t AvailableMemoryBytes() {
   }
   const long pages = sysconf(_SC_AVPHYS_PAGES), size = sysconf(_SC_PAGESIZE);
   return pages > 0 && size > 0 ? std::uint64_t(pages) * std::uint64_t(size) : 0;
+}
+
+}  // namespace
+
+std::uint64_t AvailableMemoryBytes() {
+  const std::uint64_t system = SystemAvailable(), group = CgroupHeadroom();
+  if (group == 0) return system;
+  return system == 0 ? group : std::min(system, group);
 }
 
 std::string ByteText(std::uint64_t bytes) {

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// How much memory the system can give this process now: MemAvailable of /proc/meminfo (the
-/// kernel's estimate of what can be allocated without swapping), else the free pages.
+/// kernel's estimate of what can be allocated without swapping), else the free pages, and no
+/// more than the process's memory control group (a container's limit) still allows.
 
 #include <cstdint>
 #include <string>

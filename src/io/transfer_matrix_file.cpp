@@ -41,53 +41,65 @@ void WriteTransferMatrixFile(const std::string& path, const Mesh& mesh, const Tr
   Put(out, std::uint64_t(nv));
   Put(out, t.material.ks);
   for (double h : t.material.lobe.ZonalCoefficients(t.lmax)) Put(out, h);
-  out.reserve(out.size() + nv * (9 + t.channels * (n + n * n)) * sizeof(float));
+  // Each vertex's record in place, as pieces of the mesh's and transport's own arrays: nothing
+  // as large as the matrices is copied.
+  std::vector<std::string_view> parts = {out};
+  parts.reserve(1 + 5 * nv);
+  const auto piece = [&parts](const void* data, std::size_t bytes) {
+    parts.emplace_back(static_cast<const char*>(data), bytes);
+  };
   for (std::size_t v = 0; v < nv; ++v) {
-    for (const glm::vec3* a : {&mesh.positions[v], &mesh.normals[v], &mesh.albedo[v]}) out.append(reinterpret_cast<const char*>(a), sizeof *a);
-    out.append(reinterpret_cast<const char*>(t.coeffs.data() + v * t.channels * n), t.channels * n * sizeof(float));
-    out.append(reinterpret_cast<const char*>(t.matrices.data() + v * t.channels * n * n), t.channels * n * n * sizeof(float));
+    piece(&mesh.positions[v], sizeof(glm::vec3));
+    piece(&mesh.normals[v], sizeof(glm::vec3));
+    piece(&mesh.albedo[v], sizeof(glm::vec3));
+    piece(t.coeffs.data() + v * t.channels * n, t.channels * n * sizeof(float));
+    piece(t.matrices.data() + v * t.channels * n * n, t.channels * n * n * sizeof(float));
   }
-  WriteFileAtomic(path, out);
+  WriteFileAtomic(path, parts);
 }
 
 TransferMatrixFile ReadTransferMatrixFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path + ": cannot be read (expected a transfer_matrices.bin written by prt precompute)");
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const auto bad = [&path](const std::string& why) {
     return Error(path + ": " + why + " (expected a transfer_matrices.bin written by prt precompute)");
   };
-  if (bytes.size() < kHeaderBytes || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) throw bad("not a transfer matrix file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw bad("cannot be read");
+  std::error_code ec;
+  const std::uint64_t size = std::filesystem::file_size(path, ec);
+  // The header, then each array read straight into its place (no copy of the whole file).
+  std::string header(kHeaderBytes, '\0');
+  if (ec || size < kHeaderBytes || !in.read(header.data(), kHeaderBytes) ||
+      std::memcmp(header.data(), kMagic, sizeof kMagic) != 0)
+    throw bad("not a transfer matrix file");
   std::size_t at = sizeof kMagic;
-  const auto version = Take<std::uint32_t>(bytes, at);
+  const auto version = Take<std::uint32_t>(header, at);
   if (version != kVersion) throw bad("format version " + std::to_string(version));
   TransferMatrixFile f;
-  f.lmax = int(Take<std::uint32_t>(bytes, at));
-  f.channels = int(Take<std::uint32_t>(bytes, at));
-  f.exponent = int(Take<std::uint32_t>(bytes, at));
-  const auto nv = Take<std::uint64_t>(bytes, at);
-  f.ks = Take<double>(bytes, at);
+  f.lmax = int(Take<std::uint32_t>(header, at));
+  f.channels = int(Take<std::uint32_t>(header, at));
+  f.exponent = int(Take<std::uint32_t>(header, at));
+  const auto nv = Take<std::uint64_t>(header, at);
+  f.ks = Take<double>(header, at);
   if (f.lmax < 0 || f.lmax > kMaxLmax || (f.channels != 1 && f.channels != 3) || nv > (1ULL << 32))
     throw bad("corrupt header");
   const std::uint64_t n = CoeffCount(f.lmax);
   const std::uint64_t per_vertex = (9 + f.channels * (n + n * n)) * sizeof(float);
   const std::uint64_t expected = kHeaderBytes + (f.lmax + 1) * sizeof(double) + nv * per_vertex;
-  if (bytes.size() != expected)
-    throw bad(std::to_string(bytes.size()) + " bytes where the header implies " + std::to_string(expected));
+  if (size != expected) throw bad(std::to_string(size) + " bytes where the header implies " + std::to_string(expected));
+  const auto read = [&in](void* data, std::size_t bytes) { in.read(static_cast<char*>(data), std::streamsize(bytes)); };
   f.lobe.resize(f.lmax + 1);
-  for (double& h : f.lobe) h = Take<double>(bytes, at);
+  read(f.lobe.data(), f.lobe.size() * sizeof(double));
   f.positions.resize(nv), f.normals.resize(nv), f.albedo.resize(nv);
   f.transfer.resize(nv * f.channels * n);
   f.matrices.resize(nv * f.channels * n * n);
-  for (std::uint64_t v = 0; v < nv; ++v) {
-    f.positions[v] = Take<glm::vec3>(bytes, at);
-    f.normals[v] = Take<glm::vec3>(bytes, at);
-    f.albedo[v] = Take<glm::vec3>(bytes, at);
-    std::memcpy(f.transfer.data() + v * f.channels * n, bytes.data() + at, f.channels * n * sizeof(float));
-    at += f.channels * n * sizeof(float);
-    std::memcpy(f.matrices.data() + v * f.channels * n * n, bytes.data() + at, f.channels * n * n * sizeof(float));
-    at += f.channels * n * n * sizeof(float);
+  for (std::uint64_t v = 0; v < nv && in; ++v) {
+    read(&f.positions[v], sizeof(glm::vec3));
+    read(&f.normals[v], sizeof(glm::vec3));
+    read(&f.albedo[v], sizeof(glm::vec3));
+    read(f.transfer.data() + v * f.channels * n, f.channels * n * sizeof(float));
+    read(f.matrices.data() + v * f.channels * n * n, f.channels * n * n * sizeof(float));
   }
+  if (!in) throw bad("read failed");
   return f;
 }
 

@@ -40,10 +40,11 @@ std::uint64_t TransportKey(const Mesh& mesh, const TransportOptions& o) {
                               " lmax=" + std::to_string(o.lmax) + " samples=" + std::to_string(o.samples) +
                               " sampler=" + SamplerName(o.sampler) + " bounces=" + std::to_string(o.bounces) +
                               " seed=" + std::to_string(o.seed) + " tol=" + std::to_string(o.bounce_tolerance) +
-                              " sets=" + std::to_string(o.direction_sets) + " material=" + o.material.Name() +
+                              " sets=" + std::to_string(o.direction_sets) + " material=" + (o.matrices ? std::string("any glossy") : o.material.Name()) +
                               " lobe_samples=" + std::to_string(o.lobe_samples) + " matrices=" + std::to_string(o.matrices);
-  if (o.material.glossy && o.eye) {  // the glossy transfer is toward this eye, to the bit
-    const glm::dvec3 eye = *o.eye;
+  if (o.material.glossy && !o.matrices) {  // G depends on KS and the eye to the bit; matrices on neither
+    h = Fnv1a(&o.material.ks, sizeof o.material.ks, h);
+    const glm::dvec3 eye = o.eye.value_or(glm::dvec3(0.0));
     h = Fnv1a(&eye, sizeof eye, h);
   }
   return Fnv1a(options, h);
@@ -59,11 +60,10 @@ void WriteTransportCache(const std::string& path, const Transport& t, std::uint6
   h.key = key;
   h.parts = (t.glossy.empty() ? 0 : kHasGlossy) | (t.matrices.empty() ? 0 : kHasMatrices);
   h.checksum = HashVector(t.matrices, HashVector(t.glossy, HashVector(t.coeffs, kFnvOffset)));
-  std::string bytes(sizeof h, '\0');
-  std::memcpy(bytes.data(), &h, sizeof h);
+  std::vector<std::string_view> parts = {{reinterpret_cast<const char*>(&h), sizeof h}};
   for (const std::vector<float>* part : {&t.coeffs, &t.glossy, &t.matrices})
-    bytes.append(reinterpret_cast<const char*>(part->data()), part->size() * sizeof(float));
-  WriteFileAtomic(path, bytes);
+    parts.emplace_back(reinterpret_cast<const char*>(part->data()), part->size() * sizeof(float));
+  WriteFileAtomic(path, parts);  // in pieces: the matrices are never copied
 }
 
 bool StartsLikeTransportCache(const std::string& path) {

@@ -56,7 +56,7 @@ struct Lobe {
 
 /// The share of the lobe's energy (its squared norm on the sphere, sum_l (2l+1)/(4 pi) h_l^2 by
 /// Parseval) in bands 0..lmax: how much of its sharpness lmax bands can show. The tail is summed
-/// to l = 3 sqrt(N) + 20, past which a Phong lobe's h_l are below 1e-4 of h_0.
+/// to l = 3 sqrt(N) + 20; what lies beyond is below 3e-5 of the energy (measured, N = 1..1000).
 double LobeBandShare(const Lobe& lobe, int lmax);
 
 }  // namespace prt

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -31,9 +32,10 @@ struct Rule {
   std::vector<double> x, w;  // on [-1, 1]
 };
 
+/// The n-node rule, made once per thread. A map: its elements stay where they are when others
+/// are added, so a reference to one rule survives asking for another.
 const Rule& GaussRule(int n) {
-  thread_local std::vector<Rule> rules;
-  if (rules.size() <= std::size_t(n)) rules.resize(n + 1);
+  thread_local std::map<int, Rule> rules;
   Rule& r = rules[n];
   if (r.x.empty()) GaussLegendre(n, r.x, r.w);
   return r;
@@ -73,6 +75,12 @@ std::vector<double> ThetaBreaks(double end, double width, const std::vector<doub
 }  // namespace
 
 glm::dvec3 MirrorView(const glm::dvec3& n, const glm::dvec3& v) { return 2.0 * glm::dot(n, v) * n - v; }
+
+glm::dvec3 LobeAxis(const glm::dvec3& normal, const glm::dvec3& position, const glm::dvec3& eye) {
+  const glm::dvec3 to_eye = eye - position;
+  const double distance = glm::length(to_eye);
+  return glm::normalize(MirrorView(normal, distance > 0.0 ? to_eye / distance : normal));
+}
 
 void LobeTransfer(const Lobe& lobe, const glm::dvec3& n, const glm::dvec3& r, int lmax, double* out) {
   const int count = CoeffCount(lmax);

@@ -60,4 +60,8 @@ double LobeCosineIntegral(const Lobe& lobe, const glm::dvec3& n, const glm::dvec
 /// The mirror of the view direction v (surface to eye) about the unit normal n: 2 (n.v) n - v.
 glm::dvec3 MirrorView(const glm::dvec3& n, const glm::dvec3& v);
 
+/// The lobe's axis at a surface point seen from `eye`: the mirrored unit direction to the eye
+/// (the normal itself for a point at the eye).
+glm::dvec3 LobeAxis(const glm::dvec3& normal, const glm::dvec3& position, const glm::dvec3& eye);
+
 }  // namespace prt

@@ -15,6 +15,9 @@
 
 namespace prt {
 
+/// The random stream lobe rays draw from (distinct from the direction pool's streams).
+constexpr std::uint64_t kLobeStream = 0x6c6f6265;  // "lobe"
+
 struct LobeRays {
   std::vector<glm::dvec3> dirs;
   std::vector<double> weights;

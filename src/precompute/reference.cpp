@@ -6,13 +6,16 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
+#include "core/frame.h"
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "core/rng.h"
 #include "geometry/bvh.h"
 #include "geometry/ray.h"
 #include "material/lobe_transfer.h"
+#include "precompute/lobe_rays.h"  // kLobeStream: a half's lobe samples, apart from its other streams
 #include "precompute/reference_env_sampler.h"
+#include "precompute/transport_steps.h"  // FrontSide
 
 namespace prt {
 namespace {
@@ -23,25 +26,13 @@ constexpr double kInvGolden = 0.61803398874989484820;  // 1 / golden ratio
 /// Fractional part in [0, 1).
 double Frac(double x) { return x - std::floor(x); }
 
-/// A unit vector pair (t, b) completing n to a right-handed frame (Duff et al. 2017).
-void Basis(const glm::dvec3& n, glm::dvec3& t, glm::dvec3& b) {
-  const double sign = std::copysign(1.0, n.z);
-  const double a = -1.0 / (sign + n.z);
-  const double c = n.x * n.y * a;
-  t = {1.0 + sign * n.x * n.x * a, sign * c, -sign * n.x};
-  b = {c, sign + n.y * n.y * a, -n.y};
-}
-
 /// Cosine-weighted direction about n for (u1, u2) (Malley's method).
 glm::dvec3 CosineDirection(const glm::dvec3& n, double u1, double u2) {
   glm::dvec3 t, b;
-  Basis(n, t, b);
+  TangentFrame(n, t, b);
   const double r = std::sqrt(u1), phi = 2.0 * kPi * u2;
   return glm::normalize(r * std::cos(phi) * t + r * std::sin(phi) * b + std::sqrt(std::max(0.0, 1.0 - u1)) * n);
 }
-
-/// Stream of a half's lobe samples, apart from its environment and bounce samples.
-constexpr std::uint64_t kLobeStream = 0x6c6f6265;  // "lobe"
 
 class Estimator {
  public:
@@ -62,10 +53,8 @@ class Estimator {
     double s5 = 0, s6 = 0;
     if (glossy) {
       // The lobe's axis: the mirror of the direction to the eye (as transport_glossy.cpp).
-      const glm::dvec3 to_eye = *o_.eye - p;
-      const double distance = glm::length(to_eye);
-      lobe.axis = glm::normalize(MirrorView(nrm, distance > 0.0 ? to_eye / distance : nrm));
-      Basis(lobe.axis, lobe.t, lobe.b);
+      lobe.axis = LobeAxis(nrm, p, *o_.eye);
+      TangentFrame(lobe.axis, lobe.t, lobe.b);
       s5 = lobe_rng.NextDouble(), s6 = lobe_rng.NextDouble();
     }
     glm::dvec3 sum(0.0);
@@ -168,10 +157,7 @@ class Estimator {
   /// back as a diffuse surface (barycentric normal and albedo); 0 from the unlit back.
   glm::dvec3 HitRadiance(const Ray& ray, const Hit& hit, int depth, Pcg32& rng, std::uint64_t& rays) const {
     const auto& tri = mesh_.triangles[hit.triangle];
-    const glm::vec3& p0 = mesh_.positions[tri[0]];
-    glm::vec3 g = glm::cross(mesh_.positions[tri[1]] - p0, mesh_.positions[tri[2]] - p0);
-    if (glm::dot(g, mesh_.normals[tri[0]] + mesh_.normals[tri[1]] + mesh_.normals[tri[2]]) < 0.0f) g = -g;
-    if (glm::dot(g, ray.dir) >= 0.0f) return glm::dvec3(0.0);  // the unlit back reflects nothing
+    if (!FrontSide(mesh_, hit, ray.dir)) return glm::dvec3(0.0);  // the unlit back reflects nothing
     const double b[3] = {1.0 - hit.u - hit.v, hit.u, hit.v};
     glm::dvec3 hp(0.0), hn(0.0), albedo(0.0);
     for (int j = 0; j < 3; ++j) {

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/frame.h"
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "geometry/ray.h"
@@ -18,13 +19,6 @@ namespace prt {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-/// A right-handed frame (e1, e2) across the unit vector n (Duff et al. 2017).
-void Frame(const glm::dvec3& n, glm::dvec3& e1, glm::dvec3& e2) {
-  const double sign = std::copysign(1.0, n.z);
-  const double a = -1.0 / (sign + n.z), b = n.x * n.y * a;
-  e1 = {1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x};
-  e2 = {b, sign + n.y * n.y * a, -n.y};
-}
 
 /// out += f * a b^T (n x n).
 void AddOuter(double f, const double* a, const double* b, int n, double* out) {
@@ -49,7 +43,7 @@ void UnshadowedTransferMatrix(const glm::dvec3& normal, int lmax, double* out) {
   GaussLegendre(lmax + 1, z, wz);  // on [-1, 1]; mapped to z in [0, 1]
   const int azimuths = 2 * lmax + 2;
   glm::dvec3 e1, e2;
-  Frame(normal, e1, e2);
+  TangentFrame(normal, e1, e2);
   for (std::size_t i = 0; i < z.size(); ++i) {
     const double c = 0.5 * (z[i] + 1.0), rho = std::sqrt(std::max(0.0, 1.0 - c * c));
     for (int j = 0; j < azimuths; ++j) {
@@ -66,7 +60,6 @@ void ComputeTransferMatrices(const Mesh& mesh, const Bvh* bvh, const DirectionPo
   const int n = CoeffCount(lmax);
   const std::size_t nn = std::size_t(n) * n, nv = mesh.vertex_count();
   const int channels = transport.channels;
-  const std::size_t stride = std::size_t(channels) * n;  // of hit_transfer
   transport.matrices.assign(nv * channels * nn, 0.0f);
   const float scene_scale = bvh ? bvh->SceneScale() : 0.0f;
   const double weight = pool ? 4.0 * kPi / double(pool->size()) : 0.0;
@@ -97,16 +90,9 @@ void ComputeTransferMatrices(const Mesh& mesh, const Bvh* bvh, const DirectionPo
           if (!hit_transfer || !FrontSide(mesh, *hits[i], glm::vec3(dirs[i]))) continue;
           // The hit point's diffuse light: albedo(h) T(h), barycentric.
           const Hit& h = *hits[i];
-          const auto& tri = mesh.triangles[h.triangle];
-          const double b[3] = {1.0 - h.u - h.v, h.u, h.v};
           for (int c = 0; c < channels; ++c) {
-            double rho = 0.0;
-            for (int j = 0; j < 3; ++j) rho += b[j] * mesh.albedo[tri[j]][c];
-            for (int k = 0; k < n; ++k) {
-              double t = 0.0;
-              for (int j = 0; j < 3; ++j) t += b[j] * (*hit_transfer)[tri[j] * stride + c * n + k];
-              lit[k] = rho * t;
-            }
+            std::fill(lit.begin(), lit.end(), 0.0);
+            AddHitLight(mesh, h.triangle, h.u, h.v, *hit_transfer, channels, n, c, 1.0, lit.data());
             AddOuter(weight * cosine, y.data(), lit.data(), n, m.data() + c * nn);
           }
         }
@@ -129,10 +115,7 @@ std::vector<glm::vec3> GlossyFromMatrices(const Mesh& mesh, const Transport& tra
   ParallelFor(out.size(), 256, [&](std::size_t begin, std::size_t end) {
     std::vector<double> y(n), hy(n);
     for (std::size_t v = begin; v < end; ++v) {
-      const glm::dvec3 p(mesh.positions[v]), normal(mesh.normals[v]);
-      const glm::dvec3 to_eye = eye - p;
-      const double d = glm::length(to_eye);
-      const glm::dvec3 r = glm::normalize(MirrorView(normal, d > 0.0 ? to_eye / d : normal));
+      const glm::dvec3 r = LobeAxis(glm::dvec3(mesh.normals[v]), glm::dvec3(mesh.positions[v]), eye);
       EvalBasis(lmax, r, y.data());
       for (int l = 0, k = 0; l <= lmax; ++l)
         for (int m = -l; m <= l; ++m, ++k) hy[k] = h[l] * y[k];

@@ -27,6 +27,20 @@ double Energy(const std::vector<double>& t, int count) {
 
 }  // namespace
 
+void AddHitLight(const Mesh& mesh, std::uint32_t triangle, float u, float v, const std::vector<double>& transfer,
+                 int channels, int count, int c, double scale, double* out) {
+  const auto& tri = mesh.triangles[triangle];
+  const double b[3] = {1.0 - u - v, u, v};
+  double rho = 0.0;
+  for (int j = 0; j < 3; ++j) rho += b[j] * mesh.albedo[tri[j]][c];
+  const std::size_t stride = std::size_t(channels) * count;
+  const double* t0 = transfer.data() + tri[0] * stride + c * count;
+  const double* t1 = transfer.data() + tri[1] * stride + c * count;
+  const double* t2 = transfer.data() + tri[2] * stride + c * count;
+  const double f = scale * rho;
+  for (int k = 0; k < count; ++k) out[k] += f * (b[0] * t0[k] + b[1] * t1[k] + b[2] * t2[k]);
+}
+
 BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const DirectResult& direct,
                         const TransportOptions& options, TransportReport& report, bool keep_before_last) {
   const int count = CoeffCount(options.lmax);
@@ -66,17 +80,8 @@ BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const Direc
         for (const VertexHit& h : direct.hits[v]) {
           if (!h.front) continue;  // the unlit back of a surface reflects nothing
           const double cosine = glm::dot(n, dirs[h.dir]);
-          const auto& tri = mesh.triangles[h.triangle];
-          const double b[3] = {1.0 - h.u - h.v, h.u, h.v};
-          for (int c = 0; c < channels; ++c) {
-            double rho = 0.0;
-            for (int j = 0; j < 3; ++j) rho += b[j] * mesh.albedo[tri[j]][c];
-            const double f = weight * cosine * rho;
-            const double* t0 = current.data() + tri[0] * stride + c * count;
-            const double* t1 = current.data() + tri[1] * stride + c * count;
-            const double* t2 = current.data() + tri[2] * stride + c * count;
-            for (int k = 0; k < count; ++k) out[c * count + k] += f * (b[0] * t0[k] + b[1] * t1[k] + b[2] * t2[k]);
-          }
+          for (int c = 0; c < channels; ++c)
+            AddHitLight(mesh, h.triangle, h.u, h.v, current, channels, count, c, weight * cosine, out + c * count);
         }
       }
       progress.Advance(end - begin);

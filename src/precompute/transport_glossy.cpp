@@ -39,10 +39,7 @@ std::vector<double> ComputeGlossy(const Mesh& mesh, const Bvh* bvh, const Transp
     std::uint64_t local_rays = 0;
     for (std::size_t v = begin; v < end; ++v) {
       const glm::dvec3 p(mesh.positions[v]), n(mesh.normals[v]);
-      const glm::dvec3 to_eye = eye - p;
-      const double distance = glm::length(to_eye);
-      const glm::dvec3 view = distance > 0.0 ? to_eye / distance : n;
-      const glm::dvec3 r = glm::normalize(MirrorView(n, view));
+      const glm::dvec3 r = LobeAxis(n, p, eye);
       table.Transfer(n, r, t.data());
       double* out = glossy.data() + v * stride;
       for (int c = 0; c < channels; ++c)
@@ -74,17 +71,8 @@ std::vector<double> ComputeGlossy(const Mesh& mesh, const Bvh* bvh, const Transp
         for (int c = 0; c < channels; ++c)
           for (int k = 0; k < count; ++k) out[c * count + k] -= f * y[k];
         if (!FrontSide(mesh, *hit, ray.dir)) continue;  // the unlit back of a surface sends nothing
-        const auto& tri = mesh.triangles[hit->triangle];
-        const double b[3] = {1.0 - hit->u - hit->v, hit->u, hit->v};
-        for (int c = 0; c < channels; ++c) {
-          double rho = 0.0;
-          for (int j = 0; j < 3; ++j) rho += b[j] * mesh.albedo[tri[j]][c];
-          const double g = f * rho;
-          const double* h0 = hit_transfer->data() + tri[0] * stride + c * count;
-          const double* h1 = hit_transfer->data() + tri[1] * stride + c * count;
-          const double* h2 = hit_transfer->data() + tri[2] * stride + c * count;
-          for (int k = 0; k < count; ++k) out[c * count + k] += g * (b[0] * h0[k] + b[1] * h1[k] + b[2] * h2[k]);
-        }
+        for (int c = 0; c < channels; ++c)
+          AddHitLight(mesh, hit->triangle, hit->u, hit->v, *hit_transfer, channels, count, c, f, out + c * count);
       }
     }
     rays += local_rays;

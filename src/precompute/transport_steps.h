@@ -17,6 +17,12 @@ namespace prt {
 /// triangle's plane, oriented by the sum of its vertex normals (transport_direct.cpp).
 bool FrontSide(const Mesh& mesh, const Hit& hit, const glm::vec3& dir);
 
+/// Adds `scale` times the light a hit point sends out as a diffuse surface, per light
+/// coefficient: albedo(h) T(h) for channel c, both barycentric over the hit triangle (u, v), T
+/// from `transfer` laid out [(vertex * channels + c) * count + k]. The gather of every bounce.
+void AddHitLight(const Mesh& mesh, std::uint32_t triangle, float u, float v, const std::vector<double>& transfer,
+                 int channels, int count, int c, double scale, double* out);
+
 /// A blocked direction of a vertex and what it hit (kept for the bounces).
 struct VertexHit {
   std::uint32_t triangle;

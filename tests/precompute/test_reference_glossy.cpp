@@ -254,8 +254,8 @@ TEST_SUITE("precompute") {
   TEST_CASE("glossy reference: the SH fixed-camera transport agrees under a band-limited light") {
     // For a light of bands <= 2, B = albedo (L.T) + L.G is exact up to the transport's own
     // sampling (no product is truncated), so the two codes differ only by Monte Carlo error.
-    // Interreflection (1 bounce) checks that both treat the hit points of lobe rays as diffuse
-    // surfaces lit directly (bounce B - 1 = 0).
+    // Interreflection checks that both treat the hit points of lobe rays as diffuse surfaces
+    // with their light through bounce B - 1 (direct only at B = 1, one bounce more at B = 2).
     const BandLimitedEnvironment env(TestLight());
     const ShRgb light = ProjectLight(env, 2);
     for (std::size_t k = 0; k < light.size(); ++k) REQUIRE(glm::length(light[k] - TestLight()[k]) < 1e-12);
@@ -264,9 +264,12 @@ TEST_SUITE("precompute") {
       REQUIRE(std::min({radiance.x, radiance.y, radiance.z}) > 0.0);
     }
     const Mesh mesh = SphereOverPlane(10, 16, glm::vec3(0.5f, 0.45f, 0.4f));
-    for (TransportMode mode : {TransportMode::kShadowed, TransportMode::kInterreflection}) {
+    const std::pair<TransportMode, int> cases[] = {
+        {TransportMode::kShadowed, 1}, {TransportMode::kInterreflection, 1}, {TransportMode::kInterreflection, 2}};
+    for (const auto& [mode, bounces] : cases) {
       ReferenceOptions ro;
       ro.mode = mode;
+      ro.bounces = bounces;
       ro.samples = 4096;
       ro.table_rows = 32, ro.table_cols = 64;
       ro.material = ParseMaterial("phong:20,0.4");
@@ -277,6 +280,8 @@ TEST_SUITE("precompute") {
       for (std::uint64_t seed : {1, 2}) {
         TransportOptions to;
         to.mode = mode;
+        to.bounces = bounces;
+        to.bounce_tolerance = 0.0;  // both codes compute exactly `bounces` bounces
         to.lmax = 2;
         to.samples = 4096;
         to.lobe_samples = 4096;
@@ -299,6 +304,7 @@ TEST_SUITE("precompute") {
       }
       for (std::size_t i = 0; i < d.size(); ++i) worst = std::max(worst, std::abs(d[i]) / std::sqrt(e2[i] + mean_e2));
       CAPTURE(std::string(TransportModeName(mode)));
+      CAPTURE(bounces);
       CAPTURE(ref.rms_error);
       CHECK(ref.rms_error < kShReferenceQuality * ref.rms_radiance);
       CHECK(worst < kShSigmas);

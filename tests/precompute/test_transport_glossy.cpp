@@ -162,9 +162,18 @@ TEST_CASE("a glossy material leaves the diffuse transfer as it was, and the cach
   other.material.ks = 0.31;
   CHECK(TransportKey(mesh, other) != key);
   other = glossy;
+  other.material.ks = 0.3 + 1e-12;  // beyond float precision: still another transfer
+  CHECK(TransportKey(mesh, other) != key);
+  other = glossy;
   other.matrices = true;
   CHECK(TransportKey(mesh, other) != key);
   CHECK(TransportKey(mesh, diffuse) != key);
+  // The matrices do not depend on the lobe or the eye: one cache serves every exponent and view.
+  TransportOptions matrices = glossy, sharper = glossy;
+  matrices.matrices = sharper.matrices = true;
+  sharper.material = ParseMaterial("phong:500,0.1");
+  sharper.eye = glm::dvec3(-1, 5, 2);
+  CHECK(TransportKey(mesh, matrices) == TransportKey(mesh, sharper));
 }
 
 TEST_CASE("glossy transfer does not depend on the thread count") {
