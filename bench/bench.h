@@ -28,9 +28,14 @@ SideBySide TimeSideBySide(int runs, const std::function<void()>& ours, const std
 void Print(const std::string& key, double value);
 void Print(const std::string& key, const std::string& value);
 
+/// The processor's model name (/proc/cpuinfo), "unknown" where it cannot be read.
+std::string CpuModel();
+
 int BenchLight(Args& args);
 int BenchBvh(Args& args);
 int BenchRaster(Args& args);
 int BenchTransport(Args& args);
+/// The glossy measurements of `prt bench transport` (bench_glossy.cpp): `threads` 0 = all cores.
+void BenchGlossy(int runs, int threads, int samples, int lmax);
 
 }  // namespace prt::bench

@@ -1,6 +1,7 @@
 // `prt bench transport`: the transport precompute on the demo scene (or --mesh): shadowed and
 // interreflected (2 bounces), lmax 2 and 4, 1024 directions per vertex, 1 thread and all
 // threads: seconds and million rays per second (rays actually traced, none below the horizon).
+// Then the glossy measurements of bench_glossy.cpp (demo scene, lmax 4, all threads).
 
 #include <chrono>
 
@@ -42,6 +43,7 @@ int BenchTransport(Args& args) {
     }
   }
   SetThreadCount(0);
+  BenchGlossy(runs, threads, samples, 4);
   return 0;
 }
 

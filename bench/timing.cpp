@@ -1,6 +1,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <fstream>
+#include <string>
 #include <vector>
 
 #include "bench/bench.h"
@@ -40,6 +42,16 @@ SideBySide TimeSideBySide(int runs, const std::function<void()>& ours, const std
     r.push_back(t.back() / o.back());
   }
   return SideBySide{Median(o), Median(t), Median(r)};
+}
+
+std::string CpuModel() {
+  std::ifstream in("/proc/cpuinfo");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("model name", 0) == 0) {
+      const auto colon = line.find(':');
+      if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
+    }
+  return "unknown";
 }
 
 void Print(const std::string& key, double value) { std::printf("%s=%.6g\n", key.c_str(), value); }

@@ -60,6 +60,23 @@ struct Scorer {
   }
 };
 
+/// Sub-texels per side for the light study's cubemap of face `size`: fine enough that the
+/// sub-texels are 1/kFineFaceSize of a face wide (0.09 degrees, against the default sun's
+/// radius of 2 degrees), so every face size sees the same sun; at least 2.
+constexpr int kFineFaceSize = 1024;
+int LightSupersample(int size) { return std::max(2, (kFineFaceSize + size - 1) / size); }
+
+}  // namespace
+
+Mesh MakeReportScene() {
+  Mesh knot = MakeTorusKnot(2, 3, 0.16f, 128, 16, glm::vec3(0.80f, 0.38f, 0.20f));
+  StandUpright(knot, 3.4f);
+  Mesh scene = MakePlane(12.0f, 24, 0.0f, glm::vec3(0.7f, 0.7f, 0.7f));
+  AppendMesh(scene, knot);
+  return scene;
+}
+
+namespace {
 /// A run shorter than this is repeated until the repeats together last this long, and its time
 /// is the fastest repeat: the timer's resolution and scheduling noise, which made runs of
 /// different sizes come out equally fast, then stay far below the times plotted (the quick
@@ -67,9 +84,10 @@ struct Scorer {
 constexpr double kMinTimedSeconds = 0.05;
 /// At most this many repeats, so a trivially fast run (unshadowed) cannot loop for long.
 constexpr int kMaxRepeats = 50;
+}  // namespace
 
-/// The transport of `o`, timed as above; `bvh_seconds` takes the BVH build of the fastest run.
-Transport Timed(const Mesh& mesh, TransportOptions o, double& seconds, int& directions, double* bvh_seconds = nullptr) {
+Transport TimedTransport(const Mesh& mesh, const TransportOptions& o, double& seconds, int& directions,
+                         double* bvh_seconds) {
   Transport t;
   double total = 0.0;
   seconds = std::numeric_limits<double>::infinity();
@@ -86,22 +104,6 @@ Transport Timed(const Mesh& mesh, TransportOptions o, double& seconds, int& dire
     directions = r.directions_per_vertex;
   }
   return t;
-}
-
-/// Sub-texels per side for the light study's cubemap of face `size`: fine enough that the
-/// sub-texels are 1/kFineFaceSize of a face wide (0.09 degrees, against the default sun's
-/// radius of 2 degrees), so every face size sees the same sun; at least 2.
-constexpr int kFineFaceSize = 1024;
-int LightSupersample(int size) { return std::max(2, (kFineFaceSize + size - 1) / size); }
-
-}  // namespace
-
-Mesh MakeReportScene() {
-  Mesh knot = MakeTorusKnot(2, 3, 0.16f, 128, 16, glm::vec3(0.80f, 0.38f, 0.20f));
-  StandUpright(knot, 3.4f);
-  Mesh scene = MakePlane(12.0f, 24, 0.0f, glm::vec3(0.7f, 0.7f, 0.7f));
-  AppendMesh(scene, knot);
-  return scene;
 }
 
 ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::string& env_spec,
@@ -148,7 +150,7 @@ ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::s
       SweepRow row;
       row.mode = base.mode;
       row.sampler = "closed-form";
-      const Transport t = Timed(mesh, to, row.seconds, row.directions);
+      const Transport t = TimedTransport(mesh, to, row.seconds, row.directions);
       scorer.Score(t, nullptr, row, c.max_lmax, data.rows);
       data.baselines.push_back(base);
       continue;
@@ -157,12 +159,12 @@ ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::s
     to.sampler = Sampler::kFibonacci;
     to.samples = c.converged_samples;
     int dirs = 0;
-    const Transport converged = Timed(mesh, to, base.converged_seconds, dirs);
+    const Transport converged = TimedTransport(mesh, to, base.converged_seconds, dirs);
     base.converged_samples = c.converged_samples;
     to.samples = c.converged_samples / 2;
     to.seed = c.seed + 7;
     double half_seconds = 0;
-    const Transport half = Timed(mesh, to, half_seconds, dirs);
+    const Transport half = TimedTransport(mesh, to, half_seconds, dirs);
     base.converged_self_error =
         CompareVertices(ShadeVertices(mesh, half, light), ToDouble(ShadeVertices(mesh, converged, light))).relative;
     to.seed = c.seed;
@@ -183,7 +185,7 @@ ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::s
         row.sampler = SamplerName(s);
         row.samples = n;
         double bvh = 0.0;
-        const Transport t = Timed(mesh, to, row.seconds, row.directions, &bvh);
+        const Transport t = TimedTransport(mesh, to, row.seconds, row.directions, &bvh);
         data.bvh_seconds = data.bvh_seconds > 0 ? std::min(data.bvh_seconds, bvh) : bvh;
         scorer.Score(t, &converged, row, c.max_lmax, data.rows);
       }

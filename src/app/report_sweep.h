@@ -20,7 +20,10 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
 #include "app/render_options.h"
+#include "app/report_glossy.h"
 #include "env/environment.h"
 #include "geometry/mesh.h"
 #include "precompute/error_metrics.h"
@@ -91,7 +94,15 @@ struct ReportData {
   std::vector<LightRow> light;
   int max_lmax = 0;
   double bvh_seconds = 0;  ///< BVH build inside each sampled run (the fastest seen): a fixed cost
+  std::optional<GlossyStudy> glossy;  ///< with --material phong:N,KS (report_glossy.h)
 };
+
+/// The transport of `options`, timed: a run shorter than 0.05 s is repeated until the repeats
+/// together last that long, and `seconds` is the fastest repeat (the clock's resolution and
+/// scheduling noise then stay far below the times reported). `directions` gets the directions
+/// per vertex used, `bvh_seconds` (if given) the BVH build of the fastest run.
+Transport TimedTransport(const Mesh& mesh, const TransportOptions& options, double& seconds, int& directions,
+                         double* bvh_seconds = nullptr);
 
 /// Runs the whole sweep (minutes for the defaults; progress on the run summary).
 ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::string& env_spec,

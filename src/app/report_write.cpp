@@ -24,14 +24,15 @@ constexpr double kTarget = 0.01;  // "1% error": relative RMS
 
 std::string Csv(const ReportData& d) {
   std::string s = "mode,sampler,samples,directions,lmax,seconds,sampling_rms,sampling_max,sampling_relative,"
-                  "total_rms,total_max,total_relative,psnr_db\n";
+                  "total_rms,total_max,total_relative,psnr_db,material,path,lobe_relative,vs_vector_relative,matrix_bytes\n";
   for (const auto& r : d.rows) {
     char b[400];
-    std::snprintf(b, sizeof b, "%s,%s,%d,%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g\n", r.mode.c_str(),
+    std::snprintf(b, sizeof b, "%s,%s,%d,%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,diffuse,diffuse,,,\n", r.mode.c_str(),
                   r.sampler.c_str(), r.samples, r.directions, r.lmax, r.seconds, r.sampling.rms, r.sampling.max,
                   r.sampling.relative, r.total.rms, r.total.max, r.total.relative, r.psnr);
     s += b;
   }
+  if (d.glossy) s += GlossyCsvRows(*d.glossy);
   return s;
 }
 
@@ -116,7 +117,11 @@ std::string Markdown(const ReportData& d) {
   for (const auto& l : d.light)
     s += "| " + std::to_string(l.face_size) + " | " + std::to_string(l.supersample) + "^2 | " + F("%.4f", l.seconds) +
          " | " + F("%.3g", l.coeff_error) + " |\n";
-  s += "\n## All measurements\n\nSee report.csv (" + std::to_string(d.rows.size()) + " rows) and error_vs_time.png.\n";
+  if (d.glossy) s += GlossyMarkdown(*d.glossy);
+  const std::size_t glossy_rows = d.glossy ? d.glossy->vector_rows.size() + d.glossy->matrix_rows.size() : 0;
+  s += "\n## All measurements\n\nSee report.csv (" + std::to_string(d.rows.size() + glossy_rows) +
+       " rows; the glossy ones have material phong:N,KS and path glossy-vector or glossy-matrices) and "
+       "error_vs_time.png" + (d.glossy ? ", glossy_error_vs_lmax.png" : "") + ".\n";
   return s;
 }
 
@@ -156,7 +161,9 @@ void WriteReport(OutputFolder& folder, const ReportData& d) {
   WriteFileAtomic(folder.Output("report.csv"), Csv(d));
   WriteFileAtomic(folder.Output("report.md"), Markdown(d));
   WritePng(folder.Output("error_vs_time.png"), Plot(d));
-  Summary("wrote " + folder.dir() + "/report.csv, report.md and error_vs_time.png");
+  if (d.glossy) WritePng(folder.Output("glossy_error_vs_lmax.png"), GlossyPlot(*d.glossy));
+  Summary("wrote " + folder.dir() + "/report.csv, report.md and error_vs_time.png" +
+          (d.glossy ? std::string(" and glossy_error_vs_lmax.png") : std::string()));
 }
 
 }  // namespace prt

@@ -18,8 +18,6 @@
 namespace prt {
 namespace {
 
-/// The share of a glossy lobe's energy below which its bands are said to blur it.
-constexpr double kLobeShareWarning = 0.9;
 
 std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
   const std::string albedo =

@@ -286,6 +286,7 @@ std::vector<StabilityCase> RunStabilityCases() {
   ExtremeMeshes(out);
   DeepConcavity(out);
   BadTexels(out);
+  GlossySharpLobe(out);
   return out;
 }
 

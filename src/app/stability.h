@@ -15,7 +15,8 @@
 ///   - 10^6 terms of a Monte Carlo transfer estimate summed naively in float, naively in double
 ///     and compensated (Neumaier), each against a long-double sum of the same terms [2];
 ///   - awkward inputs (stability_inputs.h): extreme meshes, albedo 0.99 with 64 bounces in a
-///     deep well, NaN/Inf/negative/1e30 texels.
+///     deep well, NaN/Inf/negative/1e30 texels, a Phong lobe of N = 1000 at lmax 2 (both glossy
+///     paths).
 ///
 /// References
 /// [1] Atkinson, Han, "Spherical Harmonics and Approximations on the Unit Sphere", 2012, 5.2.

@@ -113,24 +113,28 @@ std::vector<glm::vec3> GlossyFromMatrices(const Mesh& mesh, const Transport& tra
   std::vector<glm::vec3> out(mesh.vertex_count(), glm::vec3(0.0f));
   if (!material.glossy) return out;
   ParallelFor(out.size(), 256, [&](std::size_t begin, std::size_t end) {
-    std::vector<double> y(n), hy(n);
+    std::vector<double> y(n), hy(n), w(n);
     for (std::size_t v = begin; v < end; ++v) {
       const glm::dvec3 r = LobeAxis(glm::dvec3(mesh.normals[v]), glm::dvec3(mesh.positions[v]), eye);
       EvalBasis(lmax, r, y.data());
       for (int l = 0, k = 0; l <= lmax; ++l)
         for (int m = -l; m <= l; ++m, ++k) hy[k] = h[l] * y[k];
-      for (int c = 0; c < 3; ++c) {
-        // KS hy^T M L: the lobe row times the matrix, then the light.
-        const float* m = transport.matrices.data() + (v * transport.channels + (transport.channels == 1 ? 0 : c)) * nn;
-        double sum = 0.0;
+      // KS (hy^T M) L: the lobe row times the matrix, then the light. The row product is the
+      // n^2 part of the cost: one for all three colours when they share a matrix.
+      for (int c = 0; c < transport.channels; ++c) {
+        const float* m = transport.matrices.data() + (v * transport.channels + c) * nn;
+        std::fill(w.begin(), w.begin() + used, 0.0);
         for (int i = 0; i < n; ++i) {
           if (hy[i] == 0.0) continue;
           const float* row = m + std::size_t(i) * n;
-          double ml = 0.0;
-          for (int j = 0; j < used; ++j) ml += double(row[j]) * light[j][c];
-          sum += hy[i] * ml;
+          for (int j = 0; j < used; ++j) w[j] += hy[i] * double(row[j]);
         }
-        out[v][c] = static_cast<float>(material.ks * sum);
+        for (int cc = 0; cc < 3; ++cc) {
+          if (transport.channels != 1 && cc != c) continue;
+          double sum = 0.0;
+          for (int j = 0; j < used; ++j) sum += w[j] * light[j][cc];
+          out[v][cc] = static_cast<float>(material.ks * sum);
+        }
       }
     }
   });

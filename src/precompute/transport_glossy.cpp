@@ -3,12 +3,14 @@
 // points send out as diffuse surfaces.
 #include <atomic>
 #include <cmath>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "geometry/ray.h"
+#include "geometry/ray_fan.h"
 #include "material/lobe_transfer.h"
 #include "precompute/lobe_rays.h"
 #include "precompute/transport_steps.h"
@@ -36,6 +38,9 @@ std::vector<double> ComputeGlossy(const Mesh& mesh, const Bvh* bvh, const Transp
   ParallelFor(nv, 32, [&](std::size_t begin, std::size_t end) {
     std::vector<double> t(count), y(count);
     LobeRays lobe_rays;
+    std::vector<glm::vec3> directions;
+    std::vector<std::uint8_t> blocked;
+    std::vector<std::optional<Hit>> hits;
     std::uint64_t local_rays = 0;
     for (std::size_t v = begin; v < end; ++v) {
       const glm::dvec3 p(mesh.positions[v]), n(mesh.normals[v]);
@@ -46,33 +51,30 @@ std::vector<double> ComputeGlossy(const Mesh& mesh, const Bvh* bvh, const Transp
         for (int k = 0; k < count; ++k) out[c * count + k] = ks * t[k];
       if (!bvh) continue;
 
-      // What is blocked, from m rays drawn from the lobe (lobe_rays.h).
+      // What is blocked, from m rays drawn from the lobe (lobe_rays.h), traced as one fan: the
+      // lobe's directions are close together, so the packets of the fan share their nodes.
       DrawLobeRays(lobe, r, m, o.seed, v, lobe_rays);
+      directions.assign(lobe_rays.dirs.begin(), lobe_rays.dirs.end());
+      const RayFan fan = MakeRayFan(directions);
       const glm::vec3 origin = OffsetRayOrigin(mesh.positions[v], mesh.normals[v], scene_scale);
+      const float inf = std::numeric_limits<float>::infinity();
+      if (hit_transfer) bvh->IntersectFan(fan, origin, mesh.normals[v], inf, hits);
+      else bvh->OccludedFan(fan, origin, mesh.normals[v], inf, blocked);
       for (int i = 0; i < m; ++i) {
         const glm::dvec3& s = lobe_rays.dirs[i];
         const double cosine = glm::dot(n, s);
         if (cosine <= 0.0) continue;
-        Ray ray;
-        ray.origin = origin;
-        ray.dir = glm::vec3(s);
         ++local_rays;
+        if (hit_transfer ? !hits[i] : !blocked[i]) continue;
         const double f = ks * lobe_rays.weights[i] * cosine;
-        if (!hit_transfer) {
-          if (!bvh->Occluded(ray)) continue;
-          EvalBasis(o.lmax, s, y.data());
-          for (int c = 0; c < channels; ++c)
-            for (int k = 0; k < count; ++k) out[c * count + k] -= f * y[k];
-          continue;
-        }
-        const auto hit = bvh->Intersect(ray);
-        if (!hit) continue;
         EvalBasis(o.lmax, s, y.data());
         for (int c = 0; c < channels; ++c)
           for (int k = 0; k < count; ++k) out[c * count + k] -= f * y[k];
-        if (!FrontSide(mesh, *hit, ray.dir)) continue;  // the unlit back of a surface sends nothing
+        // The unlit back of a surface sends nothing.
+        if (!hit_transfer || !FrontSide(mesh, *hits[i], glm::vec3(s))) continue;
         for (int c = 0; c < channels; ++c)
-          AddHitLight(mesh, hit->triangle, hit->u, hit->v, *hit_transfer, channels, count, c, f, out + c * count);
+          AddHitLight(mesh, hits[i]->triangle, hits[i]->u, hits[i]->v, *hit_transfer, channels, count, c, f,
+                      out + c * count);
       }
     }
     rays += local_rays;

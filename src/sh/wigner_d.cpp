@@ -3,32 +3,63 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
+#include <vector>
+
+#include "sh/coeffs.h"
 
 namespace prt {
 namespace {
 
+/// lgamma(n + 1) for n = 0..2 kMaxBasisLmax + 1, computed once (the same numbers as calling it).
+long double LogFactorial(int n) {
+  static const std::vector<long double> table = [] {
+    std::vector<long double> t(2 * kMaxBasisLmax + 2);
+    for (std::size_t i = 0; i < t.size(); ++i) t[i] = std::lgamma(static_cast<long double>(i) + 1.0L);
+    return t;
+  }();
+  return n < int(table.size()) ? table[n] : std::lgamma(static_cast<long double>(n) + 1.0L);
+}
+
+/// cos, sin of beta/2 and their logarithms, kept per thread for the last beta: a rotation's
+/// (2 lmax + 1)^2 runs share one beta.
+struct HalfAngle {
+  double beta = std::numeric_limits<double>::quiet_NaN();
+  long double c = 0, s = 0, log_c = 0, log_s = 0;
+};
+
+const HalfAngle& HalfAngleOf(double beta) {
+  thread_local HalfAngle h;
+  if (!(h.beta == beta)) {
+    h.beta = beta;
+    h.c = std::cos(0.5L * beta), h.s = std::sin(0.5L * beta);
+    h.log_c = h.c > 0 ? std::log(h.c) : 0.0L;
+    h.log_s = h.s > 0 ? std::log(h.s) : 0.0L;
+  }
+  return h;
+}
+
 /// d^j_{j,k}(beta) with j = l0 >= |k| (the first closed form of the header).
-long double TopRow(int j, int k, long double c, long double s) {
-  const long double log_binomial = 0.5L * (std::lgamma(2.0L * j + 1) - std::lgamma(1.0L * j + k + 1) -
-                                          std::lgamma(1.0L * j - k + 1));
+long double TopRow(int j, int k, const HalfAngle& h) {
+  const long double log_binomial = 0.5L * (LogFactorial(2 * j) - LogFactorial(j + k) - LogFactorial(j - k));
   const int pc = j + k, ps = j - k;
-  if ((pc > 0 && c == 0) || (ps > 0 && s == 0)) return 0.0L;
+  if ((pc > 0 && h.c == 0) || (ps > 0 && h.s == 0)) return 0.0L;
   long double log_value = log_binomial;
-  if (pc > 0) log_value += pc * std::log(c);
-  if (ps > 0) log_value += ps * std::log(s);
+  if (pc > 0) log_value += pc * h.log_c;
+  if (ps > 0) log_value += ps * h.log_s;
   const long double sign = ((j - k) % 2 == 0) ? 1.0L : -1.0L;
   return sign * std::exp(log_value);
 }
 
 /// d^{l0}_{mk} with l0 = max(|m|, |k|), by the symmetries of the header.
 double Start(int m, int k, double beta) {
-  const long double c = std::cos(0.5L * beta), s = std::sin(0.5L * beta);
+  const HalfAngle& h = HalfAngleOf(beta);
   const int l0 = std::max(std::abs(m), std::abs(k));
   auto parity = [](int n) { return (n % 2 == 0) ? 1.0L : -1.0L; };
-  if (m == l0) return double(TopRow(l0, k, c, s));
-  if (k == -l0) return double(TopRow(l0, -m, c, s));                    // d_{mk} = d_{-k,-m}
-  if (k == l0) return double(parity(m - k) * TopRow(l0, m, c, s));      // d_{mk} = (-1)^(m-k) d_{km}
-  return double(parity(l0 + k) * TopRow(l0, -k, c, s));                 // m = -l0: = d_{-k,l0}
+  if (m == l0) return double(TopRow(l0, k, h));
+  if (k == -l0) return double(TopRow(l0, -m, h));                    // d_{mk} = d_{-k,-m}
+  if (k == l0) return double(parity(m - k) * TopRow(l0, m, h));      // d_{mk} = (-1)^(m-k) d_{km}
+  return double(parity(l0 + k) * TopRow(l0, -k, h));                 // m = -l0: = d_{-k,l0}
 }
 
 }  // namespace

@@ -1,0 +1,96 @@
+// The glossy part of `prt bench transport`, on the demo scene (albedo 0.5, so that KS 0.4 keeps
+// energy) seen from the demo camera, at one lmax, with all threads:
+//   - the shadowed diffuse precompute against the fixed-camera glossy one (phong:50,0.4: T and G),
+//     timed side by side -> ratio_glossy_vs_diffuse_precompute;
+//   - the transfer matrices' precompute (T and M) and their memory;
+//   - one orbit frame's shading (every vertex from its matrix, toward the eye) against one diffuse
+//     frame's (every vertex's L.T), timed side by side -> ratio_matrix_frame_vs_diffuse_frame. A
+//     frame there is the per-vertex shading only: the light's rotation (microseconds) and the
+//     rasterization, the same for both, are left out. The same with the rasterization of
+//     render's default frame (640x480, 2x2 supersampling) added to both ->
+//     ratio_matrix_frame_vs_diffuse_frame_with_raster, what a render loop sees.
+
+#include <algorithm>
+#include <string>
+
+#include "app/render_options.h"
+#include "bench/bench.h"
+#include "core/parallel.h"
+#include "env/procedural.h"
+#include "geometry/bvh_kernels.h"
+#include "geometry/mesh_ops.h"
+#include "geometry/procedural.h"
+#include "material/material.h"
+#include "precompute/light.h"
+#include "precompute/shade.h"
+#include "precompute/transfer_matrix.h"
+#include "precompute/transport.h"
+#include "raster/camera.h"
+#include "raster/rasterizer.h"
+
+namespace prt::bench {
+
+void BenchGlossy(int runs, int threads, int samples, int lmax) {
+  SetThreadCount(threads);
+  Mesh mesh = MakeDemoScene();
+  SetUniformAlbedo(mesh, glm::vec3(0.5f));
+  const glm::dvec3 eye = *WithDemoCamera({}).eye;
+  const Material material = ParseMaterial("phong:50,0.4");
+  Print("glossy_cpu_model", CpuModel());
+  Print("glossy_isa", IsaName(ActiveKernels().isa));
+  Print("glossy_threads", double(ThreadCount()));
+  Print("glossy_material", material.Name());
+  Print("glossy_vertices", double(mesh.vertex_count()));
+  Print("glossy_lmax", double(lmax));
+  Print("glossy_samples", double(samples));
+
+  TransportOptions diffuse;
+  diffuse.lmax = lmax;
+  diffuse.samples = samples;
+  TransportOptions glossy = diffuse;
+  glossy.material = material;
+  glossy.eye = eye;
+  TransportOptions matrices = glossy;
+  matrices.matrices = true;
+  Print("glossy_lobe_rays_per_vertex", double(LobeSamplesOf(samples)));
+
+  // Precompute: diffuse and fixed-camera glossy side by side, then the matrices.
+  const SideBySide pre = TimeSideBySide(runs, [&] { ComputeTransport(mesh, diffuse, nullptr); },
+                                        [&] { ComputeTransport(mesh, glossy, nullptr); });
+  Print("transport_diffuse_shadowed_s", pre.ours);
+  Print("transport_glossy_vector_s", pre.theirs);
+  Print("ratio_glossy_vs_diffuse_precompute", pre.ratio);
+  Transport m;
+  const double matrix_s = MedianSeconds(runs, [&] { m = ComputeTransport(mesh, matrices, nullptr); });
+  Print("transport_matrices_s", matrix_s);
+  Print("transport_matrices_bytes", double(TransferMatrixBytes(mesh.vertex_count(), lmax, m.channels)));
+  Print("ratio_matrices_vs_diffuse_precompute", matrix_s / pre.ours);
+
+  // One frame's shading of every vertex.
+  const Transport d = ComputeTransport(mesh, diffuse, nullptr);
+  const ShRgb light = ProjectLight(*MakeSky(SkyParams{}), lmax);
+  const SideBySide frame = TimeSideBySide(std::max(runs, 9), [&] { ShadeVertices(mesh, d, light); },
+                                          [&] { ShadeVertices(mesh, m, light, true, &eye); });
+  Print("frame_diffuse_shading_ms", 1e3 * frame.ours);
+  Print("frame_matrix_shading_ms", 1e3 * frame.theirs);
+  Print("ratio_matrix_frame_vs_diffuse_frame", frame.ratio);
+  const RenderOptions demo = WithDemoCamera({});
+  Camera camera;
+  camera.eye = glm::vec3(*demo.eye);
+  camera.target = glm::vec3(*demo.target);
+  camera.fov_deg = float(*demo.fov);
+  RasterOptions raster;
+  raster.ssaa = demo.ssaa;
+  Rasterizer rasterizer;
+  const auto draw = [&](const std::vector<glm::vec3>& colors) {
+    rasterizer.Draw(camera, demo.width, demo.height, mesh.positions, mesh.triangles, colors, raster);
+  };
+  const SideBySide drawn = TimeSideBySide(std::max(runs, 9), [&] { draw(ShadeVertices(mesh, d, light)); },
+                                          [&] { draw(ShadeVertices(mesh, m, light, true, &eye)); });
+  Print("frame_diffuse_with_raster_ms", 1e3 * drawn.ours);
+  Print("frame_matrix_with_raster_ms", 1e3 * drawn.theirs);
+  Print("ratio_matrix_frame_vs_diffuse_frame_with_raster", drawn.ratio);
+  SetThreadCount(0);
+}
+
+}  // namespace prt::bench
