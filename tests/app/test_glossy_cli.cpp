@@ -95,6 +95,26 @@ TEST_SUITE("app") {
     CHECK(most > 0.05);  // the faces that face the camera get a good part of KS
   }
 
+  TEST_CASE("--vertex-radiance: row i belongs to corner i of the file's faces") {
+    // A floor and a wall of different colours under furnace light, unshadowed: every corner's
+    // radiance is its own albedo, so the floor's faces (first in the file) give the floor's
+    // colour and the wall's the wall's. Rows in any other order would mix them.
+    const std::string dir = ScratchDir("vertex_radiance_order");
+    const glm::vec3 floor_kd(0.2f, 0.4f, 0.6f), wall_kd(0.7f, 0.5f, 0.1f);
+    const std::string obj = WriteFloorAndWall(dir, floor_kd, wall_kd);
+    const RunResult r = RunPrt("render --quiet --mesh " + Q(obj) + " --env furnace --transport unshadowed --frames 1 "
+                               "--size 16x16 --out " + Q(dir + "/out") + " --vertex-radiance " + Q(dir + "/v.txt"));
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    long count = 0;
+    const std::vector<glm::dvec3> rows = ReadVertexRadiance(dir + "/v.txt", count);
+    REQUIRE(rows.size() == 3 * (FloorTriangles() + WallTriangles()));
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      const glm::vec3 kd = i < 3 * FloorTriangles() ? floor_kd : wall_kd;
+      CAPTURE(i);
+      CHECK(glm::length(rows[i] - glm::dvec3(kd)) < 1e-6);
+    }
+  }
+
   TEST_CASE("--orbit: glossy frames come from transfer matrices, frame 0 close to the fixed camera's") {
     const std::string dir = ScratchDir("orbit");
     const std::string scene = Tetrahedron() + " --env sky --albedo 0.5,0.5,0.5 --material phong:2,0.4 --transport unshadowed";
