@@ -11,6 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/image.h"
+#include "core/parallel.h"
 
 namespace prt::test {
 
@@ -74,5 +75,16 @@ RunResult RunCommand(const std::string& command);
 
 /// Runs PrtBinary() with a shell-quoted argument string.
 RunResult RunPrt(const std::string& arguments);
+
+/// What `f` returns when run with `threads` worker threads; all cores again afterwards, also when
+/// it throws (the determinism tests: same result for any thread count).
+template <class F>
+auto WithThreads(int threads, F&& f) {
+  struct Restore {
+    ~Restore() { SetThreadCount(0); }
+  } restore;
+  SetThreadCount(threads);
+  return f();
+}
 
 }  // namespace prt::test

@@ -216,10 +216,7 @@ Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, c
 }
 
 void CheckMatrixMemory(const Mesh& mesh, const SceneOptions& options) {
-  // Coloured albedo with interreflection needs one matrix per channel (transport.h).
-  bool grey = true;
-  for (const glm::vec3& a : mesh.albedo) grey = grey && a.x == a.y && a.y == a.z;
-  const int channels = options.transport == "interreflection" && !grey ? 3 : 1;
+  const int channels = TransportChannels(mesh, TransportModeFromName(options.transport));
   const std::uint64_t need = TransferMatrixBytes(mesh.vertex_count(), options.lmax, channels);
   const std::uint64_t available = AvailableMemoryBytes();
   const std::uint64_t budget = std::uint64_t(kMatrixMemoryShare * double(available));

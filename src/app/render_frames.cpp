@@ -38,12 +38,7 @@ std::vector<glm::vec3> ViewColors(const Mesh& mesh, const Transport& transport, 
                                   const RenderOptions& o, double scale, const glm::dvec3& eye) {
   if (o.view == "irradiance") return ShadeVertices(mesh, transport, lit, false);
   if (o.view == "albedo") return mesh.albedo;
-  if (o.view == "glossy") {  // the whole radiance minus the diffuse part albedo (L . T)
-    std::vector<glm::vec3> colors = ShadeVertices(mesh, transport, lit, true, &eye);
-    const std::vector<glm::vec3> diffuse = ShadeVertices(mesh, transport, lit, false);
-    for (std::size_t v = 0; v < colors.size(); ++v) colors[v] -= mesh.albedo[v] * diffuse[v];
-    return colors;
-  }
+  if (o.view == "glossy") return ShadeGlossy(mesh, transport, lit, &eye);
   std::vector<glm::vec3> colors(mesh.vertex_count());
   if (o.view == "light") {
     for (std::size_t v = 0; v < colors.size(); ++v) colors[v] = Reconstruct(lit, glm::dvec3(mesh.normals[v]));
@@ -108,8 +103,7 @@ const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, cons
                                   const Camera& camera, const RenderOptions& o, double angle, double view_scale) {
   // The light, and the environment behind the mesh, turned by R: L'(d) = L(R^T d). Only the
   // bands the transport has are turned.
-  const ShRgb used(light.begin(), light.begin() + std::min(light.size(), std::size_t(CoeffCount(transport.lmax))));
-  const ShRgb lit = rotation.Rotate(used, angle);
+  const ShRgb lit = rotation.Rotate(FirstBands(light, transport.lmax), angle);
   const std::vector<glm::vec3> colors = ViewColors(mesh, transport, lit, o, view_scale, glm::dvec3(camera.eye));
   RasterOptions ro;
   ro.ssaa = o.ssaa;

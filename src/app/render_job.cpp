@@ -39,9 +39,8 @@ void NoteForeignFrames(OutputFolder& folder) {
 /// shades it, to `path` (io/transport_txt.h).
 void WriteVertexRadiance(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Camera& camera,
                          const std::string& path) {
-  const ShRgb used(light.begin(), light.begin() + std::min(light.size(), std::size_t(CoeffCount(transport.lmax))));
   const glm::dvec3 eye(camera.eye);
-  WriteFileAtomic(path, FormatVertexRadianceTxt(mesh, ShadeVertices(mesh, transport, used, true, &eye)));
+  WriteFileAtomic(path, FormatVertexRadianceTxt(mesh, ShadeVertices(mesh, transport, FirstBands(light, transport.lmax), true, &eye)));
   Summary("vertex radiance: frame 0's linear RGB radiance of " + std::to_string(mesh.vertex_count()) +
           " vertices toward the camera, three rows per face, in " + path);
 }

@@ -20,35 +20,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// The share of the lobe's energy the warning of scene_options.cpp asks the bands to keep.
-constexpr double kShareWanted = 0.9;
-
-ShRgb Prefix(const ShRgb& light, int lmax) { return ShRgb(light.begin(), light.begin() + CoeffCount(lmax)); }
-
-std::vector<glm::dvec3> ToDouble(const std::vector<glm::vec3>& v) { return {v.begin(), v.end()}; }
-
-Material Phong(int exponent, double ks) {
-  Material m;
-  m.glossy = true;
-  m.lobe = Lobe{LobeKind::kPhong, exponent};
-  m.ks = ks;
-  return m;
-}
-
-/// The vector path's lobe part L.G of every vertex (the light's first bands, as ShadeVertices).
-std::vector<glm::vec3> VectorLobe(const Transport& t, const ShRgb& light) {
-  const int count = std::min<int>(CoeffCount(t.lmax), int(light.size()));
-  std::vector<glm::vec3> out(t.vertices);
-  for (std::size_t v = 0; v < t.vertices; ++v)
-    for (int c = 0; c < 3; ++c) {
-      const float* g = t.glossy_at(v, c);
-      double s = 0.0;
-      for (int k = 0; k < count; ++k) s += light[k][c] * g[k];
-      out[v][c] = float(s);
-    }
-  return out;
-}
-
 /// The radiance of one (N, lmax) of the vector path, kept for the matrix path's comparison.
 struct VectorShading {
   std::vector<glm::vec3> total, lobe;
@@ -95,8 +66,9 @@ GlossyStudy RunGlossyStudy(const Mesh& mesh, const Environment& env, const glm::
   for (int n : c.exponents) {
     GlossyExponent e;
     e.exponent = n;
-    for (int l = 0; l <= kMaxLmax && e.share_lmax < 0; ++l)
-      if (LobeBandShare(Lobe{LobeKind::kPhong, n}, l) >= kShareWanted) e.share_lmax = l;
+    const Lobe lobe{LobeKind::kPhong, n};
+    e.share_lmax = LmaxForShare(lobe, kLobeShareWarning, kMaxLmax);
+    if (LobeBandShare(lobe, e.share_lmax) < kLobeShareWarning) e.share_lmax = -1;  // not within kMaxLmax
     study.exponents.push_back(e);
   }
 
@@ -121,7 +93,7 @@ GlossyStudy RunGlossyStudy(const Mesh& mesh, const Environment& env, const glm::
     for (GlossyExponent& e : study.exponents) {
       const int n = e.exponent;
       GlossyNeed& need = mode == TransportMode::kShadowed ? e.shadowed : e.unshadowed;
-      ro.material = Phong(n, c.ks);
+      ro.material = GlossyMaterial(Lobe{LobeKind::kPhong, n}, c.ks);
       const auto t0 = Clock::now();
       const Reference glossy = ComputeReference(mesh, env, ro);
       need.reference_seconds = SecondsSince(t0);
@@ -135,7 +107,7 @@ GlossyStudy RunGlossyStudy(const Mesh& mesh, const Environment& env, const glm::
       const double count = 3.0 * double(std::max<std::size_t>(1, ref.lobe.size()));
       need.lobe_share = glossy.rms_radiance > 0 ? std::sqrt(lobe2 / count) / glossy.rms_radiance : 0.0;
 
-      to.material = Phong(n, c.ks);
+      to.material = GlossyMaterial(Lobe{LobeKind::kPhong, n}, c.ks);
       need.best_lobe_error = std::numeric_limits<double>::infinity();
       for (int l : vector_lmax) {
         GlossyVectorRow row;
@@ -145,8 +117,8 @@ GlossyStudy RunGlossyStudy(const Mesh& mesh, const Environment& env, const glm::
         to.lmax = l;
         int directions = 0;
         const Transport t = TimedTransport(mesh, to, row.seconds, directions);
-        const ShRgb part = Prefix(light, l);
-        VectorShading s{ShadeVertices(mesh, t, part), VectorLobe(t, part)};
+        const ShRgb part = FirstBands(light, l);
+        VectorShading s{ShadeVertices(mesh, t, part), ShadeGlossy(mesh, t, part)};
         row.total = CompareVertices(s.total, ref.total);
         row.lobe = CompareVertices(s.lobe, ref.lobe);
         row.band_share = LobeBandShare(to.material.lobe, l);
@@ -169,28 +141,28 @@ GlossyStudy RunGlossyStudy(const Mesh& mesh, const Environment& env, const glm::
   to.samples = c.samples;
   to.seed = c.seed;
   to.matrices = true;
-  to.material = Phong(c.exponents.front(), c.ks);
+  to.material = GlossyMaterial(Lobe{LobeKind::kPhong, c.exponents.front()}, c.ks);
   for (int l : c.matrix_lmax) {
     to.lmax = l;
     double seconds = 0.0;
     int directions = 0;
     Transport t = TimedTransport(mesh, to, seconds, directions);
-    const ShRgb part = Prefix(light, l);
+    const ShRgb part = FirstBands(light, l);
     for (int n : c.exponents) {
-      t.material = Phong(n, c.ks);
+      t.material = GlossyMaterial(Lobe{LobeKind::kPhong, n}, c.ks);
       GlossyMatrixRow row;
       row.exponent = n;
       row.lmax = l;
       row.seconds = seconds;
       row.bytes = TransferMatrixBytes(mesh.vertex_count(), l, t.channels);
       const std::vector<glm::vec3> total = ShadeVertices(mesh, t, part, true, &eye);
-      const std::vector<glm::vec3> lobe = GlossyFromMatrices(mesh, t, t.material, part, eye);
+      const std::vector<glm::vec3> lobe = ShadeGlossy(mesh, t, part, &eye);
       const References& ref = shadowed_references.at(n);
       row.total = CompareVertices(total, ref.total);
       row.lobe = CompareVertices(lobe, ref.lobe);
       const VectorShading& s = kept.at({n, l});
-      row.vs_vector = CompareVertices(total, ToDouble(s.total));
-      row.lobe_vs_vector = CompareVertices(lobe, ToDouble(s.lobe));
+      row.vs_vector = CompareVertices(total, s.total);
+      row.lobe_vs_vector = CompareVertices(lobe, s.lobe);
       study.matrix_rows.push_back(row);
     }
   }

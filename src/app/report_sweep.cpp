@@ -21,10 +21,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-ShRgb Prefix(const ShRgb& light, int lmax) { return ShRgb(light.begin(), light.begin() + CoeffCount(lmax)); }
-
-std::vector<glm::dvec3> ToDouble(const std::vector<glm::vec3>& v) { return {v.begin(), v.end()}; }
-
 double RelativeL2(const ShRgb& x, const ShRgb& ref) {
   double d2 = 0, r2 = 0;
   for (std::size_t k = 0; k < ref.size(); ++k) {
@@ -49,10 +45,10 @@ struct Scorer {
              std::vector<SweepRow>& rows) const {
     for (int l = 1; l <= max_lmax; ++l) {
       // ShadeVertices uses as many bands as the light has: the transport's first l bands.
-      const std::vector<glm::vec3> colors = ShadeVertices(mesh, t, Prefix(light, l));
+      const std::vector<glm::vec3> colors = ShadeVertices(mesh, t, FirstBands(light, l));
       row.lmax = l;
       if (converged)
-        row.sampling = CompareVertices(colors, ToDouble(ShadeVertices(mesh, *converged, Prefix(light, l))));
+        row.sampling = CompareVertices(colors, ShadeVertices(mesh, *converged, FirstBands(light, l)));
       row.total = CompareVertices(colors, reference.radiance);
       row.psnr = CompareImages(DrawVertexColors(mesh, colors, env, camera, picture), reference_image).psnr;
       rows.push_back(row);
@@ -166,11 +162,11 @@ ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::s
     double half_seconds = 0;
     const Transport half = TimedTransport(mesh, to, half_seconds, dirs);
     base.converged_self_error =
-        CompareVertices(ShadeVertices(mesh, half, light), ToDouble(ShadeVertices(mesh, converged, light))).relative;
+        CompareVertices(ShadeVertices(mesh, half, light), ShadeVertices(mesh, converged, light)).relative;
     to.seed = c.seed;
     base.truncation.assign(c.max_lmax + 1, 0.0);
     for (int l = 0; l <= c.max_lmax; ++l)
-      base.truncation[l] = CompareVertices(ShadeVertices(mesh, converged, Prefix(light, l)), reference.radiance).relative;
+      base.truncation[l] = CompareVertices(ShadeVertices(mesh, converged, FirstBands(light, l)), reference.radiance).relative;
     std::snprintf(line, sizeof line, "report: %s converged transport, %d fibonacci directions [%.2f s]",
                   base.mode.c_str(), c.converged_samples, base.converged_seconds);
     Summary(line);

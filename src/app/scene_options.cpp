@@ -135,8 +135,7 @@ void WarnIfLobeTooSharp(const SceneOptions& o) {
   if (!o.material.glossy) return;
   const double share = LobeBandShare(o.material.lobe, o.lmax);
   if (share >= kLobeShareWarning) return;
-  int needed = o.lmax;
-  while (needed < kMaxLmax && LobeBandShare(o.material.lobe, needed) < kLobeShareWarning) ++needed;
+  const int needed = LmaxForShare(o.material.lobe, kLobeShareWarning, kMaxLmax);
   Warn("--material " + o.material.Name() + Formatted(": bands 0..%d keep %.0f%% of the lobe's energy", o.lmax, 100.0 * share) +
        ", so highlights come out as broad as lmax " + std::to_string(o.lmax) + " allows, not as sharp as N = " +
        std::to_string(o.material.lobe.exponent) + " (lmax " + std::to_string(needed) + " keeps " +

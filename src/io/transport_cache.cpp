@@ -40,7 +40,8 @@ std::uint64_t TransportKey(const Mesh& mesh, const TransportOptions& o) {
                               " lmax=" + std::to_string(o.lmax) + " samples=" + std::to_string(o.samples) +
                               " sampler=" + SamplerName(o.sampler) + " bounces=" + std::to_string(o.bounces) +
                               " seed=" + std::to_string(o.seed) + " tol=" + std::to_string(o.bounce_tolerance) +
-                              " sets=" + std::to_string(o.direction_sets) + " material=" + (o.matrices ? std::string("any glossy") : o.material.Name()) +
+                              " sets=" + std::to_string(o.direction_sets) +
+                              " material=" + (o.matrices ? std::string("any glossy") : o.material.Name()) +
                               " lobe_samples=" + std::to_string(o.lobe_samples) + " matrices=" + std::to_string(o.matrices);
   if (o.material.glossy && !o.matrices) {  // G depends on KS and the eye to the bit; matrices on neither
     h = Fnv1a(&o.material.ks, sizeof o.material.ks, h);

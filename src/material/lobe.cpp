@@ -82,6 +82,12 @@ double LobeBandShare(const Lobe& lobe, int lmax) {
   return kept / total;
 }
 
+int LmaxForShare(const Lobe& lobe, double share, int max_lmax) {
+  int lmax = 0;
+  while (lmax < max_lmax && LobeBandShare(lobe, lmax) < share) ++lmax;
+  return lmax;
+}
+
 std::string Lobe::Name() const {
   return (kind == LobeKind::kPhong ? "phong:" : "raised-cosine:") + std::to_string(exponent);
 }

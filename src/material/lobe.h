@@ -59,6 +59,10 @@ struct Lobe {
 /// to l = 3 sqrt(N) + 20; what lies beyond is below 3e-5 of the energy (measured, N = 1..1000).
 double LobeBandShare(const Lobe& lobe, int lmax);
 
+/// The lowest lmax (up to `max_lmax`) whose bands keep `share` of the lobe's energy; max_lmax
+/// when none does.
+int LmaxForShare(const Lobe& lobe, double share, int max_lmax);
+
 /// The band share below which prt warns that lmax blurs a glossy lobe (its highlight is then as
 /// broad as the bands, not as the lobe).
 constexpr double kLobeShareWarning = 0.9;

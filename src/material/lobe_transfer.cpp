@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "core/frame.h"
 #include "core/parallel.h"
 #include "sh/basis.h"
 #include "sh/coeffs.h"
@@ -41,10 +42,26 @@ const Rule& GaussRule(int n) {
   return r;
 }
 
-/// Any unit vector perpendicular to the unit vector r.
-glm::dvec3 Perpendicular(const glm::dvec3& r) {
-  const glm::dvec3 a = std::abs(r.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-  return glm::normalize(glm::cross(r, a));
+/// The lobe's frame: (e1, e2, r) right-handed with n in the (e1, r) half-plane, n.r = cg and
+/// |n x r| = sg (e1 any perpendicular of r when n is along r).
+struct LobeFrame {
+  double cg, sg;
+  glm::dvec3 e1, e2;
+};
+
+LobeFrame LobeFrameOf(const glm::dvec3& n, const glm::dvec3& r) {
+  LobeFrame f;
+  f.cg = std::clamp(glm::dot(n, r), -1.0, 1.0);
+  const glm::dvec3 across = n - f.cg * r;
+  f.sg = glm::length(across);
+  if (f.sg > 1e-12) {
+    f.e1 = across / f.sg;
+  } else {
+    glm::dvec3 unused;
+    TangentFrame(r, f.e1, unused);
+  }
+  f.e2 = glm::cross(r, f.e1);
+  return f;
 }
 
 /// The theta pieces: [0, end] split at the kinks (graded toward them) and every `width`.
@@ -85,11 +102,9 @@ glm::dvec3 LobeAxis(const glm::dvec3& normal, const glm::dvec3& position, const 
 void LobeTransfer(const Lobe& lobe, const glm::dvec3& n, const glm::dvec3& r, int lmax, double* out) {
   const int count = CoeffCount(lmax);
   std::fill(out, out + count, 0.0);
-  const double cg = std::clamp(glm::dot(n, r), -1.0, 1.0);
-  const glm::dvec3 across = n - cg * r;
-  const double sg = glm::length(across);
-  const glm::dvec3 e1 = sg > 1e-12 ? across / sg : Perpendicular(r);
-  const glm::dvec3 e2 = glm::cross(r, e1);
+  const LobeFrame frame = LobeFrameOf(n, r);
+  const double cg = frame.cg, sg = frame.sg;
+  const glm::dvec3 &e1 = frame.e1, &e2 = frame.e2;
   const double g = std::acos(cg);
   const double end = std::min(lobe.SupportAngle(), std::acos(lobe.MinMu()));
   const std::vector<double> breaks = ThetaBreaks(end, lobe.Width(), {std::abs(kPi / 2 - g), kPi / 2 + g});
@@ -138,11 +153,9 @@ LobeTransferTable::LobeTransferTable(const Lobe& lobe, int lmax)
 }
 
 void LobeTransferTable::Transfer(const glm::dvec3& n, const glm::dvec3& r, double* out) const {
-  const double cg = std::clamp(glm::dot(n, r), -1.0, 1.0);
-  const glm::dvec3 across = n - cg * r;
-  const double sg = glm::length(across);
-  const glm::dvec3 e1 = sg > 1e-12 ? across / sg : Perpendicular(r);
-  const glm::dvec3 e2 = glm::cross(r, e1);
+  const LobeFrame frame = LobeFrameOf(n, r);
+  const double cg = frame.cg, sg = frame.sg;
+  const glm::dvec3 &e1 = frame.e1, &e2 = frame.e2;
   // Cubic Lagrange interpolation in g on the four nodes around it (clamped at the ends).
   const double x = std::atan2(sg, cg) / kPi * double(nodes_ - 1);
   const int first = std::clamp(int(std::floor(x)) - 1, 0, nodes_ - 4);
@@ -152,7 +165,8 @@ void LobeTransferTable::Transfer(const glm::dvec3& n, const glm::dvec3& r, doubl
     for (int b = 0; b < 4; ++b)
       if (b != a) w[a] *= (x - double(first + b)) / double(a - b);
   }
-  std::vector<double> local(count_, 0.0);
+  thread_local std::vector<double> local;  // per thread, not per vertex
+  local.assign(count_, 0.0);
   for (int a = 0; a < 4; ++a) {
     const double* row = table_.data() + std::size_t(first + a) * count_;
     for (int k = 0; k < count_; ++k) local[k] += w[a] * row[k];

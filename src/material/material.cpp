@@ -12,6 +12,14 @@ std::string Material::Name() const {
   return "phong:" + std::to_string(lobe.exponent) + "," + ShortestFloat(float(ks));
 }
 
+Material GlossyMaterial(const Lobe& lobe, double ks) {
+  Material m;
+  m.glossy = true;
+  m.lobe = lobe;
+  m.ks = ks;
+  return m;
+}
+
 Material ParseMaterial(const std::string& text) {
   const std::string expected = " (expected diffuse or phong:N[,KS], N an integer from " +
                                std::to_string(kMinPhongExponent) + " to " + std::to_string(kMaxPhongExponent) +
@@ -25,9 +33,7 @@ Material ParseMaterial(const std::string& text) {
   const auto n = ParseNumber(n_text);
   if (!n || *n != std::floor(*n) || *n < kMinPhongExponent || *n > kMaxPhongExponent)
     throw Error("'" + text + "': exponent '" + n_text + "' " + (n ? "is out of range" : "is not an integer") + expected);
-  m.glossy = true;
-  m.lobe.kind = LobeKind::kPhong;
-  m.lobe.exponent = static_cast<int>(*n);
+  m = GlossyMaterial(Lobe{LobeKind::kPhong, static_cast<int>(*n)}, m.ks);
   if (comma != std::string::npos) {
     const std::string ks_text = rest.substr(comma + 1);
     const auto ks = ParseNumber(ks_text);

@@ -26,6 +26,9 @@ struct Material {
   std::string Name() const;
 };
 
+/// A glossy material of `lobe` weighted by `ks`.
+Material GlossyMaterial(const Lobe& lobe, double ks);
+
 /// Exponent range of phong:N.
 constexpr int kMinPhongExponent = 1, kMaxPhongExponent = 1000;
 

@@ -9,8 +9,8 @@
 namespace prt {
 namespace {
 
-template <class V>
-VertexError Compare(const std::vector<V>& x, const std::vector<glm::dvec3>& ref) {
+template <class V, class R>
+VertexError Compare(const std::vector<V>& x, const std::vector<R>& ref) {
   if (x.size() != ref.size())
     throw Error("vertex error: " + std::to_string(x.size()) + " values against a reference of " +
                 std::to_string(ref.size()) + " (expected the same vertex count)");
@@ -18,9 +18,9 @@ VertexError Compare(const std::vector<V>& x, const std::vector<glm::dvec3>& ref)
   double d2 = 0, r2 = 0;
   for (std::size_t v = 0; v < x.size(); ++v)
     for (int c = 0; c < 3; ++c) {
-      const double d = double(x[v][c]) - ref[v][c];
+      const double d = double(x[v][c]) - double(ref[v][c]);
       d2 += d * d;
-      r2 += ref[v][c] * ref[v][c];
+      r2 += double(ref[v][c]) * double(ref[v][c]);
       e.max = std::max(e.max, std::abs(d));
     }
   const double n = x.empty() ? 1.0 : 3.0 * double(x.size());
@@ -35,6 +35,9 @@ VertexError CompareVertices(const std::vector<glm::vec3>& x, const std::vector<g
   return Compare(x, ref);
 }
 VertexError CompareVertices(const std::vector<glm::dvec3>& x, const std::vector<glm::dvec3>& ref) {
+  return Compare(x, ref);
+}
+VertexError CompareVertices(const std::vector<glm::vec3>& x, const std::vector<glm::vec3>& ref) {
   return Compare(x, ref);
 }
 

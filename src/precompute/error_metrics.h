@@ -31,6 +31,7 @@ struct VertexError {
 /// Error of `x` against `ref` (same length; throws Error otherwise).
 VertexError CompareVertices(const std::vector<glm::vec3>& x, const std::vector<glm::dvec3>& ref);
 VertexError CompareVertices(const std::vector<glm::dvec3>& x, const std::vector<glm::dvec3>& ref);
+VertexError CompareVertices(const std::vector<glm::vec3>& x, const std::vector<glm::vec3>& ref);
 
 /// Compensated (Neumaier) running sum.
 class NeumaierSum {

@@ -8,6 +8,27 @@
 
 namespace prt {
 
+std::vector<glm::vec3> ShadeGlossy(const Mesh& mesh, const Transport& transport, const ShRgb& light,
+                                   const glm::dvec3* eye) {
+  if (!transport.matrices.empty()) {
+    if (!eye) throw Error("shading by transfer matrices needs the camera's eye (internal)");
+    return GlossyFromMatrices(mesh, transport, transport.material, light, *eye);
+  }
+  std::vector<glm::vec3> colors(mesh.vertex_count(), glm::vec3(0.0f));
+  if (transport.glossy.empty()) return colors;
+  const int count = std::min<int>(CoeffCount(transport.lmax), static_cast<int>(light.size()));
+  ParallelFor(colors.size(), 1024, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v)
+      for (int c = 0; c < 3; ++c) {
+        const float* g = transport.glossy_at(v, c);
+        double s = 0.0;
+        for (int k = 0; k < count; ++k) s += light[k][c] * g[k];
+        colors[v][c] = static_cast<float>(s);
+      }
+  });
+  return colors;
+}
+
 std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transport, const ShRgb& light,
                                      bool albedo, const glm::dvec3* eye) {
   const int count = std::min<int>(CoeffCount(transport.lmax), static_cast<int>(light.size()));
@@ -22,18 +43,10 @@ std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transpor
         sum[c] = s;
       }
       colors[v] = albedo ? glm::vec3(glm::dvec3(mesh.albedo[v]) * sum) : glm::vec3(sum);
-      if (transport.glossy.empty() || !albedo) continue;
-      for (int c = 0; c < 3; ++c) {
-        const float* g = transport.glossy_at(v, c);
-        double s = 0.0;
-        for (int k = 0; k < count; ++k) s += light[k][c] * g[k];
-        colors[v][c] += static_cast<float>(s);
-      }
     }
   });
-  if (albedo && !transport.matrices.empty()) {
-    if (!eye) throw Error("shading by transfer matrices needs the camera's eye (internal)");
-    const std::vector<glm::vec3> glossy = GlossyFromMatrices(mesh, transport, transport.material, light, *eye);
+  if (albedo && transport.material.glossy) {
+    const std::vector<glm::vec3> glossy = ShadeGlossy(mesh, transport, light, eye);
     for (std::size_t v = 0; v < colors.size(); ++v) colors[v] += glossy[v];
   }
   return colors;

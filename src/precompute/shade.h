@@ -24,4 +24,9 @@ namespace prt {
 std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transport, const ShRgb& light,
                                      bool albedo = true, const glm::dvec3* eye = nullptr);
 
+/// A glossy material's lobe term alone (what ShadeVertices adds to the diffuse part): L . G for
+/// the fixed view, or the lobe applied to M L toward `eye` from transfer matrices; 0 for diffuse.
+std::vector<glm::vec3> ShadeGlossy(const Mesh& mesh, const Transport& transport, const ShRgb& light,
+                                   const glm::dvec3* eye = nullptr);
+
 }  // namespace prt

@@ -9,7 +9,6 @@
 #include "core/frame.h"
 #include "core/parallel.h"
 #include "core/progress.h"
-#include "geometry/ray.h"
 #include "material/lobe_transfer.h"
 #include "precompute/transport_steps.h"
 #include "sh/basis.h"
@@ -55,48 +54,40 @@ void UnshadowedTransferMatrix(const glm::dvec3& normal, int lmax, double* out) {
   }
 }
 
-void ComputeTransferMatrices(const Mesh& mesh, const Bvh* bvh, const DirectionPool* pool, int lmax,
+void ComputeTransferMatrices(const Mesh& mesh, const DirectionPool* pool, const DirectResult* direct, int lmax,
                              const std::vector<double>* hit_transfer, Transport& transport) {
   const int n = CoeffCount(lmax);
   const std::size_t nn = std::size_t(n) * n, nv = mesh.vertex_count();
   const int channels = transport.channels;
   transport.matrices.assign(nv * channels * nn, 0.0f);
-  const float scene_scale = bvh ? bvh->SceneScale() : 0.0f;
   const double weight = pool ? 4.0 * kPi / double(pool->size()) : 0.0;
   Progress progress("transfer matrices", nv);
   ParallelFor(nv, 32, [&](std::size_t begin, std::size_t end) {
     std::vector<double> m(channels * nn), y(n), lit(n);
-    std::vector<std::uint8_t> blocked;
-    std::vector<std::optional<Hit>> hits;
     for (std::size_t v = begin; v < end; ++v) {
       const glm::dvec3 normal(mesh.normals[v]);
-      UnshadowedTransferMatrix(normal, lmax, m.data());
+      // As the direct transfer: a vertex none of whose directions is open gets exactly 0, not
+      // the closed form minus its noisy estimate.
+      const bool open = !direct || direct->sees_sky[v];
+      if (open) UnshadowedTransferMatrix(normal, lmax, m.data());
+      else std::fill(m.begin(), m.begin() + nn, 0.0);
       for (int c = 1; c < channels; ++c) std::copy(m.begin(), m.begin() + nn, m.begin() + c * nn);
-      if (bvh) {
-        const std::size_t set = pool->SetOf(v);
-        const auto& dirs = pool->sets[set];
-        const glm::vec3 origin = OffsetRayOrigin(mesh.positions[v], mesh.normals[v], scene_scale);
-        if (hit_transfer) bvh->IntersectFan(pool->fans[set], origin, mesh.normals[v], std::numeric_limits<float>::infinity(), hits);
-        else bvh->OccludedFan(pool->fans[set], origin, mesh.normals[v], std::numeric_limits<float>::infinity(), blocked);
-        bool any_open = false;
-        for (std::size_t i = 0; i < dirs.size(); ++i) {
-          const double cosine = glm::dot(normal, dirs[i]);
-          if (cosine <= 0.0) continue;
-          const bool is_blocked = hit_transfer ? hits[i].has_value() : blocked[i] != 0;
-          any_open |= !is_blocked;
-          if (!is_blocked) continue;
-          EvalBasis(lmax, dirs[i], y.data());
-          for (int c = 0; c < channels; ++c) AddOuter(-weight * cosine, y.data(), y.data(), n, m.data() + c * nn);
-          if (!hit_transfer || !FrontSide(mesh, *hits[i], glm::vec3(dirs[i]))) continue;
+      if (direct) {
+        // The blocked directions the direct pass found, with what they hit (transport_steps.h).
+        const auto& dirs = pool->sets[pool->SetOf(v)];
+        for (const VertexHit& h : direct->hits[v]) {
+          const double cosine = glm::dot(normal, dirs[h.dir]);
+          EvalBasis(lmax, dirs[h.dir], y.data());
+          if (open)
+            for (int c = 0; c < channels; ++c) AddOuter(-weight * cosine, y.data(), y.data(), n, m.data() + c * nn);
+          if (!hit_transfer || !h.front) continue;
           // The hit point's diffuse light: albedo(h) T(h), barycentric.
-          const Hit& h = *hits[i];
           for (int c = 0; c < channels; ++c) {
             std::fill(lit.begin(), lit.end(), 0.0);
             AddHitLight(mesh, h.triangle, h.u, h.v, *hit_transfer, channels, n, c, 1.0, lit.data());
             AddOuter(weight * cosine, y.data(), lit.data(), n, m.data() + c * nn);
           }
         }
-        if (!any_open && !hit_transfer) std::fill(m.begin(), m.end(), 0.0);
       }
       std::copy(m.begin(), m.end(), transport.matrices.begin() + v * channels * nn);
     }

@@ -22,7 +22,8 @@
 /// Estimator: the unshadowed matrix by a Gauss product rule about the normal (exact: Y_i Y_j z
 /// is a polynomial of degree 2 lmax + 1, integrated by lmax + 1 Gauss–Legendre nodes in z and
 /// 2 lmax + 2 azimuths), minus the Monte Carlo estimate over the pool's blocked directions (the
-/// same control variate as the diffuse transfer: unoccluded vertices get the exact matrix).
+/// same control variate as the diffuse transfer: unoccluded vertices get the exact matrix). The
+/// blocked directions are those the direct pass records (transport_steps.h): no second tracing.
 ///
 /// References
 /// [1] Sloan, Kautz, Snyder, "Precomputed Radiance Transfer for Real-Time Rendering in Dynamic,
@@ -47,12 +48,6 @@ std::uint64_t TransferMatrixBytes(std::size_t vertices, int lmax, int channels);
 
 /// The unshadowed matrix integral Y_i Y_j max(0, n.s) ds (n x n, row-major) into `out`.
 void UnshadowedTransferMatrix(const glm::dvec3& normal, int lmax, double* out);
-
-/// The matrices of every vertex into transport.matrices (layout in transport.h), from the pool's
-/// directions; `hit_transfer` (BounceResult::before_last, `channels` channels) with
-/// interreflection, else null. Null `bvh`: unshadowed.
-void ComputeTransferMatrices(const Mesh& mesh, const Bvh* bvh, const DirectionPool* pool, int lmax,
-                             const std::vector<double>* hit_transfer, Transport& transport);
 
 /// Linear RGB glossy radiance KS sum_l h_l sum_m (M L)_lm Y_lm(r) of every vertex seen from
 /// `eye` (h = the lobe's zonal coefficients, material/lobe.h); added to the diffuse part by

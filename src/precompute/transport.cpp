@@ -20,11 +20,12 @@ std::vector<float> ToFloat(const std::vector<double>& v) { return std::vector<fl
 
 /// The glossy transfer of `options.material` into `transport`: the fixed view's vector
 /// (transport_glossy.cpp) or the matrices for any view (transfer_matrix.h).
-void AddGlossy(const Mesh& mesh, const Bvh* bvh, const DirectionPool* pool, const TransportOptions& options,
-               const std::vector<double>* hits, Transport& transport, TransportReport& r) {
+void AddGlossy(const Mesh& mesh, const Bvh* bvh, const DirectionPool* pool, const DirectResult* direct,
+               const TransportOptions& options, const std::vector<double>* hits, Transport& transport,
+               TransportReport& r) {
   if (options.matrices) {
     const auto t0 = std::chrono::steady_clock::now();
-    ComputeTransferMatrices(mesh, bvh, pool, options.lmax, hits, transport);
+    ComputeTransferMatrices(mesh, pool, direct, options.lmax, hits, transport);
     r.matrix_seconds = SecondsSince(t0);
     return;
   }
@@ -87,7 +88,7 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
     });
     r.closed_form_vertices = transport.vertices;
     r.direct_seconds = SecondsSince(t0);
-    if (options.material.glossy) AddGlossy(mesh, nullptr, nullptr, options, nullptr, transport, r);
+    if (options.material.glossy) AddGlossy(mesh, nullptr, nullptr, nullptr, options, nullptr, transport, r);
     return transport;
   }
 
@@ -100,15 +101,17 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
   const DirectionPool pool =
       MakeDirectionPool(options.sampler, options.samples, options.direction_sets, options.seed);
   r.directions_per_vertex = static_cast<int>(pool.size());
-  const bool keep_hits = options.mode == TransportMode::kInterreflection;
+  // Bounces gather from the hits; transfer matrices are built from them.
+  const bool bounces = options.mode == TransportMode::kInterreflection;
+  const bool keep_hits = bounces || (options.material.glossy && options.matrices);
   DirectResult direct = ComputeDirect(mesh, bvh, pool, options.lmax, keep_hits);
   r.rays = direct.rays;
   r.closed_form_vertices = direct.closed_form_vertices;
   r.direct_seconds = SecondsSince(t0);
 
-  if (!keep_hits) {
+  if (!bounces) {
     transport.coeffs = ToFloat(direct.transfer);
-    if (options.material.glossy) AddGlossy(mesh, &bvh, &pool, options, nullptr, transport, r);
+    if (options.material.glossy) AddGlossy(mesh, &bvh, &pool, &direct, options, nullptr, transport, r);
     return transport;
   }
 
@@ -117,7 +120,7 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
   r.bounce_seconds = SecondsSince(t0);
   transport.channels = bounced.channels;
   transport.coeffs = ToFloat(bounced.transfer);
-  if (options.material.glossy) AddGlossy(mesh, &bvh, &pool, options, &bounced.before_last, transport, r);
+  if (options.material.glossy) AddGlossy(mesh, &bvh, &pool, &direct, options, &bounced.before_last, transport, r);
   return transport;
 }
 

@@ -122,6 +122,10 @@ struct TransportReport {
   double matrix_seconds = 0;              ///< the transfer matrices
 };
 
+/// Vectors per vertex the transport of `mesh` in `mode` will have: 3 for interreflection with
+/// coloured albedo (bounces differ per channel), else 1.
+int TransportChannels(const Mesh& mesh, TransportMode mode);
+
 /// Computes the transport of `mesh` (unit normals, albedo in [0, 1]).
 Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, TransportReport* report);
 

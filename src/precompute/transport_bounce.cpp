@@ -27,6 +27,10 @@ double Energy(const std::vector<double>& t, int count) {
 
 }  // namespace
 
+int TransportChannels(const Mesh& mesh, TransportMode mode) {
+  return mode == TransportMode::kInterreflection && !GreyAlbedo(mesh) ? 3 : 1;
+}
+
 void AddHitLight(const Mesh& mesh, std::uint32_t triangle, float u, float v, const std::vector<double>& transfer,
                  int channels, int count, int c, double scale, double* out) {
   const auto& tri = mesh.triangles[triangle];
@@ -46,7 +50,7 @@ BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const Direc
   const int count = CoeffCount(options.lmax);
   const std::size_t nv = mesh.vertex_count();
   BounceResult result;
-  result.channels = GreyAlbedo(mesh) ? 1 : 3;
+  result.channels = TransportChannels(mesh, TransportMode::kInterreflection);
   const int channels = result.channels;
   const std::size_t stride = static_cast<std::size_t>(channels) * count;
 

@@ -33,6 +33,7 @@ DirectResult ComputeDirect(const Mesh& mesh, const Bvh& bvh, const DirectionPool
   DirectResult result;
   result.transfer.resize(nv * count);
   if (keep_hits) result.hits.resize(nv);
+  result.sees_sky.resize(nv);
   const float scene_scale = bvh.SceneScale();
   const double weight = 4.0 / double(pool.size());  // (4 pi / N) * (1 / pi)
   std::atomic<std::uint64_t> rays{0};
@@ -74,6 +75,7 @@ DirectResult ComputeDirect(const Mesh& mesh, const Bvh& bvh, const DirectionPool
         }
       }
       if (!any_blocked) ++local_closed;
+      result.sees_sky[v] = any_open;
       // Nothing open: the transfer is exactly zero (the estimate of the blocked part would
       // only cancel the closed form up to its sampling noise).
       if (!any_open) std::fill(t.begin(), t.end(), 0.0);

@@ -34,6 +34,7 @@ struct VertexHit {
 struct DirectResult {
   std::vector<double> transfer;                ///< [v * count + k]
   std::vector<std::vector<VertexHit>> hits;    ///< per vertex (only when asked for)
+  std::vector<std::uint8_t> sees_sky;          ///< per vertex: some direction above it is open
   std::uint64_t rays = 0;
   std::size_t closed_form_vertices = 0;
 };
@@ -50,6 +51,12 @@ struct BounceResult {
   /// hit point: its light through bounce B - 1); filled only when asked for.
   std::vector<double> before_last;
 };
+
+/// The transfer matrices of every vertex into transport.matrices (transfer_matrix.h), from the
+/// blocked directions and hits `direct` recorded (null: unshadowed, no pool); `hit_transfer`
+/// (BounceResult::before_last, transport.channels channels) with interreflection, else null.
+void ComputeTransferMatrices(const Mesh& mesh, const DirectionPool* pool, const DirectResult* direct, int lmax,
+                             const std::vector<double>* hit_transfer, Transport& transport);
 
 /// Adds up to options.bounces bounces to `direct`; records each bounce's share in `report`.
 BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const DirectResult& direct,

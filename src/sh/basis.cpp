@@ -37,6 +37,10 @@ const RecurrenceTable& Table() {
 
 }  // namespace
 
+ShRgb FirstBands(const ShRgb& light, int lmax) {
+  return ShRgb(light.begin(), light.begin() + std::min(light.size(), std::size_t(CoeffCount(lmax))));
+}
+
 int LmaxOfCount(std::size_t count) {
   const auto r = static_cast<std::size_t>(std::llround(std::sqrt(static_cast<double>(count))));
   return (r > 0 && r * r == count) ? static_cast<int>(r) - 1 : -1;

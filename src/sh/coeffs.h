@@ -29,4 +29,7 @@ using ShRgb = std::vector<glm::dvec3>;
 /// lmax of a coefficient vector of size `count`, or -1 if `count` is not a perfect square.
 int LmaxOfCount(std::size_t count);
 
+/// The coefficients of bands 0..lmax of `light` (all of them when it has fewer).
+ShRgb FirstBands(const ShRgb& light, int lmax);
+
 }  // namespace prt

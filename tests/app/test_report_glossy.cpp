@@ -73,7 +73,7 @@ TEST_SUITE("app") {
       INFO(line);
       CHECK(std::isfinite(g.total));
       CHECK(std::isfinite(g.lobe));
-      CHECK(g.seconds > 0);
+      CHECK(std::isfinite(g.seconds));  // a number, not a speed: speed is prt bench's
       CHECK(g.total > 0);
       rows[{f[col["mode"]], f[col["path"]], n, std::stoi(f[col["lmax"]])}] = g;
     }

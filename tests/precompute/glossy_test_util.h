@@ -12,11 +12,20 @@
 
 namespace prt::test {
 
-/// A sphere resting over a plane, albedo 0.5: the plane's vertices under it are occluded.
-inline Mesh SphereOverPlane() {
-  Mesh mesh = MakePlane(6.0f, 12);
-  AppendMesh(mesh, MakeSphere(16, 1.0f, glm::vec3(0.0f, 1.2f, 0.0f)));
-  for (auto& a : mesh.albedo) a = glm::vec3(0.5f);
+/// A sphere hovering over a plane (y = 0, centred on the Y axis): the plane's vertices under it
+/// are occluded, the sphere's underside sees the plane.
+struct SphereOverPlaneShape {
+  float plane_size = 6.0f;
+  int plane_divisions = 12;
+  int sphere_segments = 16;
+  float radius = 1.0f;
+  float height = 1.2f;  ///< of the sphere's centre
+  glm::vec3 albedo{0.5f};
+};
+
+inline Mesh SphereOverPlane(const SphereOverPlaneShape& s = {}) {
+  Mesh mesh = MakePlane(s.plane_size, s.plane_divisions, 0.0f, s.albedo);
+  AppendMesh(mesh, MakeSphere(s.sphere_segments, s.radius, glm::vec3(0.0f, s.height, 0.0f), s.albedo));
   return mesh;
 }
 

@@ -8,6 +8,7 @@
 #include "precompute/light.h"
 #include "sh/basis.h"
 #include "tests/env/env_test_util.h"
+#include "tests/test_support.h"
 
 using namespace prt;
 
@@ -106,13 +107,9 @@ TEST_SUITE("precompute") {
   TEST_CASE("projection is bit-identical for any thread count") {
     const ShRgb truth = TestCoefficients();
     const auto env = test::CubemapFrom([&](const glm::dvec3& d) { return Evaluate(truth, d); }, 48);
-    SetThreadCount(1);
-    const ShRgb one = ProjectLight(*env, 6);
-    SetThreadCount(2);
-    const ShRgb two = ProjectLight(*env, 6);
-    SetThreadCount(5);
-    const ShRgb five = ProjectLight(*env, 6);
-    SetThreadCount(0);
+    const ShRgb one = test::WithThreads(1, [&] { return ProjectLight(*env, 6); });
+    const ShRgb two = test::WithThreads(2, [&] { return ProjectLight(*env, 6); });
+    const ShRgb five = test::WithThreads(5, [&] { return ProjectLight(*env, 6); });
     CHECK(one == two);
     CHECK(one == five);
   }

@@ -10,6 +10,7 @@
 #include "precompute/light.h"
 #include "precompute/reference.h"
 #include "precompute/reference_env_sampler.h"
+#include "tests/test_support.h"
 
 namespace prt {
 namespace {
@@ -57,11 +58,8 @@ TEST_SUITE("precompute") {
     o.mode = TransportMode::kUnshadowed;
     const Reference unshadowed = ComputeReference(mesh, *env, o);
     o.mode = TransportMode::kShadowed;
-    SetThreadCount(1);
-    const Reference one = ComputeReference(mesh, *env, o);
-    SetThreadCount(2);
-    const Reference two = ComputeReference(mesh, *env, o);
-    SetThreadCount(0);
+    const Reference one = test::WithThreads(1, [&] { return ComputeReference(mesh, *env, o); });
+    const Reference two = test::WithThreads(2, [&] { return ComputeReference(mesh, *env, o); });
     CHECK(one.radiance == two.radiance);
     CHECK(one.radiance == unshadowed.radiance);
     CHECK(one.rays > 0);

@@ -24,6 +24,8 @@
 #include "precompute/transport.h"
 #include "sh/basis.h"
 #include "sh/quadrature.h"
+#include "tests/precompute/glossy_test_util.h"
+#include "tests/test_support.h"
 
 namespace prt {
 namespace {
@@ -111,9 +113,7 @@ const glm::dvec3 kEye(2.5, 1.2, 1.0);
 /// A sphere hovering over a plane: the plane's middle is in its shadow, the sphere's underside
 /// sees the plane, and from kEye some plane vertices see the sphere in their mirror direction.
 Mesh SphereOverPlane(int plane_divisions, int sphere_segments, const glm::vec3& albedo) {
-  Mesh mesh = MakePlane(4.0f, plane_divisions, 0.0f, albedo);
-  AppendMesh(mesh, MakeSphere(sphere_segments, 0.6f, glm::vec3(0.0f, 1.0f, 0.0f), albedo));
-  return mesh;
+  return test::SphereOverPlane({4.0f, plane_divisions, sphere_segments, 0.6f, 1.0f, albedo});
 }
 
 /// The unit mirrored view direction of vertex v, computed here from its definition.
@@ -241,11 +241,8 @@ TEST_SUITE("precompute") {
     o.table_rows = 32, o.table_cols = 64;
     o.material = ParseMaterial("phong:20,0.4");
     o.eye = kEye;
-    SetThreadCount(1);
-    const Reference one = ComputeReference(mesh, *env, o);
-    SetThreadCount(2);
-    const Reference two = ComputeReference(mesh, *env, o);
-    SetThreadCount(0);
+    const Reference one = test::WithThreads(1, [&] { return ComputeReference(mesh, *env, o); });
+    const Reference two = test::WithThreads(2, [&] { return ComputeReference(mesh, *env, o); });
     CHECK(one.radiance == two.radiance);
     CHECK(one.error == two.error);
     CHECK(one.rays == two.rays);

@@ -29,13 +29,7 @@ using test::SphereOverPlane;
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-Material RaisedCosine(int degree, double ks) {
-  Material m;
-  m.glossy = true;
-  m.lobe = Lobe{LobeKind::kRaisedCosine, degree};
-  m.ks = ks;
-  return m;
-}
+Material RaisedCosine(int degree, double ks) { return GlossyMaterial(Lobe{LobeKind::kRaisedCosine, degree}, ks); }
 
 }  // namespace
 

@@ -12,6 +12,7 @@
 #include "precompute/samplers.h"
 #include "precompute/transport.h"
 #include "sh/zonal.h"
+#include "tests/test_support.h"
 
 using namespace prt;
 
@@ -141,11 +142,8 @@ TEST_SUITE("precompute") {
     o.mode = TransportMode::kInterreflection;
     o.samples = 128;
     o.bounces = 2;
-    SetThreadCount(1);
-    const Transport a = ComputeTransport(scene, o, nullptr);
-    SetThreadCount(3);
-    const Transport b = ComputeTransport(scene, o, nullptr);
-    SetThreadCount(0);
+    const Transport a = test::WithThreads(1, [&] { return ComputeTransport(scene, o, nullptr); });
+    const Transport b = test::WithThreads(3, [&] { return ComputeTransport(scene, o, nullptr); });
     CHECK(a.coeffs == b.coeffs);
   }
 

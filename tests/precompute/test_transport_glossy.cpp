@@ -19,6 +19,7 @@
 #include "core/parallel.h"
 #include "sh/basis.h"
 #include "tests/precompute/glossy_test_util.h"
+#include "tests/test_support.h"
 
 using namespace prt;
 using test::BandLimitedLight;
@@ -183,11 +184,8 @@ TEST_CASE("glossy transfer does not depend on the thread count") {
   o.samples = 128;
   o.material = ParseMaterial("phong:20,0.4");
   o.eye = glm::dvec3(3, 2, 4);
-  SetThreadCount(1);
-  const Transport one = ComputeTransport(mesh, o, nullptr);
-  SetThreadCount(2);
-  const Transport two = ComputeTransport(mesh, o, nullptr);
-  SetThreadCount(0);
+  const Transport one = test::WithThreads(1, [&] { return ComputeTransport(mesh, o, nullptr); });
+  const Transport two = test::WithThreads(2, [&] { return ComputeTransport(mesh, o, nullptr); });
   CHECK(one.glossy == two.glossy);
   CHECK(one.coeffs == two.coeffs);
 }

@@ -10,6 +10,7 @@
 #include "core/parallel.h"
 #include "geometry/procedural.h"
 #include "raster/rasterizer.h"
+#include "tests/test_support.h"
 
 namespace {
 
@@ -226,11 +227,9 @@ TEST_SUITE("raster") {
     std::vector<glm::vec3> colors;
     for (const auto& n : knot.normals) colors.push_back(0.5f * n + 0.5f);
     const Camera camera = prt::FrameBounds(glm::vec3(-1.f), glm::vec3(1.f), 1.5f);
-    prt::SetThreadCount(1);
-    const auto one = prt::Rasterize(camera, 150, 100, knot.positions, knot.triangles, colors);
-    prt::SetThreadCount(3);
-    const auto three = prt::Rasterize(camera, 150, 100, knot.positions, knot.triangles, colors);
-    prt::SetThreadCount(0);
+    const auto draw = [&] { return prt::Rasterize(camera, 150, 100, knot.positions, knot.triangles, colors); };
+    const auto one = prt::test::WithThreads(1, draw);
+    const auto three = prt::test::WithThreads(3, draw);
     CHECK(one.image.pixels == three.image.pixels);
     CHECK(one.coverage == three.coverage);
   }
