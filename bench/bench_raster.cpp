@@ -1,17 +1,16 @@
 // `prt bench raster`: frames per second of the rasterizer at 1920x1080 on a procedural mesh of
-// about 100k triangles with per-vertex colours, without and with PNG encoding. Built with
+// about 100k triangles with per-vertex colours; tone mapping against drawing; PNG encoding at
+// several zlib levels; the whole render loop (draw, tone map, encode) at 1920x1080 and 640x480. Built with
 // -DPRT_BENCH_LLVMPIPE=ON it also draws the same triangles through Mesa's llvmpipe (OSMesa,
 // legacy OpenGL), side by side in the same run, and compares the two images.
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
-#include <deque>
-#include <future>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "bench/bench.h"
+#include "core/background_jobs.h"
 #include "core/error.h"
 #include "core/parallel.h"
 #include "geometry/mesh_ops.h"
@@ -67,50 +66,62 @@ Image8 Quantize(const ImageF& image) {
 }
 
 #ifdef PRT_BENCH_LLVMPIPE
-// Draws the scene with llvmpipe: same camera matrices, colours, depth test (GL_LESS, first
-// drawn keeps ties, like ours) and black background. Returns the median seconds per frame and
-// the image (row 0 at the top).
-double DrawLlvmpipe(const Scene& s, int width, int height, int runs, Image8& image) {
-  OSMesaContext context = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
-  if (!context) throw Error("llvmpipe: OSMesaCreateContextExt failed (expected OSMesa)");
-  std::vector<unsigned char> rgba(4 * static_cast<std::size_t>(width) * height);
-  if (!OSMesaMakeCurrent(context, rgba.data(), GL_UNSIGNED_BYTE, width, height))
-    throw Error("llvmpipe: OSMesaMakeCurrent failed");
-  OSMesaPixelStore(OSMESA_Y_UP, 0);  // row 0 of the buffer is the top of the picture
-  const float aspect = float(width) / float(height);
-  glViewport(0, 0, width, height);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
-  glShadeModel(GL_SMOOTH);
-  glMatrixMode(GL_PROJECTION);
-  glLoadMatrixf(glm::value_ptr(ProjectionMatrix(s.camera, aspect)));
-  glMatrixMode(GL_MODELVIEW);
-  glLoadMatrixf(glm::value_ptr(ViewMatrix(s.camera)));
-  glEnableClientState(GL_VERTEX_ARRAY);
-  glEnableClientState(GL_COLOR_ARRAY);
-  glVertexPointer(3, GL_FLOAT, 0, s.mesh.positions.data());
-  glColorPointer(3, GL_FLOAT, 0, s.colors.data());
-  const auto* indices = s.mesh.triangles.data()->data();
-  const auto count = static_cast<GLsizei>(3 * s.mesh.triangles.size());
-  // Geometry in a display list, so that each frame only draws.
-  const GLuint list = glGenLists(1);
-  glNewList(list, GL_COMPILE);
-  glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, indices);
-  glEndList();
-  const auto frame = [&] {
+// The scene drawn by llvmpipe: same camera matrices, colours, depth test (GL_LESS, first drawn
+// keeps ties, like ours) and black background. Draw() draws one frame; Image() reads it back
+// (row 0 at the top).
+class Llvmpipe {
+ public:
+  Llvmpipe(const Scene& s, int width, int height)
+      : width_(width), height_(height), rgba_(4 * static_cast<std::size_t>(width) * height) {
+    context_ = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
+    if (!context_) throw Error("llvmpipe: OSMesaCreateContextExt failed (expected OSMesa)");
+    if (!OSMesaMakeCurrent(context_, rgba_.data(), GL_UNSIGNED_BYTE, width, height))
+      throw Error("llvmpipe: OSMesaMakeCurrent failed");
+    OSMesaPixelStore(OSMESA_Y_UP, 0);  // row 0 of the buffer is the top of the picture
+    const float aspect = float(width) / float(height);
+    glViewport(0, 0, width, height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glShadeModel(GL_SMOOTH);
+    glMatrixMode(GL_PROJECTION);
+    glLoadMatrixf(glm::value_ptr(ProjectionMatrix(s.camera, aspect)));
+    glMatrixMode(GL_MODELVIEW);
+    glLoadMatrixf(glm::value_ptr(ViewMatrix(s.camera)));
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(3, GL_FLOAT, 0, s.mesh.positions.data());
+    glColorPointer(3, GL_FLOAT, 0, s.colors.data());
+    const auto* indices = s.mesh.triangles.data()->data();
+    const auto count = static_cast<GLsizei>(3 * s.mesh.triangles.size());
+    // Geometry in a display list, so that each frame only draws.
+    list_ = glGenLists(1);
+    glNewList(list_, GL_COMPILE);
+    glDrawElements(GL_TRIANGLES, count, GL_UNSIGNED_INT, indices);
+    glEndList();
+  }
+  ~Llvmpipe() {
+    glDeleteLists(list_, 1);
+    OSMesaDestroyContext(context_);
+  }
+  void Draw() const {
     glClearColor(0.f, 0.f, 0.f, 1.f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glCallList(list);
+    glCallList(list_);
     glFinish();
-  };
-  const double seconds = MedianSeconds(runs, frame);
-  image = Image8(width, height);
-  for (std::size_t i = 0; i < image.rgb.size() / 3; ++i)
-    for (int c = 0; c < 3; ++c) image.rgb[3 * i + c] = rgba[4 * i + c];
-  glDeleteLists(list, 1);
-  OSMesaDestroyContext(context);
-  return seconds;
-}
+  }
+  Image8 Image() const {
+    Image8 image(width_, height_);
+    for (std::size_t i = 0; i < image.rgb.size() / 3; ++i)
+      for (int c = 0; c < 3; ++c) image.rgb[3 * i + c] = rgba_[4 * i + c];
+    return image;
+  }
+
+ private:
+  int width_, height_;
+  std::vector<unsigned char> rgba_;
+  OSMesaContext context_ = nullptr;
+  GLuint list_ = 0;
+};
 
 // Share of pixels whose channels all agree within 1/255.
 double Agreement(const Image8& a, const Image8& b) {
@@ -123,6 +134,25 @@ double Agreement(const Image8& a, const Image8& b) {
   return double(agree) / double(a.rgb.size() / 3);
 }
 #endif
+
+// Frames per second of the render loop as `prt render` runs it: draw, tone map, then hand the
+// frame to a background job that encodes it (to memory here; render also writes the file), up to
+// one frame in flight per thread. A median over `runs` loops of kLoopFrames frames.
+constexpr int kLoopFrames = 12;
+double RenderLoopFps(const Scene& scene, int width, int height, int runs) {
+  Rasterizer rasterizer;
+  const double seconds = MedianSeconds(runs, [&] {
+    BackgroundJobs encoding(ThreadCount());
+    for (int f = 0; f < kLoopFrames; ++f) {
+      const RasterImage& frame = rasterizer.Draw(scene.camera, width, height, scene.mesh.positions,
+                                                 scene.mesh.triangles, scene.colors);
+      auto image = std::make_shared<Image8>(ToneMap(frame.image).image);
+      encoding.Submit([image] { EncodePng(*image); });
+    }
+    encoding.Wait();
+  });
+  return kLoopFrames / seconds;
+}
 
 }  // namespace
 
@@ -152,46 +182,40 @@ int BenchRaster(Args& args) {
   Print("raster_ms", 1e3 * t_draw);
   Print("raster_fps", 1.0 / t_draw);
 
-  // The parts of writing a frame, then the whole: draw, tone map, encode.
+  // Tone mapping against drawing, side by side.
   Image8 image;
-  const double t_tonemap = MedianSeconds(runs, [&] { image = ToneMap(frame->image).image; });
-  std::size_t png_bytes = 0;
-  const double t_encode = MedianSeconds(runs, [&] { png_bytes = EncodePng(image).size(); });
-  const double t_png = MedianSeconds(runs, [&] {
-    draw();
-    png_bytes = EncodePng(ToneMap(frame->image).image).size();
-  });
-  Print("tonemap_ms", 1e3 * t_tonemap);
-  Print("png_encode_ms", 1e3 * t_encode);
-  Print("png_bytes", double(png_bytes));
-  Print("raster_png_ms", 1e3 * t_png);
-  Print("raster_png_fps", 1.0 / t_png);
+  const SideBySide tone = TimeSideBySide(runs, draw, [&] { image = ToneMap(frame->image).image; });
+  Print("tonemap_ms", 1e3 * tone.theirs);
+  Print("tonemap_share_of_draw", tone.ratio);  // median over pairs of tone map / draw
 
-  // A render loop that encodes on other threads while the next frame draws (up to two frames
-  // in flight): frames per second over a run of frames, not a median.
-  const int frames = std::max(8, 2 * runs);
-  const auto start = std::chrono::steady_clock::now();
-  std::deque<std::future<std::size_t>> in_flight;
-  for (int f = 0; f < frames; ++f) {
-    draw();
-    auto tone_mapped = std::make_shared<Image8>(ToneMap(frame->image).image);
-    if (in_flight.size() >= 2) in_flight.front().get(), in_flight.pop_front();
-    in_flight.push_back(std::async(std::launch::async, [tone_mapped] { return EncodePng(*tone_mapped).size(); }));
+  // zlib levels on this frame: time (one thread) and size; frames use kPngLevel.
+  for (int level : {1, 2, 3, 4, 6}) {
+    std::size_t bytes = 0;
+    const double t = MedianSeconds(runs, [&] { bytes = EncodePng(image, level).size(); });
+    const std::string key = "png_level_" + std::to_string(level);
+    Print(key + "_ms", 1e3 * t);
+    Print(key + "_bytes", double(bytes));
   }
-  for (auto& f : in_flight) f.get();
-  const double t_loop = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  Print("raster_png_pipelined_fps", frames / t_loop);
+  Print("png_level_used", double(kPngLevel));
+
+  // The whole render loop, at this size and at 640x480.
+  Print("render_loop_fps", RenderLoopFps(scene, width, height, runs));
+  const Scene small = MakeScene(640.f / 480.f);
+  Print("render_loop_640x480_fps", RenderLoopFps(small, 640, 480, runs));
 
 #ifdef PRT_BENCH_LLVMPIPE
-  Image8 gl;
-  const double t_gl = DrawLlvmpipe(scene, width, height, runs, gl);
-  Print("llvmpipe_ms", 1e3 * t_gl);
-  Print("llvmpipe_fps", 1.0 / t_gl);
+  // Ours and llvmpipe alternating, frame for frame (OpenGL calls stay on this thread).
+  const Llvmpipe gl(scene, width, height);
+  const SideBySide vs = TimeSideBySide(runs, draw, [&] { gl.Draw(); });
+  const Image8 gl_image = gl.Image();
+  Print("llvmpipe_ms", 1e3 * vs.theirs);
+  Print("llvmpipe_fps", 1.0 / vs.theirs);
   std::size_t lit = 0;  // pixels llvmpipe drew (the background is black, the colours are not)
-  for (std::size_t i = 0; i < gl.rgb.size(); i += 3) lit += (gl.rgb[i] | gl.rgb[i + 1] | gl.rgb[i + 2]) != 0;
-  Print("llvmpipe_covered_share", double(lit) / double(gl.rgb.size() / 3));
-  Print("agreement_within_1_255", Agreement(Quantize(frame->image), gl));
-  Print("ratio_fps_vs_llvmpipe", t_gl / t_draw);
+  for (std::size_t i = 0; i < gl_image.rgb.size(); i += 3)
+    lit += (gl_image.rgb[i] | gl_image.rgb[i + 1] | gl_image.rgb[i + 2]) != 0;
+  Print("llvmpipe_covered_share", double(lit) / double(gl_image.rgb.size() / 3));
+  Print("agreement_within_1_255", Agreement(Quantize(frame->image), gl_image));
+  Print("ratio_fps_vs_llvmpipe", vs.ratio);
 #else
   (void)Quantize;
   Print("llvmpipe", "not built (configure with -DPRT_BENCH_LLVMPIPE=ON)");

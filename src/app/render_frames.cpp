@@ -3,12 +3,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <future>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "core/background_jobs.h"
 #include "core/log.h"
+#include "core/parallel.h"
 #include "core/progress.h"
 #include "geometry/mesh_ops.h"
 #include "io/image_load.h"
@@ -157,7 +158,9 @@ FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRg
   // The automatic exposure is measured on frame 0 (its light at angle 0) and used for all frames.
   const bool measure = !o.exposure && !transport_view;
   stats.exposure = o.exposure.value_or(0.0);
-  std::future<void> writing;  // the previous frame's encode-and-write
+  // Frames encoded and written in the background, one PNG per thread at most: the bytes of
+  // each file do not depend on how many are in flight.
+  BackgroundJobs writing(ThreadCount());
   const Bounds3 bounds = MeshBounds(mesh);
   Progress progress("rendering", static_cast<std::size_t>(o.frames));
   for (int i = 0; i < o.frames; ++i) {
@@ -172,16 +175,12 @@ FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRg
     stats.negative_pixels += mapped.negative_pixels;
     stats.nan_pixels += mapped.nan_pixels;
 
-    const auto t1 = std::chrono::steady_clock::now();
-    if (writing.valid()) writing.get();  // rethrows a write error
-    stats.encode_seconds += SecondsSince(t1);
     const std::string path = folder.Output(FrameName(i, o.frames));
-    writing = std::async(std::launch::async, [path, image = std::move(mapped.image)] { WritePng(path, image); });
+    // Rethrows an earlier frame's write error.
+    stats.encode_seconds += writing.Submit([path, image = std::move(mapped.image)] { WritePng(path, image); });
     progress.Advance(1);
   }
-  const auto t1 = std::chrono::steady_clock::now();
-  if (writing.valid()) writing.get();
-  stats.encode_seconds += SecondsSince(t1);
+  stats.encode_seconds += writing.Wait();
   return stats;
 }
 

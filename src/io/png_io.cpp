@@ -17,14 +17,15 @@ constexpr unsigned char kPngSignature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
 
 }  // namespace
 
-std::string EncodePng(const Image8& image) {
+std::string EncodePng(const Image8& image, int level) {
   if (image.width <= 0 || image.height <= 0 ||
       image.rgb.size() != 3 * static_cast<std::size_t>(image.width) * image.height)
     throw Error("PNG encoder: image " + std::to_string(image.width) + "x" +
                 std::to_string(image.height) + " with " + std::to_string(image.rgb.size()) +
                 " bytes (expected a non-empty image of 3 * width * height bytes)");
   std::string bytes;
-  if (!EncodePngZlib(image.rgb.data(), image.width, image.height, bytes))
+  if (level < 1 || level > 9) throw Error("PNG encoder: zlib level " + std::to_string(level) + " (expected 1 to 9)");
+  if (!EncodePngZlib(image.rgb.data(), image.width, image.height, level, bytes))
     throw Error("PNG encoder: stb_image_write failed (expected enough memory)");
   return bytes;
 }

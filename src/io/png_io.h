@@ -9,12 +9,14 @@
 #include <string>
 
 #include "core/image.h"
+#include "io/png_writer_zlib.h"
 
 namespace prt {
 
-/// The PNG encoding of an 8-bit RGB image, in memory (for encoding on another thread).
-/// Throws Error if the image is empty or its buffer is not 3 * width * height bytes.
-std::string EncodePng(const Image8& image);
+/// The PNG encoding of an 8-bit RGB image, in memory (for encoding on another thread), deflated
+/// at zlib `level` (frames use kPngLevel, png_writer_zlib.h). Throws Error if the image is
+/// empty, its buffer is not 3 * width * height bytes, or the level is not 1..9.
+std::string EncodePng(const Image8& image, int level = kPngLevel);
 
 /// Writes `image` to `path` atomically. Throws Error naming `path` on failure.
 void WritePng(const std::string& path, const Image8& image);

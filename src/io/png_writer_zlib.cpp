@@ -6,13 +6,14 @@
 
 namespace {
 
+thread_local int t_level = prt::kPngLevel;  // the level of this thread's current encoding
+
 /// stb's compressor hook: the zlib stream of `data`, in a buffer stb releases with free().
 unsigned char* ZlibCompress(unsigned char* data, int data_len, int* out_len, int /*quality*/) {
   uLongf size = compressBound(static_cast<uLong>(data_len));
   auto* out = static_cast<unsigned char*>(std::malloc(size));
   if (!out) return nullptr;
-  // Level 2: nearly level 6's size on rendered frames at a fraction of its time.
-  if (compress2(out, &size, data, static_cast<uLong>(data_len), 2) != Z_OK) {
+  if (compress2(out, &size, data, static_cast<uLong>(data_len), t_level) != Z_OK) {
     std::free(out);
     return nullptr;
   }
@@ -44,7 +45,8 @@ void Append(void* context, void* data, int size) {
 
 }  // namespace
 
-bool EncodePngZlib(const std::uint8_t* rgb, int width, int height, std::string& out) {
+bool EncodePngZlib(const std::uint8_t* rgb, int width, int height, int level, std::string& out) {
+  t_level = level;
   // "sub" filter on every row, as fast as any and good on smooth rendered images. This copy's
   // settings are private to this file (internal linkage), so setting them is thread-safe
   // enough: the same value each time.

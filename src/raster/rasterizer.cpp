@@ -18,6 +18,14 @@ constexpr int kBandRows = 8;                // output rows per parallel band
 constexpr std::size_t kVertexGrain = 16384;  // vertices per transform chunk
 constexpr std::size_t kTriangleGrain = 4096; // triangles per setup chunk
 
+constexpr std::size_t kPrefetchAhead = 8;    // triangles fetched ahead of the fill
+
+// Asks for the cache lines of a set-up triangle before it is filled.
+void Prefetch(const RasterTriangle* t) {
+  const char* p = reinterpret_cast<const char*>(t);
+  for (std::size_t offset = 0; offset < sizeof(RasterTriangle); offset += 64) __builtin_prefetch(p + offset);
+}
+
 // Size of the sample grid (the output size times K).
 struct Target {
   int width, height;
@@ -52,15 +60,17 @@ ScreenVertex Project(const ClipVertex& c, Target target) {
   return s;
 }
 
-// Clips, projects and sets up one input triangle; appends 0 or more raster triangles.
-void SetupOne(const ClipVertex (&v)[3], const unsigned (&outcode)[3], const ClipPlanes& planes,
-              Target target, bool cull, std::vector<RasterTriangle>& out) {
+// Clips, projects and sets up one input triangle; appends 0 or more raster triangles. `screen`
+// holds the projected vertices of the triangles inside every plane (outcodes all zero).
+void SetupOne(const ClipVertex (&v)[3], const ScreenVertex* const (&screen)[3], const unsigned (&outcode)[3],
+              const ClipPlanes& planes, Target target, bool cull, std::vector<RasterTriangle>& out) {
   if (outcode[0] & outcode[1] & outcode[2]) return;  // entirely outside one plane
   const auto emit = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
-    if (auto t = SetupTriangle(a, b, c, target.width, target.height, cull)) out.push_back(*t);
+    out.emplace_back();
+    if (!SetupTriangle(a, b, c, target.width, target.height, cull, out.back())) out.pop_back();
   };
   if ((outcode[0] | outcode[1] | outcode[2]) == 0) {
-    emit(Project(v[0], target), Project(v[1], target), Project(v[2], target));
+    emit(*screen[0], *screen[1], *screen[2]);
     return;
   }
   // Crosses a plane: clip to a convex polygon and draw it as a fan.
@@ -75,9 +85,11 @@ void SetupOne(const ClipVertex (&v)[3], const unsigned (&outcode)[3], const Clip
 // first sample row is band_y0. Depth is 1/w: larger is nearer, 0 means empty.
 void FillRows(const RasterTriangle& t, int row_begin, int row_end, int band_y0, int width,
               float* depth, glm::vec3* color) {
-  const int y_end = std::min(t.y_max + 1, row_end);
-  for (int y = std::max(t.y_min, row_begin); y < y_end; ++y) {
-    const Span span = RowSpan(t, y);
+  const int y_first = std::max(t.y_min, row_begin), y_end = std::min(t.y_max + 1, row_end);
+  if (y_first >= y_end) return;
+  RowWalker rows(t, y_first);
+  for (int y = y_first; y < y_end; ++y) {
+    const Span span = rows.Next();
     if (span.begin >= span.end) continue;
     // Plane values at the first pixel centre of the span, then steps along x.
     const float dx = static_cast<float>(span.begin) + 0.5f - t.ref_x;
@@ -99,6 +111,15 @@ void FillRows(const RasterTriangle& t, int row_begin, int row_end, int band_y0, 
   }
 }
 
+// p[0 .. n) = c; a grey (the usual background) as one run of floats, which vectorises.
+void FillColor(glm::vec3* p, std::size_t n, const glm::vec3& c) {
+  static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "pixels are three packed floats");
+  if (c.x == c.y && c.y == c.z)
+    std::fill_n(reinterpret_cast<float*>(p), 3 * n, c.x);
+  else
+    std::fill_n(p, n, c);
+}
+
 // Band-local sample buffers, reused by each worker thread across bands and frames.
 struct BandBuffers {
   std::vector<float> depth;
@@ -106,12 +127,29 @@ struct BandBuffers {
 };
 
 // Writes output rows [row_begin, row_end) of `frame`: the average of the covered samples of each
-// pixel, the background behind the uncovered ones, and the covered fraction.
+// pixel, the background behind the uncovered ones, and the covered fraction. With one sample
+// per pixel (k = 1) the covered colours are in the frame already.
 void Resolve(const BandBuffers& band, int row_begin, int row_end, int band_y0, int k,
              const Background& background, const ViewRays& rays, RasterImage& frame) {
   const int width = frame.image.width, height = frame.image.height;
   const std::size_t stride = static_cast<std::size_t>(width) * k;  // samples per row
   const float inv_samples = 1.f / static_cast<float>(k * k);
+  if (k == 1) {  // the colours are already in the frame (DrawBand); the background is solid or
+    for (int oy = row_begin; oy < row_end; ++oy) {  // is looked up for the uncovered pixels
+      const float* depth = &band.depth[static_cast<std::size_t>(oy - band_y0) * width];
+      float* coverage = &frame.coverage[static_cast<std::size_t>(oy) * width];
+      for (int ox = 0; ox < width; ++ox) coverage[ox] = depth[ox] > 0.f ? 1.f : 0.f;
+      if (!background.radiance) continue;
+      glm::vec3* out = &frame.image.at(0, oy);
+      const float ndc_y = 1.f - (static_cast<float>(oy) + 0.5f) / static_cast<float>(height) * 2.f;
+      for (int ox = 0; ox < width; ++ox) {
+        if (depth[ox] > 0.f) continue;
+        const float ndc_x = (static_cast<float>(ox) + 0.5f) / static_cast<float>(width) * 2.f - 1.f;
+        out[ox] = background.radiance(rays.Direction(ndc_x, ndc_y));
+      }
+    }
+    return;
+  }
   for (int oy = row_begin; oy < row_end; ++oy) {
     glm::vec3* out = &frame.image.at(0, oy);
     float* coverage = &frame.coverage[static_cast<std::size_t>(oy) * width];
@@ -140,46 +178,75 @@ void Resolve(const BandBuffers& band, int row_begin, int row_end, int band_y0, i
 void Rasterizer::SetUp(const Camera& camera, float aspect, int target_width, int target_height,
                        const std::vector<glm::vec3>& positions,
                        const std::vector<std::array<std::uint32_t, 3>>& triangles,
-                       const std::vector<glm::vec3>& colors, bool cull_back_faces) {
+                       const std::vector<glm::vec3>& colors, bool cull_back_faces, int band_samples,
+                       int band_count) {
   const Target target{target_width, target_height};
-  // Vertices to clip space, with their outcodes.
+  // Vertices to clip space, with their outcodes, and projected when inside every plane (a
+  // vertex is shared by about six triangles: it is projected once).
   const glm::mat4 view_projection = ProjectionMatrix(camera, aspect) * ViewMatrix(camera);
   const ClipPlanes planes = GuardBandPlanes(camera.near_plane, target.width, target.height);
   clip_.resize(positions.size());
   outcodes_.resize(positions.size());
+  screen_.resize(positions.size());
   ParallelFor(positions.size(), kVertexGrain, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i) {
       clip_[i] = view_projection * glm::vec4(positions[i], 1.f);
       outcodes_[i] = Outcode(clip_[i], planes);
+      if (outcodes_[i] == 0) screen_[i] = Project({clip_[i], colors[i]}, target);
     }
   });
-  // Triangle setup in fixed chunks; chunk c's output keeps the input order.
-  chunks_.resize(ChunkCount(triangles.size(), kTriangleGrain));
+  // Triangle setup in fixed chunks; chunk c's output keeps the input order. Each chunk also
+  // notes its triangles' bands and counts them per band, for Bin.
+  const std::size_t chunks = ChunkCount(triangles.size(), kTriangleGrain);
+  const std::size_t bands = static_cast<std::size_t>(band_count);
+  chunks_.resize(chunks);
+  chunk_band_count_.assign(chunks * bands, 0);  // [chunk][band]
   ParallelFor(triangles.size(), kTriangleGrain, [&](std::size_t begin, std::size_t end) {
-    std::vector<RasterTriangle>& out = chunks_[begin / kTriangleGrain];
+    const std::size_t c = begin / kTriangleGrain;
+    std::vector<RasterTriangle>& out = chunks_[c].triangles;
     out.clear();
     for (std::size_t i = begin; i < end; ++i) {
       const auto& tri = triangles[i];
+      const unsigned codes[3] = {outcodes_[tri[0]], outcodes_[tri[1]], outcodes_[tri[2]]};
+      const ScreenVertex* const screen[3] = {&screen_[tri[0]], &screen_[tri[1]], &screen_[tri[2]]};
       const ClipVertex v[3] = {{clip_[tri[0]], colors[tri[0]]}, {clip_[tri[1]], colors[tri[1]]},
                                {clip_[tri[2]], colors[tri[2]]}};
-      const unsigned codes[3] = {outcodes_[tri[0]], outcodes_[tri[1]], outcodes_[tri[2]]};
-      SetupOne(v, codes, planes, target, cull_back_faces, out);
+      SetupOne(v, screen, codes, planes, target, cull_back_faces, out);
+    }
+    std::vector<BandRange>& ranges = chunks_[c].bands;
+    ranges.resize(out.size());
+    std::size_t* count = &chunk_band_count_[c * bands];
+    for (std::size_t t = 0; t < out.size(); ++t) {
+      ranges[t] = {out[t].y_min / band_samples, out[t].y_max / band_samples};
+      for (int b = ranges[t].first; b <= ranges[t].last; ++b) ++count[b];
     }
   });
 }
 
-void Rasterizer::Bin(int band_count, int band_samples) {
-  // Counting sort by band; a triangle spanning several bands is listed in each.
-  band_start_.assign(band_count + 1, 0);
-  for (const auto& chunk : chunks_)
-    for (const RasterTriangle& t : chunk)
-      for (int b = t.y_min / band_samples; b <= t.y_max / band_samples; ++b) ++band_start_[b + 1];
-  for (int b = 0; b < band_count; ++b) band_start_[b + 1] += band_start_[b];
-  binned_.resize(band_start_[band_count]);
-  std::vector<std::size_t> fill(band_start_.begin(), band_start_.end() - 1);
-  for (const auto& chunk : chunks_)
-    for (const RasterTriangle& t : chunk)
-      for (int b = t.y_min / band_samples; b <= t.y_max / band_samples; ++b) binned_[fill[b]++] = &t;
+void Rasterizer::Bin(int band_count) {
+  // A counting sort by band (the counts come from SetUp), in parallel over the setup chunks: a
+  // triangle spanning several bands is listed in each, and every band lists its triangles in
+  // chunk order, then input order within a chunk, whatever the thread count.
+  const std::size_t chunks = chunks_.size(), bands = static_cast<std::size_t>(band_count);
+  // Exclusive prefix sums in (band, chunk) order: where chunk c starts writing in band b.
+  band_start_.assign(bands + 1, 0);
+  std::size_t total = 0;
+  for (std::size_t b = 0; b < bands; ++b) {
+    band_start_[b] = total;
+    for (std::size_t c = 0; c < chunks; ++c) {
+      const std::size_t n = chunk_band_count_[c * bands + b];
+      chunk_band_count_[c * bands + b] = total;
+      total += n;
+    }
+  }
+  band_start_[bands] = total;
+  binned_.resize(total);
+  ParallelFor(chunks, 1, [&](std::size_t c, std::size_t) {
+    std::size_t* fill = &chunk_band_count_[c * bands];
+    const SetupChunk& chunk = chunks_[c];
+    for (std::size_t t = 0; t < chunk.triangles.size(); ++t)
+      for (int b = chunk.bands[t].first; b <= chunk.bands[t].last; ++b) binned_[fill[b]++] = &chunk.triangles[t];
+  });
 }
 
 const RasterImage& Rasterizer::Draw(const Camera& camera, int width, int height,
@@ -191,11 +258,11 @@ const RasterImage& Rasterizer::Draw(const Camera& camera, int width, int height,
   const int k = options.ssaa;
   const Target target{width * k, height * k};
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
-  SetUp(camera, aspect, target.width, target.height, positions, triangles, colors,
-        options.cull_back_faces);
   const int band_samples = kBandRows * k;
   const int band_count = (height + kBandRows - 1) / kBandRows;
-  Bin(band_count, band_samples);
+  SetUp(camera, aspect, target.width, target.height, positions, triangles, colors,
+        options.cull_back_faces, band_samples, band_count);
+  Bin(band_count);
 
   // Fill and resolve each band.
   frame_.image.width = width;
@@ -206,15 +273,27 @@ const RasterImage& Rasterizer::Draw(const Camera& camera, int width, int height,
   const ViewRays rays = MakeViewRays(camera, aspect);
   ParallelFor(band_count, 1, [&](std::size_t band, std::size_t) {
     thread_local BandBuffers buffers;
-    const std::size_t samples = static_cast<std::size_t>(band_samples) * target.width;
-    if (buffers.depth.size() < samples) buffers.depth.resize(samples);
-    if (buffers.color.size() < samples) buffers.color.resize(samples);
-    std::fill_n(buffers.depth.begin(), samples, 0.f);
     const int y0 = static_cast<int>(band) * band_samples;
     const int y1 = std::min(y0 + band_samples, target.height);
-    for (std::size_t i = band_start_[band]; i < band_start_[band + 1]; ++i)
-      FillRows(*binned_[i], y0, y1, y0, target.width, buffers.depth.data(), buffers.color.data());
-
+    const std::size_t samples = static_cast<std::size_t>(y1 - y0) * target.width;
+    if (buffers.depth.size() < samples) buffers.depth.resize(samples);
+    std::fill_n(buffers.depth.begin(), samples, 0.f);
+    // One sample per pixel: the triangles fill the frame's own rows, over a solid background
+    // put there first. Supersampled: a band buffer, resolved into the frame afterwards.
+    glm::vec3* color = nullptr;
+    if (k == 1) {
+      color = &frame_.image.at(0, y0);
+      if (!background.radiance) FillColor(color, samples, background.color);
+    } else {
+      if (buffers.color.size() < samples) buffers.color.resize(samples);
+      color = buffers.color.data();
+    }
+    const std::size_t first = band_start_[band], last = band_start_[band + 1];
+    for (std::size_t i = first; i < last; ++i) {
+      // A band's triangles lie all over the setup's output: fetch ahead (a no-op on the result).
+      if (i + kPrefetchAhead < last) Prefetch(binned_[i + kPrefetchAhead]);
+      FillRows(*binned_[i], y0, y1, y0, target.width, buffers.depth.data(), color);
+    }
     Resolve(buffers, y0 / k, y1 / k, y0, k, background, rays, frame_);
   });
   return frame_;

@@ -7,7 +7,8 @@
 ///   1. vertices -> clip space (camera.h);
 ///   2. per triangle: clip against the near plane and a guard band (clip.h), project, snap and
 ///      set up edge functions and colour planes (triangle_setup.h);
-///   3. sort the set-up triangles into bands of scanlines, keeping the drawing order;
+///   3. sort the set-up triangles into bands of scanlines, keeping the drawing order (a counting
+///      sort, in parallel over the setup's chunks);
 ///   4. per band, in parallel: fill each triangle's spans with a depth test (nearer wins; on an
 ///      exact tie the triangle drawn first stays), then resolve the K x K samples of every pixel
 ///      and put the background behind the uncovered ones.
@@ -73,14 +74,24 @@ class Rasterizer {
   void SetUp(const Camera& camera, float aspect, int target_width, int target_height,
              const std::vector<glm::vec3>& positions,
              const std::vector<std::array<std::uint32_t, 3>>& triangles,
-             const std::vector<glm::vec3>& colors, bool cull_back_faces);
-  void Bin(int band_count, int band_samples);
+             const std::vector<glm::vec3>& colors, bool cull_back_faces, int band_samples, int band_count);
+  void Bin(int band_count);
+
+  struct BandRange {
+    int first, last;  ///< the bands a triangle's rows touch, inclusive
+  };
+  struct SetupChunk {
+    std::vector<RasterTriangle> triangles;  ///< in input order
+    std::vector<BandRange> bands;           ///< per triangle
+  };
 
   RasterImage frame_;
   std::vector<glm::vec4> clip_;                      // per vertex, clip space
   std::vector<unsigned> outcodes_;                   // per vertex, clip.h Outcode
-  std::vector<std::vector<RasterTriangle>> chunks_;  // set-up triangles per input chunk
+  std::vector<ScreenVertex> screen_;                 // per vertex inside every plane, projected
+  std::vector<SetupChunk> chunks_;                   // set-up triangles per input chunk
   std::vector<std::size_t> band_start_;              // band b: binned_[band_start_[b] ...]
+  std::vector<std::size_t> chunk_band_count_;        // SetUp's counts, then Bin's offsets, [chunk][band]
   std::vector<const RasterTriangle*> binned_;        // triangles per band, in input order
 };
 

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include "core/parallel.h"
+#include "core/simd.h"
 
 namespace prt {
 namespace {
@@ -13,27 +15,35 @@ namespace {
 constexpr int kCells = 4096;
 
 // The 8-bit sRGB code of a display-linear v in [0, 1] is the largest k with threshold[k] <= v,
-// where threshold[k] is the inverse sRGB curve at (k - 1/2) / 255. A table over 4096 equal
-// cells of [0, 1] gives the code at each cell's start; at most two steps up finish the search.
-// Exact (no pow per pixel), and about as fast as a plain lookup.
+// where threshold[k] is the inverse sRGB curve at (k - 1/2) / 255. The table splits [0, 1] into
+// 4096 equal cells and keeps, per cell, the code at the cell's start and the next threshold
+// above it. Cells (2.4e-4 wide) are narrower than the closest two thresholds (3.0e-4 apart, on
+// the curve's linear part), so a cell holds at most one threshold and one comparison finishes
+// the search: code = start + (v >= next). v * 4096 is exact in float, so the cell index is
+// exactly floor(4096 v). Exact (no pow per pixel), and one 8-byte load per value.
+struct Cell {
+  float next;          // threshold[start + 1]; 2 (above every v) for the last code
+  std::uint32_t start;  // code at v = i / kCells
+};
+
 struct SrgbTable {
-  std::array<float, 257> threshold{};             // [256] is a sentinel above 1
-  std::array<std::uint8_t, kCells + 1> start{};   // code at v = i / kCells
+  std::array<Cell, kCells + 1> cell{};
 };
 
 const SrgbTable& Table() {
   static const SrgbTable table = [] {
-    SrgbTable t;
+    std::array<float, 257> threshold{};  // [256] is a sentinel above 1
     for (int k = 1; k < 256; ++k) {
       const double s = (k - 0.5) / 255.0;
-      t.threshold[k] = static_cast<float>(s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4));
+      threshold[k] = static_cast<float>(s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4));
     }
-    t.threshold[256] = 2.f;
+    threshold[256] = 2.f;
+    SrgbTable t;
     int k = 0;
     for (int i = 0; i <= kCells; ++i) {
       const float v = static_cast<float>(i) / kCells;
-      while (v >= t.threshold[k + 1]) ++k;
-      t.start[i] = static_cast<std::uint8_t>(k);
+      while (v >= threshold[k + 1]) ++k;
+      t.cell[i] = {threshold[k + 1], static_cast<std::uint32_t>(k)};
     }
     return t;
   }();
@@ -70,35 +80,74 @@ float ApplyToneCurve(ToneCurve curve, float x) {
 
 namespace {
 
-std::uint8_t Encode(const SrgbTable& t, float v) {
-  if (!(v > 0.f)) return 0;  // also NaN
-  if (v >= 1.f) return 255;
-  int k = t.start[static_cast<int>(v * kCells)];
-  while (v >= t.threshold[k + 1]) ++k;
-  return static_cast<std::uint8_t>(k);
+// v in [0, 1] -> its 8-bit code (see SrgbTable).
+std::uint8_t EncodeUnit(const SrgbTable& t, float v) {
+  const Cell& c = t.cell[static_cast<int>(v * kCells)];
+  return static_cast<std::uint8_t>(c.start + (v >= c.next ? 1u : 0u));
 }
 
-// One row, with the curve fixed at compile time. Returns pixels with a negative / NaN channel.
+constexpr int kBlock = 768;  // values per block: 256 pixels
+
+// The arithmetic of n <= kBlock values, branch-free so that it vectorises: exposure, NaN and
+// negative to 0, the curve, clamp to [0, 1]. Returns true if a value was negative or NaN.
 template <ToneCurve kCurve>
-void MapRow(const glm::vec3* in, int width, float scale, std::uint8_t* out,
-            std::size_t& negative, std::size_t& nan) {
-  const SrgbTable& table = Table();
-  for (int x = 0; x < width; ++x) {
+inline __attribute__((always_inline)) bool Prepare(const float* in, int n, float scale, float* v) {
+  int bad = 0;
+  for (int i = 0; i < n; ++i) {
+    const float x = in[i] * scale;
+    bad |= x >= 0.f ? 0 : 1;
+    v[i] = std::min(ApplyToneCurve(kCurve, std::max(0.f, x)), 1.f);  // max(0, NaN) is 0
+  }
+  return bad != 0;
+}
+
+PRT_VECTORIZED bool PrepareSrgb(const float* in, int n, float scale, float* v) {
+  return Prepare<ToneCurve::kSrgb>(in, n, scale, v);
+}
+PRT_VECTORIZED bool PrepareReinhard(const float* in, int n, float scale, float* v) {
+  return Prepare<ToneCurve::kReinhard>(in, n, scale, v);
+}
+PRT_VECTORIZED bool PrepareAces(const float* in, int n, float scale, float* v) {
+  return Prepare<ToneCurve::kAces>(in, n, scale, v);
+}
+
+// Pixels of in[0 .. n) (n a multiple of 3) with a negative or a NaN channel.
+void CountBad(const float* in, int n, float scale, std::size_t& negative, std::size_t& nan) {
+  for (int i = 0; i < n; i += 3) {
     bool has_negative = false, has_nan = false;
-    for (int i = 0; i < 3; ++i) {
-      float v = in[x][i] * scale;
-      if (v != v) has_nan = true, v = 0.f;  // NaN
-      if (v < 0.f) has_negative = true, v = 0.f;
-      out[3 * x + i] = Encode(table, ApplyToneCurve(kCurve, v));
+    for (int c = 0; c < 3; ++c) {
+      const float x = in[i + c] * scale;
+      has_nan |= x != x;
+      has_negative |= x < 0.f;
     }
     negative += has_negative;
     nan += has_nan;
   }
 }
 
+// One row of `width` pixels: the arithmetic in vectors, then one table load per value.
+void MapRow(ToneCurve curve, const glm::vec3* row, int width, float scale, std::uint8_t* out,
+            std::size_t& negative, std::size_t& nan) {
+  const SrgbTable& table = Table();
+  static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "pixels are three packed floats");
+  const float* in = reinterpret_cast<const float*>(row);
+  float v[kBlock];
+  for (int first = 0; first < 3 * width; first += kBlock) {
+    const int n = std::min(kBlock, 3 * width - first);
+    const bool bad = curve == ToneCurve::kSrgb       ? PrepareSrgb(in + first, n, scale, v)
+                     : curve == ToneCurve::kReinhard ? PrepareReinhard(in + first, n, scale, v)
+                                                     : PrepareAces(in + first, n, scale, v);
+    if (bad) CountBad(in + first, n, scale, negative, nan);
+    for (int i = 0; i < n; ++i) out[first + i] = EncodeUnit(table, v[i]);
+  }
+}
+
 }  // namespace
 
-std::uint8_t EncodeSrgb8(float v) { return Encode(Table(), v); }
+std::uint8_t EncodeSrgb8(float v) {
+  if (!(v > 0.f)) return 0;  // also NaN
+  return EncodeUnit(Table(), std::min(v, 1.f));
+}
 
 ToneMapped ToneMap(const ImageF& image, const ToneMapOptions& options) {
   ToneMapped out;
@@ -108,15 +157,9 @@ ToneMapped ToneMap(const ImageF& image, const ToneMapOptions& options) {
   // Per-row counts, summed afterwards: the same totals for any thread count.
   std::vector<std::size_t> negative(rows, 0), nan(rows, 0);
   ParallelFor(rows, 16, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t y = begin; y < end; ++y) {
-      const glm::vec3* in = &image.pixels[y * image.width];
-      std::uint8_t* dst = &out.image.rgb[3 * y * image.width];
-      switch (options.curve) {
-        case ToneCurve::kSrgb: MapRow<ToneCurve::kSrgb>(in, image.width, scale, dst, negative[y], nan[y]); break;
-        case ToneCurve::kReinhard: MapRow<ToneCurve::kReinhard>(in, image.width, scale, dst, negative[y], nan[y]); break;
-        case ToneCurve::kAces: MapRow<ToneCurve::kAces>(in, image.width, scale, dst, negative[y], nan[y]); break;
-      }
-    }
+    for (std::size_t y = begin; y < end; ++y)
+      MapRow(options.curve, &image.pixels[y * image.width], image.width, scale,
+             &out.image.rgb[3 * y * image.width], negative[y], nan[y]);
   });
   for (std::size_t y = 0; y < rows; ++y) {
     out.negative_pixels += negative[y];

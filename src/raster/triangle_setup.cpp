@@ -23,6 +23,10 @@ i64 FloorDiv(i64 n, i64 d) {
 }
 i64 CeilDiv(i64 n, i64 d) { return -FloorDiv(-n, d); }
 
+// floor(n / kSubpixelScale) and ceil(...): the arithmetic shift rounds towards minus infinity.
+i64 FloorShift(i64 n) { return n >> kSubpixelBits; }
+i64 CeilShift(i64 n) { return -((-n) >> kSubpixelBits); }
+
 struct Fixed {
   i64 x, y;
 };
@@ -63,33 +67,31 @@ Plane MakePlane(const double x[3], const double y[3], double q0, double q1, doub
 
 }  // namespace
 
-std::optional<RasterTriangle> SetupTriangle(const ScreenVertex& v0, const ScreenVertex& v1,
-                                            const ScreenVertex& v2, int width, int height,
-                                            bool cull_back_faces) {
+bool SetupTriangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
+                   int width, int height, bool cull_back_faces, RasterTriangle& t) {
   // Snap to the fixed-point grid.
   const ScreenVertex* v[3] = {&v0, &v1, &v2};
   Fixed f[3];
   for (int i = 0; i < 3; ++i)
-    if (!Snap(*v[i], f[i])) return std::nullopt;
+    if (!Snap(*v[i], f[i])) return false;
 
   // Orientation: area2 < 0 is counter-clockwise as seen on screen (y points down), a front face.
   const i64 area2 = (f[1].x - f[0].x) * (f[2].y - f[0].y) - (f[2].x - f[0].x) * (f[1].y - f[0].y);
-  if (area2 == 0) return std::nullopt;
-  if (area2 > 0 && cull_back_faces) return std::nullopt;
+  if (area2 == 0) return false;
+  if (area2 > 0 && cull_back_faces) return false;
   if (area2 < 0) {  // make the area positive so that "inside" means E > 0 on every edge
     std::swap(f[1], f[2]);
     std::swap(v[1], v[2]);
   }
 
   // Pixel bounds: centres 256 x + 128 inside the fixed-point bounding box, clipped to the target.
-  RasterTriangle t;
   const i64 min_x = std::min({f[0].x, f[1].x, f[2].x}), max_x = std::max({f[0].x, f[1].x, f[2].x});
   const i64 min_y = std::min({f[0].y, f[1].y, f[2].y}), max_y = std::max({f[0].y, f[1].y, f[2].y});
-  t.x_min = static_cast<int>(std::max<i64>(0, CeilDiv(min_x - kHalf, kSubpixelScale)));
-  t.x_max = static_cast<int>(std::min<i64>(width - 1, FloorDiv(max_x - kHalf, kSubpixelScale)));
-  t.y_min = static_cast<int>(std::max<i64>(0, CeilDiv(min_y - kHalf, kSubpixelScale)));
-  t.y_max = static_cast<int>(std::min<i64>(height - 1, FloorDiv(max_y - kHalf, kSubpixelScale)));
-  if (t.x_min > t.x_max || t.y_min > t.y_max) return std::nullopt;
+  t.x_min = static_cast<int>(std::max<i64>(0, CeilShift(min_x - kHalf)));
+  t.x_max = static_cast<int>(std::min<i64>(width - 1, FloorShift(max_x - kHalf)));
+  t.y_min = static_cast<int>(std::max<i64>(0, CeilShift(min_y - kHalf)));
+  t.y_max = static_cast<int>(std::min<i64>(height - 1, FloorShift(max_y - kHalf)));
+  if (t.x_min > t.x_max || t.y_min > t.y_max) return false;
 
   // Edge functions, edge i from vertex i to vertex i + 1.
   for (int i = 0; i < 3; ++i) t.edge[i] = MakeEdge(f[i], f[(i + 1) % 3]);
@@ -109,7 +111,7 @@ std::optional<RasterTriangle> SetupTriangle(const ScreenVertex& v0, const Screen
   t.r_w = MakePlane(x, y, w[0] * v[0]->color.x, w[1] * v[1]->color.x, w[2] * v[2]->color.x, inv_det);
   t.g_w = MakePlane(x, y, w[0] * v[0]->color.y, w[1] * v[1]->color.y, w[2] * v[2]->color.y, inv_det);
   t.b_w = MakePlane(x, y, w[0] * v[0]->color.z, w[1] * v[1]->color.z, w[2] * v[2]->color.z, inv_det);
-  return t;
+  return true;
 }
 
 Span RowSpan(const RasterTriangle& t, int y) {
@@ -129,5 +131,13 @@ Span RowSpan(const RasterTriangle& t, int y) {
   }
   return {static_cast<int>(lo), static_cast<int>(std::max(lo, hi + 1))};
 }
+
+RowWalker::RowWalker(const RasterTriangle& t, int y_first)
+    : t_(t), y_(y_first), scan_(t.x_max - t.x_min < kScanWidth) {
+  if (!scan_) return;
+  const i64 px = i64(t.x_min) * kSubpixelScale + kHalf, py = i64(y_first) * kSubpixelScale + kHalf;
+  for (int i = 0; i < 3; ++i) edge_[i] = i64(t.edge[i].a) * px + i64(t.edge[i].b) * py + t.edge[i].c;
+}
+
 
 }  // namespace prt

@@ -20,7 +20,6 @@
 ///      in State of the Art in Computer Graphics, Springer 1991.
 
 #include <cstdint>
-#include <optional>
 
 #include <glm/vec3.hpp>
 
@@ -62,13 +61,12 @@ struct RasterTriangle {
   Plane inv_w, r_w, g_w, b_w;      ///< 1/w and colour/w
 };
 
-/// Snaps and sets up a triangle for a width x height target. Returns nothing when the triangle
-/// covers no pixel centre of the target, has zero area, is back-facing and cull_back_faces is
-/// set (front faces are counter-clockwise on screen, the OpenGL default), or has a coordinate
-/// beyond kMaxScreenCoord or a non-positive inv_w.
-std::optional<RasterTriangle> SetupTriangle(const ScreenVertex& v0, const ScreenVertex& v1,
-                                            const ScreenVertex& v2, int width, int height,
-                                            bool cull_back_faces);
+/// Snaps and sets up a triangle for a width x height target into `t`. Returns false (and `t` is
+/// unspecified) when the triangle covers no pixel centre of the target, has zero area, is
+/// back-facing and cull_back_faces is set (front faces are counter-clockwise on screen, the
+/// OpenGL default), or has a coordinate beyond kMaxScreenCoord or a non-positive inv_w.
+bool SetupTriangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
+                   int width, int height, bool cull_back_faces, RasterTriangle& t);
 
 /// Pixels [begin, end) of scanline y covered by the triangle (empty when begin >= end).
 /// Precondition: y in [t.y_min, t.y_max].
@@ -76,5 +74,41 @@ struct Span {
   int begin = 0, end = 0;
 };
 Span RowSpan(const RasterTriangle& t, int y);
+
+/// Triangles at most this many pixels wide have their spans found by stepping (RowWalker).
+constexpr int kScanWidth = 32;
+
+/// The spans of a triangle's rows from y_first down, one per Next(): the same spans as RowSpan.
+/// A triangle at most kScanWidth pixels wide (the common case in a dense mesh, where most
+/// triangles cover a few pixels) is walked without any division: the three edge functions are
+/// stepped across the row's pixel centres and the covered centres form one interval (the
+/// triangle is convex); RowSpan's two divisions per edge and row would cost more than that.
+class RowWalker {
+ public:
+  RowWalker(const RasterTriangle& t, int y_first);
+  Span Next();
+
+ private:
+  const RasterTriangle& t_;
+  int y_;
+  bool scan_;
+  std::int64_t edge_[3] = {0, 0, 0};  ///< scan_: edge values at the centre of (x_min, y_)
+};
+
+inline Span RowWalker::Next() {
+  if (!scan_) return RowSpan(t_, y_++);
+  // Bit i: the centre of pixel x_min + i is inside all three edges (no value negative).
+  const int n = t_.x_max - t_.x_min + 1;
+  const std::int64_t step0 = std::int64_t(t_.edge[0].a) * kSubpixelScale, step1 = std::int64_t(t_.edge[1].a) * kSubpixelScale,
+            step2 = std::int64_t(t_.edge[2].a) * kSubpixelScale;
+  std::int64_t e0 = edge_[0], e1 = edge_[1], e2 = edge_[2];
+  std::uint32_t inside = 0;
+  for (int i = 0; i < n; ++i, e0 += step0, e1 += step1, e2 += step2)
+    inside |= static_cast<std::uint32_t>((e0 | e1 | e2) >= 0) << i;
+  for (int i = 0; i < 3; ++i) edge_[i] += std::int64_t(t_.edge[i].b) * kSubpixelScale;
+  ++y_;
+  if (inside == 0) return {};
+  return {t_.x_min + __builtin_ctz(inside), t_.x_min + 32 - __builtin_clz(inside)};
+}
 
 }  // namespace prt

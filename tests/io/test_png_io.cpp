@@ -84,6 +84,23 @@ TEST_SUITE("io") {
     CHECK(entries == 1);
   }
 
+  TEST_CASE("Every zlib level decodes to the same pixels; smaller levels are not larger files") {
+    // A smooth image with noise, like a rendered frame: level 6 must not come out larger than
+    // level 1 (a level argument that is ignored would give equal sizes, caught below).
+    prt::Image8 image = Noise(64, 48, 3);
+    for (std::size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = static_cast<std::uint8_t>(i / 97 + image.rgb[i] % 4);
+    std::vector<std::size_t> sizes;
+    for (int level : {1, 2, 6, 9}) {
+      const std::string bytes = prt::EncodePng(image, level);
+      CHECK(prt::DecodePng(bytes, "level.png").rgb == image.rgb);
+      sizes.push_back(bytes.size());
+    }
+    CHECK(sizes.back() < sizes.front());
+    CHECK(prt::EncodePng(image) == prt::EncodePng(image, prt::kPngLevel));
+    CHECK_THROWS_AS(prt::EncodePng(image, 0), prt::Error);
+    CHECK_THROWS_AS(prt::EncodePng(image, 10), prt::Error);
+  }
+
   TEST_CASE("Grey and RGBA PNGs are read as RGB, 16-bit channels are rounded") {
     const std::string dir = prt::test::ScratchDir("png_kinds");
     const unsigned char grey[4] = {0, 100, 200, 255};

@@ -1,6 +1,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <vector>
 #include <limits>
 
 #include "raster/tonemap.h"
@@ -31,6 +32,54 @@ TEST_SUITE("raster") {
     CHECK(checked > 190000);
     CHECK(prt::EncodeSrgb8(std::numeric_limits<float>::quiet_NaN()) == 0);
     CHECK(prt::EncodeSrgb8(std::numeric_limits<float>::infinity()) == 255);
+  }
+
+  TEST_CASE("EncodeSrgb8 is the count of float thresholds at or below v, at every threshold") {
+    // The table's one-comparison search must agree with a full search over the 255 rounding
+    // thresholds (computed here from the sRGB definition, rounded to float) for floats just
+    // below, at and above each threshold.
+    std::vector<float> threshold(256, 0.f);
+    for (int k = 1; k < 256; ++k) {
+      const double s = (k - 0.5) / 255.0;
+      threshold[k] = static_cast<float>(s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4));
+    }
+    for (int k = 1; k < 256; ++k) {
+      float v = threshold[k];
+      for (int i = 0; i < 4; ++i) v = std::nextafter(v, 0.f);
+      for (int step = 0; step < 9; ++step, v = std::nextafter(v, 2.f)) {
+        int expected = 0;
+        while (expected < 255 && threshold[expected + 1] <= v) ++expected;
+        REQUIRE(int(prt::EncodeSrgb8(v)) == expected);
+      }
+    }
+  }
+
+  TEST_CASE("ToneMap equals EncodeSrgb8 of each channel through every curve, in rows with and without bad values") {
+    // A 1000-pixel-wide image (more than one block of the row loop) of values over [0, 1.2]
+    // with every channel different; row 1 also holds a NaN and a negative, row 0 none.
+    const int w = 1000;
+    prt::ImageF image(w, 2);
+    for (int y = 0; y < 2; ++y)
+      for (int x = 0; x < w; ++x)
+        image.at(x, y) = glm::vec3(1.2f * float(x) / float(w), 0.37f * float(x % 7), float((x * 37) % 1000) / 999.f);
+    image.at(17, 1).y = std::numeric_limits<float>::quiet_NaN();
+    image.at(900, 1).z = -0.25f;
+    for (prt::ToneCurve curve : {prt::ToneCurve::kSrgb, prt::ToneCurve::kReinhard, prt::ToneCurve::kAces}) {
+      prt::ToneMapOptions options;
+      options.curve = curve;
+      options.exposure_ev = 0.5f;
+      const prt::ToneMapped out = prt::ToneMap(image, options);
+      CHECK(out.nan_pixels == 1);
+      CHECK(out.negative_pixels == 1);
+      const float scale = std::exp2(0.5f);
+      for (int y = 0; y < 2; ++y)
+        for (int x = 0; x < w; ++x)
+          for (int c = 0; c < 3; ++c) {
+            float v = image.at(x, y)[c] * scale;
+            v = v > 0.f ? prt::ApplyToneCurve(curve, v) : 0.f;
+            REQUIRE(int(out.image.rgb[3 * (std::size_t(y) * w + x) + c]) == int(prt::EncodeSrgb8(v)));
+          }
+    }
   }
 
   TEST_CASE("Negative radiance and NaN are clamped to zero and counted") {

@@ -19,10 +19,11 @@ struct CoverageCount {
   std::vector<int> count;
   CoverageCount(int w, int h) : width(w), height(h), count(static_cast<std::size_t>(w) * h, 0) {}
   void Draw(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
-    const auto t = prt::SetupTriangle(a, b, c, width, height, false);
-    if (!t) return;
-    for (int y = t->y_min; y <= t->y_max; ++y) {
-      const prt::Span s = prt::RowSpan(*t, y);
+    prt::RasterTriangle t;
+    if (!prt::SetupTriangle(a, b, c, width, height, false, t)) return;
+    prt::RowWalker rows(t, t.y_min);
+    for (int y = t.y_min; y <= t.y_max; ++y) {
+      const prt::Span s = rows.Next();
       for (int x = s.begin; x < s.end; ++x) ++count[static_cast<std::size_t>(y) * width + x];
     }
   }
@@ -128,11 +129,39 @@ TEST_SUITE("raster") {
     }
   }
 
+  TEST_CASE("RowWalker finds RowSpan's spans, by stepping narrow triangles and dividing wide ones") {
+    // Random triangles from under a pixel to three times kScanWidth across, partly off the target,
+    // at random sub-pixel positions: every row's span must be RowSpan's (the reference, which
+    // solves the three edge inequalities by division).
+    prt::Pcg32 rng(5, 9);
+    const int w = 120, h = 90;
+    int narrow = 0, wide = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+      const float size = 0.5f + 3.f * prt::kScanWidth * Uniform(rng) * Uniform(rng);
+      const float cx = -10.f + (F(w) + 20.f) * Uniform(rng), cy = -10.f + (F(h) + 20.f) * Uniform(rng);
+      ScreenVertex v[3];
+      for (auto& p : v) p = V(cx + size * (Uniform(rng) - 0.5f), cy + size * (Uniform(rng) - 0.5f));
+      prt::RasterTriangle t;
+      if (!prt::SetupTriangle(v[0], v[1], v[2], w, h, false, t)) continue;
+      (t.x_max - t.x_min < prt::kScanWidth ? narrow : wide)++;
+      prt::RowWalker rows(t, t.y_min);
+      for (int y = t.y_min; y <= t.y_max; ++y) {
+        const prt::Span walked = rows.Next(), solved = prt::RowSpan(t, y);
+        const bool same = walked.begin >= walked.end ? solved.begin >= solved.end
+                                                     : walked.begin == solved.begin && walked.end == solved.end;
+        REQUIRE(same);
+      }
+    }
+    CHECK(narrow > 500);
+    CHECK(wide > 100);
+  }
+
   TEST_CASE("Back faces are dropped only when culling, degenerate triangles always") {
     const ScreenVertex a = V(1, 1), b = V(9, 1), c = V(1, 9);  // clockwise on screen (y down)
-    CHECK(prt::SetupTriangle(a, b, c, 10, 10, false).has_value());
-    CHECK_FALSE(prt::SetupTriangle(a, b, c, 10, 10, true).has_value());
-    CHECK(prt::SetupTriangle(a, c, b, 10, 10, true).has_value());
-    CHECK_FALSE(prt::SetupTriangle(a, b, V(5, 1), 10, 10, false).has_value());
+    prt::RasterTriangle t;
+    CHECK(prt::SetupTriangle(a, b, c, 10, 10, false, t));
+    CHECK_FALSE(prt::SetupTriangle(a, b, c, 10, 10, true, t));
+    CHECK(prt::SetupTriangle(a, c, b, 10, 10, true, t));
+    CHECK_FALSE(prt::SetupTriangle(a, b, V(5, 1), 10, 10, false, t));
   }
 }
