@@ -31,6 +31,11 @@ void Print(const std::string& key, const std::string& value);
 /// The processor's model name (/proc/cpuinfo), "unknown" where it cannot be read.
 std::string CpuModel();
 
+/// Prints what the numbers below depend on: the CPU model, the widest instruction set it runs,
+/// the instruction set of each family of kernels as chosen for it at run time, and `threads`
+/// (0: all cores).
+void PrintMachine(int threads);
+
 int BenchLight(Args& args);
 int BenchBvh(Args& args);
 int BenchRaster(Args& args);

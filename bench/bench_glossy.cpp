@@ -36,8 +36,6 @@ void BenchGlossy(int runs, int threads, int samples, int lmax) {
   SetUniformAlbedo(mesh, glm::vec3(0.5f));
   const glm::dvec3 eye = *WithDemoCamera({}).eye;
   const Material material = ParseMaterial("phong:50,0.4");
-  Print("glossy_cpu_model", CpuModel());
-  Print("glossy_isa", IsaName(ActiveKernels().isa));
   Print("glossy_threads", double(ThreadCount()));
   Print("glossy_material", material.Name());
   Print("glossy_vertices", double(mesh.vertex_count()));

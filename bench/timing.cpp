@@ -6,6 +6,9 @@
 #include <vector>
 
 #include "bench/bench.h"
+#include "core/parallel.h"
+#include "core/simd.h"
+#include "geometry/bvh_kernels.h"
 
 namespace prt::bench {
 
@@ -52,6 +55,15 @@ std::string CpuModel() {
       if (colon != std::string::npos) return line.substr(line.find_first_not_of(' ', colon + 1));
     }
   return "unknown";
+}
+
+void PrintMachine(int threads) {
+  Print("cpu_model", CpuModel());
+  Print("cpu_vector_level", VectorLevelName(CpuVectorLevel()));
+  Print("isa_bvh", IsaName(ActiveKernels().isa));
+  Print("isa_vectorized_loops", VectorizedLoopsName());
+  SetThreadCount(threads);
+  Print("threads", double(ThreadCount()));
 }
 
 void Print(const std::string& key, double value) { std::printf("%s=%.6g\n", key.c_str(), value); }

@@ -85,6 +85,7 @@ int RunBench(const std::vector<std::string>& tokens) {
     Args args("bench", tokens, BenchSpec());
     args.TakePositionals();
     args.Allow(it->second.options);
+    bench::PrintMachine(args.Int("--threads", 0, 0, 1024));
     const int rc = it->second.run(args);
     bench::Print("peak_memory_mib", PeakMemoryMiB());
     return rc;
@@ -93,6 +94,12 @@ int RunBench(const std::vector<std::string>& tokens) {
   std::set<std::string> any;
   for (const auto& [name, b] : Benches()) any.insert(b.options.begin(), b.options.end());
   int rc = 0;
+  {
+    Args args("bench", tokens, BenchSpec());
+    args.TakePositionals();
+    args.Allow(any);
+    bench::PrintMachine(args.Int("--threads", 0, 0, 1024));
+  }
   for (const auto& [name, b] : Benches()) {
     Args args("bench", tokens, BenchSpec());
     args.TakePositionals();

@@ -30,6 +30,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/simd.h"
 #include "sh/coeffs.h"
 
 namespace prt {
@@ -42,11 +43,21 @@ std::vector<double> EvalBasis(int lmax, const glm::dvec3& dir);
 /// The recurrence for any lmax (what EvalBasis uses above band 2).
 void EvalBasisRecurrence(int lmax, const glm::dvec3& dir, double* out);
 
-/// The recurrence for a batch of n directions given as separate x, y, z arrays (unit vectors):
-/// writes Y_k(dir_i) to out[k * stride + i]. The inner loops run over the batch, so they
-/// vectorise; this is what light projection uses.
-void EvalBasisBatch(int lmax, std::size_t n, const double* x, const double* y, const double* z,
-                    double* out, std::size_t stride);
+/// Weighted basis sums over a batch, what light projection uses: adds
+/// sum_i Y_k(dir_i) w_c[i] to sums[c * count + k] for the channels c = r, g, b, k < count =
+/// CoeffCount(lmax). Every direction rounds the same way: (x + i y)^m by complex products,
+/// Y_lm = Pbar_lm for m = 0 and (Pbar_lm sqrt 2) times Re or Im otherwise (EvalBasisRecurrence
+/// rounds differently). The basis values never leave registers (no count x n table is written). Kernels for SSE2, AVX2 and AVX-512 (core/simd.h), picked for
+/// the CPU at hand, take each sum in one order: four partial sums s_j of the terms i = j mod 4
+/// in increasing i (the last n mod 4 terms go to s_0), then (s_0 + s_1) + (s_2 + s_3) is added
+/// to sums. So the result is the same, bit for bit, on every CPU.
+void ProjectBasisBatch(int lmax, std::size_t n, const double* x, const double* y, const double* z,
+                       const double* wr, const double* wg, const double* wb, double* sums);
+
+/// ProjectBasisBatch with the kernel of `level`, or of the widest level below it that this CPU
+/// runs (tests compare the kernels).
+void ProjectBasisBatchAt(VectorLevel level, int lmax, std::size_t n, const double* x, const double* y,
+                         const double* z, const double* wr, const double* wg, const double* wb, double* sums);
 
 /// Closed forms of bands 0..2 (9 values), as listed in CONVENTIONS.md.
 void EvalBasisBand2(const glm::dvec3& dir, double* out);

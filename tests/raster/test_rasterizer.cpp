@@ -134,6 +134,33 @@ TEST_SUITE("raster") {
       }
   }
 
+  TEST_CASE("On an exact depth tie the triangle drawn first stays, however far apart in the list") {
+    // Two coplanar screen-filling quads, red then blue, with 10,000 off-screen triangles between
+    // them (the setup and binning work in chunks of thousands): red must stay everywhere, at
+    // one sample per pixel and supersampled, for one thread and for three.
+    const int size = 24;
+    std::vector<glm::vec3> positions = {AtScreen(0, 0, 3, size), AtScreen(24, 0, 3, size),
+                                        AtScreen(24, 24, 3, size), AtScreen(0, 24, 3, size)};
+    std::vector<glm::vec3> colors(4, glm::vec3(1, 0, 0));
+    for (int i = 0; i < 4; ++i) positions.push_back(positions[i]), colors.emplace_back(0, 0, 1);
+    const std::uint32_t off = static_cast<std::uint32_t>(positions.size());
+    positions.insert(positions.end(), {{50, 50, -3}, {51, 50, -3}, {50, 51, -3}});  // far off to the right
+    colors.insert(colors.end(), 3, glm::vec3(0, 1, 0));
+    Triangles triangles = {{0, 2, 1}, {0, 3, 2}};
+    for (int i = 0; i < 10000; ++i) triangles.push_back({off, off + 1, off + 2});
+    triangles.push_back({4, 6, 5});
+    triangles.push_back({4, 7, 6});
+    for (int ssaa : {1, 2})
+      for (int threads : {1, 3}) {
+        prt::RasterOptions options;
+        options.ssaa = ssaa;
+        const auto frame = prt::test::WithThreads(threads, [&] {
+          return prt::Rasterize(AxisCamera(), size, size, positions, triangles, colors, options);
+        });
+        for (const auto& p : frame.image.pixels) REQUIRE(p == glm::vec3(1, 0, 0));
+      }
+  }
+
   TEST_CASE("Triangles crossing the near plane are clipped, not dropped or wrapped") {
     // A floor quad y = -1 from 5 units behind the eye to 20 in front, near plane at 2: the
     // visible part is the floor between depths 2 and 20 within |x| <= 3.

@@ -18,6 +18,9 @@ using test::RandomDirection;
 constexpr double kReferenceTolerance = 1e-12;
 // Closed forms and recurrence are two double evaluations of the same polynomials: a few ulps.
 constexpr double kClosedFormTolerance = 1e-15;
+// Two summation orders of 259 terms, each basis value within 1e-12 of the reference: rounding
+// of the sum is far below this share of the sum of the terms' magnitudes.
+constexpr double kBatchSumTolerance = 1e-11;
 // Gauss quadrature is exact for these polynomials; what remains is rounding over ~10^4 terms.
 constexpr double kOrthonormalityTolerance = 1e-12;
 
@@ -124,5 +127,45 @@ TEST_SUITE("sh") {
     }
     CHECK(sw == doctest::Approx(2.0).epsilon(1e-14));
     CHECK(s38 == doctest::Approx(2.0 / 39.0).epsilon(1e-13));
+  }
+}
+
+TEST_SUITE("sh") {
+  TEST_CASE("batch projection: every kernel gives the same bits, and the plain sum of EvalBasis") {
+    // n = 259 directions (not a multiple of any vector width) with weights per channel, at
+    // lmax 2 (closed forms elsewhere), 8 and 17. Each kernel this CPU runs must agree with the
+    // baseline bit for bit (the sum order is fixed), and all with a plain double loop.
+    Pcg32 rng(21, 4);
+    const std::size_t n = 259;
+    std::vector<double> x(n), y(n), z(n), w[3];
+    for (auto& c : w) c.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const glm::dvec3 d = RandomDirection(rng);
+      x[i] = d.x, y[i] = d.y, z[i] = d.z;
+      for (auto& c : w) c[i] = rng.NextDouble() - 0.25;
+    }
+    for (int lmax : {2, 8, 17}) {
+      const std::size_t count = CoeffCount(lmax);
+      std::vector<double> plain(3 * count, 0.0), magnitude(3 * count, 0.0), basis(count);
+      for (std::size_t i = 0; i < n; ++i) {
+        EvalBasisRecurrence(lmax, glm::dvec3(x[i], y[i], z[i]), basis.data());
+        for (int c = 0; c < 3; ++c)
+          for (std::size_t k = 0; k < count; ++k) {
+            plain[c * count + k] += basis[k] * w[c][i];
+            magnitude[c * count + k] += std::fabs(basis[k] * w[c][i]);
+          }
+      }
+      std::vector<double> baseline(3 * count, 0.0);
+      ProjectBasisBatchAt(VectorLevel::kBaseline, lmax, n, x.data(), y.data(), z.data(), w[0].data(), w[1].data(),
+                          w[2].data(), baseline.data());
+      for (std::size_t k = 0; k < 3 * count; ++k)
+        REQUIRE(std::fabs(baseline[k] - plain[k]) <= kBatchSumTolerance * magnitude[k]);
+      for (VectorLevel level : {VectorLevel::kAvx2, VectorLevel::kX86_64V4}) {
+        std::vector<double> wide(3 * count, 0.0);
+        ProjectBasisBatchAt(level, lmax, n, x.data(), y.data(), z.data(), w[0].data(), w[1].data(), w[2].data(),
+                            wide.data());
+        CHECK(wide == baseline);
+      }
+    }
   }
 }
