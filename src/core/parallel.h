@@ -14,7 +14,9 @@ void SetThreadCount(int threads);
 int ThreadCount();
 
 /// Calls body(begin, end) for consecutive chunks [begin, end) of [0, count) of at most `grain`
-/// items, on up to ThreadCount() threads. The first exception thrown by a body is rethrown.
+/// items, on up to ThreadCount() threads: the caller and threads kept for the next call. A call
+/// made while another has the threads (from inside a body, or from another thread) runs its
+/// chunks on the calling thread alone. The first exception thrown by a body is rethrown.
 void ParallelFor(std::size_t count, std::size_t grain,
                  const std::function<void(std::size_t begin, std::size_t end)>& body);
 

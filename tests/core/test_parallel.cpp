@@ -3,6 +3,7 @@
 #include <atomic>
 #include <numeric>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "core/parallel.h"
@@ -27,6 +28,34 @@ TEST_SUITE("core") {
                                        if (b == 50) throw std::runtime_error("boom");
                                      }),
                     std::runtime_error);
+    prt::SetThreadCount(0);
+  }
+
+  TEST_CASE("ParallelFor inside a body, and from two threads at once, still visits every index once") {
+    // The kept threads serve one call at a time; nested and concurrent calls must neither
+    // deadlock nor lose chunks. Repeated, so that calls meet the threads in every state.
+    prt::SetThreadCount(3);
+    for (int round = 0; round < 50; ++round) {
+      std::vector<std::atomic<int>> hits(40 * 37);
+      prt::ParallelFor(40, 1, [&](std::size_t b, std::size_t) {
+        prt::ParallelFor(37, 5, [&](std::size_t ib, std::size_t ie) {
+          for (std::size_t i = ib; i < ie; ++i) hits[b * 37 + i]++;
+        });
+      });
+      std::vector<std::atomic<int>> a(997), c(991);
+      const auto count = [](std::vector<std::atomic<int>>& v) {
+        prt::ParallelFor(v.size(), 7, [&](std::size_t b, std::size_t e) {
+          for (std::size_t i = b; i < e; ++i) v[i]++;
+        });
+      };
+      std::thread other([&] { count(a); });
+      count(c);
+      other.join();
+      int wrong = 0;
+      for (auto* v : {&hits, &a, &c})
+        for (auto& h : *v) wrong += h.load() != 1;
+      REQUIRE(wrong == 0);
+    }
     prt::SetThreadCount(0);
   }
 
