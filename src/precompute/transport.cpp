@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <future>
 
 #include <glm/geometric.hpp>
 
@@ -92,14 +93,21 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
     return transport;
   }
 
+  // The BVH and the direction pool do not depend on each other: with more than one thread they
+  // are built at the same time (the BVH on a thread of its own), else one after the other.
   auto t0 = std::chrono::steady_clock::now();
-  const Bvh bvh = Bvh::Build(mesh);
-  r.bvh_built = true;
-  r.bvh_seconds = SecondsSince(t0);
-
-  t0 = std::chrono::steady_clock::now();
+  const auto build_bvh = [&mesh, &r] {
+    const auto tb = std::chrono::steady_clock::now();
+    Bvh built = Bvh::Build(mesh);
+    r.bvh_seconds = SecondsSince(tb);
+    return built;
+  };
+  std::future<Bvh> bvh_future;
+  if (ThreadCount() > 1) bvh_future = std::async(std::launch::async, build_bvh);
   const DirectionPool pool =
       MakeDirectionPool(options.sampler, options.samples, options.direction_sets, options.seed);
+  const Bvh bvh = bvh_future.valid() ? bvh_future.get() : build_bvh();
+  r.bvh_built = true;
   r.directions_per_vertex = static_cast<int>(pool.size());
   // Bounces gather from the hits; transfer matrices are built from them.
   const bool bounces = options.mode == TransportMode::kInterreflection;
