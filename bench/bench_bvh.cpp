@@ -131,7 +131,8 @@ void BenchMesh(const std::string& tag, const Mesh& mesh, int runs, int threads) 
 #ifdef PRT_BENCH_EMBREE
   EmbreeScene embree(mesh);
 #endif
-  for (const int t : {1, threads}) {
+  const std::vector<int> thread_counts = threads == 1 ? std::vector<int>{1} : std::vector<int>{1, threads};
+  for (const int t : thread_counts) {  // one thread only once when all threads is one
     SetThreadCount(t);
     const std::string key = tag + "_t" + std::to_string(ThreadCount());
     std::size_t occluded = 0, hits = 0, single = 0;

@@ -20,7 +20,8 @@
 /// padded boxes) and the watertight triangle test of `triangle.h` on eight triangles at once.
 /// Each traversal is compiled for AVX-512, AVX2 and the baseline, chosen per CPU
 /// (`bvh_kernels.h`). The fans (`ray_fan.h`) use per-direction constants computed once, and
-/// trace occlusion in packets of eight neighbouring directions (`bvh_packet_traverse.h`).
+/// trace packets of 32 neighbouring directions, occlusion and closest hit alike
+/// (`bvh_packet_traverse.h`), with the single rays' answers.
 ///
 /// References
 ///  [1] J. D. MacDonald, K. S. Booth, "Heuristics for ray tracing using space subdivision",

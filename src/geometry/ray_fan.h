@@ -7,8 +7,8 @@
 /// permutation and shear of the watertight triangle test [1]) is computed here once instead of
 /// once per ray. The rays are kept in an order that keeps successive directions close: by the
 /// cube face the direction goes through, then in Morton order of its position on that face, so
-/// eight consecutive directions make a coherent packet for occlusion (bvh_packet_traverse.h)
-/// and consecutive single rays revisit the nodes the previous one brought into the cache.
+/// consecutive directions make coherent packets (bvh_packet_traverse.h) and consecutive single
+/// rays revisit the nodes the previous one brought into the cache.
 ///
 /// References
 ///  [1] S. Woop, C. Benthin, I. Wald, "Watertight Ray/Triangle Intersection", JCGT 2(1), 2013.

@@ -2,14 +2,18 @@
 // padded for the fused slab test), and agreement with brute force on every instruction set for
 // binary leaves of 1, 20 and 64 triangles, a pile of coincident triangles, which SAH cannot
 // split (the median fallback below depth 96 must keep the leaves small), a small mesh far from
-// the origin, where the fused test's padding matters most, and rays that take the exact test.
+// the origin, where the fused test's padding matters most, and rays that take the exact test;
+// and closest-hit fans (packets, bvh_packet_traverse.h) against single rays bit for bit where
+// the order of leaves could decide: tied hits at vertices and in the pile.
 #include <doctest/doctest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 
+#include "core/rng.h"
 #include "geometry/brute_force.h"
 #include "geometry/bvh.h"
 #include "geometry/mesh_ops.h"
@@ -174,6 +178,63 @@ TEST_SUITE("geometry") {
       }
       CHECK(fan_hits > 0);
       CHECK(fan_disagreements == 0);
+    });
+  }
+
+  TEST_CASE("closest-hit fans give each ray's single-ray answer bit for bit, tied hits included, on every instruction set") {
+    // Tied hits are where the order of leaves could decide: 61 copies of every triangle, and
+    // rays aimed exactly at vertices, where several triangles meet at one distance.
+    Mesh pile = MakeSphere(6, 1.0f);
+    const Mesh one = pile;
+    for (int k = 0; k < 60; ++k) AppendMesh(pile, one);
+    std::vector<test::NamedMesh> meshes = test::TestMeshes();
+    meshes.push_back({"pile", pile});
+    const RayFan fibonacci = MakeRayFan(test::FibonacciDirections(512));
+    test::ForEachIsa([&](const std::string& isa) {
+      CAPTURE(isa);
+      for (const test::NamedMesh& named : meshes) {
+        CAPTURE(named.name);
+        const Mesh& mesh = named.mesh;
+        const Bvh bvh = Bvh::Build(mesh);
+        Pcg32 rng(5, 9);
+        int rays = 0, hits = 0, disagreements = 0;
+        std::vector<std::optional<Hit>> got;
+        for (int k = 0; k < 24; ++k) {
+          const std::size_t vi = rng.NextU32() % mesh.vertex_count();
+          const glm::vec3 normal = k % 2 == 0 ? mesh.normals[vi] : test::UniformSphere(rng);
+          const glm::vec3 origin = k % 2 == 0 ? OffsetRayOrigin(mesh.positions[vi], normal, bvh.SceneScale())
+                                              : mesh.positions[vi] + 0.5f * test::UniformSphere(rng);
+          const float tmax = k % 3 == 0 ? 0.7f : std::numeric_limits<float>::infinity();
+          // Every third fan: from the origin exactly to 256 vertices.
+          RayFan at_vertices;
+          if (k % 3 == 1) {
+            std::vector<glm::vec3> dirs;
+            for (int i = 0; i < 256; ++i) {
+              const glm::vec3 d = mesh.positions[rng.NextU32() % mesh.vertex_count()] - origin;
+              if (glm::dot(d, d) > 0.0f) dirs.push_back(d);
+            }
+            at_vertices = MakeRayFan(dirs);
+          }
+          const RayFan& fan = k % 3 == 1 ? at_vertices : fibonacci;
+          bvh.IntersectFan(fan, origin, normal, tmax, got);
+          for (std::size_t i = 0; i < fan.directions.size(); ++i) {
+            const glm::vec3 d = fan.directions[i];
+            const auto want = glm::dot(normal, d) > 0.0f ? bvh.Intersect(Ray{origin, d, 0.0f, tmax}) : std::nullopt;
+            ++rays;
+            hits += want ? 1 : 0;
+            if (got[i].has_value() != want.has_value()) {
+              ++disagreements;
+            } else if (want) {
+              const bool same = got[i]->triangle == want->triangle && got[i]->t == want->t &&
+                                got[i]->u == want->u && got[i]->v == want->v;
+              disagreements += same ? 0 : 1;
+            }
+          }
+        }
+        CAPTURE(rays);
+        CHECK(hits > rays / 16);
+        CHECK(disagreements == 0);
+      }
     });
   }
 }
