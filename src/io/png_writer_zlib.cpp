@@ -48,9 +48,10 @@ void Append(void* context, void* data, int size) {
 bool EncodePngZlib(const std::uint8_t* rgb, int width, int height, int level, std::string& out) {
   t_level = level;
   // "sub" filter on every row, as fast as any and good on smooth rendered images. This copy's
-  // settings are private to this file (internal linkage), so setting them is thread-safe
-  // enough: the same value each time.
-  stbi_write_force_png_filter = 1;
+  // settings are private to this file (internal linkage); set once, by a thread-safe static
+  // initialisation, because several frames are encoded at once and stb only reads it.
+  static const bool filter_set = (stbi_write_force_png_filter = 1, true);
+  (void)filter_set;
   return stbi_write_png_to_func(Append, &out, width, height, 3, rgb, 3 * width) != 0;
 }
 
