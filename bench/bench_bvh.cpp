@@ -23,7 +23,7 @@
 #include "io/obj_loader.h"
 
 #ifdef PRT_BENCH_EMBREE
-#include <embree3/rtcore.h>
+#include "bench/embree_scene.h"
 #endif
 
 namespace prt::bench {
@@ -78,39 +78,6 @@ std::function<void()> OverVertices(std::size_t vertices, std::size_t& total, con
   };
 }
 
-#ifdef PRT_BENCH_EMBREE
-struct EmbreeScene {
-  RTCDevice device = nullptr;
-  RTCScene scene = nullptr;
-  explicit EmbreeScene(const Mesh& mesh) {
-    device = rtcNewDevice(nullptr);
-    scene = rtcNewScene(device);
-    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                         3 * sizeof(float), mesh.vertex_count()));
-    for (std::size_t i = 0; i < mesh.vertex_count(); ++i)
-      for (int a = 0; a < 3; ++a) v[3 * i + a] = mesh.positions[i][a];
-    auto* t = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                            3 * sizeof(unsigned), mesh.triangle_count()));
-    for (std::size_t i = 0; i < mesh.triangle_count(); ++i)
-      for (int c = 0; c < 3; ++c) t[3 * i + c] = mesh.triangles[i][c];
-    rtcCommitGeometry(g);
-    rtcAttachGeometry(scene, g);
-    rtcReleaseGeometry(g);
-    rtcCommitScene(scene);
-  }
-  ~EmbreeScene() {
-    rtcReleaseScene(scene);
-    rtcReleaseDevice(device);
-  }
-  RTCRay MakeRay(const glm::vec3& o, const glm::vec3& d) const {
-    RTCRay r{};
-    r.org_x = o.x, r.org_y = o.y, r.org_z = o.z, r.dir_x = d.x, r.dir_y = d.y, r.dir_z = d.z;
-    r.tnear = 0.0f, r.tfar = std::numeric_limits<float>::infinity(), r.mask = 0xFFFFFFFFu;
-    return r;
-  }
-};
-#endif
 
 // Benchmarks one mesh under the name `tag` with `threads` threads.
 void BenchMesh(const std::string& tag, const Mesh& mesh, int runs, int threads) {

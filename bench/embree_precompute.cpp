@@ -41,10 +41,10 @@
 #include <string>
 #include <vector>
 
-#include <embree3/rtcore.h>
 #include <glm/geometric.hpp>
 
 #include "app/pipeline.h"
+#include "bench/embree_scene.h"
 #include "app/scene_options.h"
 #include "core/atomic_file.h"
 #include "core/log.h"
@@ -61,6 +61,7 @@
 namespace {
 
 using namespace prt;
+using prt::bench::EmbreeScene;
 
 [[noreturn]] void Usage(const char* why) {
   std::fprintf(stderr,
@@ -70,35 +71,6 @@ using namespace prt;
   std::exit(2);
 }
 
-/// The Embree scene of `mesh`'s triangles.
-struct EmbreeScene {
-  RTCDevice device = nullptr;
-  RTCScene scene = nullptr;
-  explicit EmbreeScene(const Mesh& mesh) {
-    device = rtcNewDevice(nullptr);
-    if (!device) throw std::runtime_error("rtcNewDevice failed");
-    scene = rtcNewScene(device);
-    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                         3 * sizeof(float), mesh.vertex_count()));
-    for (std::size_t i = 0; i < mesh.vertex_count(); ++i)
-      for (int a = 0; a < 3; ++a) v[3 * i + a] = mesh.positions[i][a];
-    auto* t = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                            3 * sizeof(unsigned), mesh.triangle_count()));
-    for (std::size_t i = 0; i < mesh.triangle_count(); ++i)
-      for (int c = 0; c < 3; ++c) t[3 * i + c] = mesh.triangles[i][c];
-    rtcCommitGeometry(g);
-    rtcAttachGeometry(scene, g);
-    rtcReleaseGeometry(g);
-    rtcCommitScene(scene);
-  }
-  ~EmbreeScene() {
-    rtcReleaseScene(scene);
-    rtcReleaseDevice(device);
-  }
-  EmbreeScene(const EmbreeScene&) = delete;
-  EmbreeScene& operator=(const EmbreeScene&) = delete;
-};
 
 /// Largest side of the triangles' bounding box: prt's Bvh::SceneScale (its root box).
 float SceneScale(const Mesh& mesh) {
