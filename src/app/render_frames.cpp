@@ -105,8 +105,22 @@ const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, cons
   // The light, and the environment behind the mesh, turned by R: L'(d) = L(R^T d). Only the
   // bands the transport has are turned.
   const ShRgb lit = rotation.Rotate(FirstBands(light, transport.lmax), angle);
-  const std::vector<glm::vec3> colors = ViewColors(mesh, transport, lit, o, view_scale, glm::dvec3(camera.eye));
+  // A textured mesh is shaded per pixel: the texture's albedo times the interpolated irradiance
+  // (the vertex colour without albedo), plus a glossy lobe, which the albedo does not scale.
+  const bool textured = mesh.textured() && (o.view == "radiance" || o.view == "albedo");
+  std::vector<glm::vec3> colors, added;
+  if (!textured) {
+    colors = ViewColors(mesh, transport, lit, o, view_scale, glm::dvec3(camera.eye));
+  } else if (o.view == "albedo") {
+    colors.assign(mesh.vertex_count(), glm::vec3(1.f));
+  } else {
+    const glm::dvec3 eye(camera.eye);
+    colors = ShadeVertices(mesh, transport, lit, false);
+    if (transport.material.glossy) added = ShadeGlossy(mesh, transport, lit, &eye);
+  }
+  RasterTexturing texturing{&mesh.corner_uv, &mesh.triangle_texture, &mesh.textures, added.empty() ? nullptr : &added};
   RasterOptions ro;
+  if (textured) ro.texturing = &texturing;
   ro.ssaa = o.ssaa;
   ro.background.color = o.background_color;
   if (o.view == "transport") {

@@ -57,6 +57,23 @@ void SplitLongTriangles(Mesh& mesh, const SceneOptions& options) {
   Summary(line + Formatted(" [%.3f s]", SecondsSince(t0)));
 }
 
+// The textures of a textured mesh for its summary line: each file with its size and mip levels,
+// how many materials use a plain Kd, and how the frames shade them.
+std::string DescribeTextures(const Mesh& mesh) {
+  std::string files;
+  std::size_t solid = 0;
+  for (const auto& t : mesh.textures) {
+    if (t->width() == 1 && t->height() == 1) {
+      ++solid;
+      continue;
+    }
+    files += (files.empty() ? "" : ", ") + t->name() + " (" + std::to_string(t->width()) + "x" +
+             std::to_string(t->height()) + ", " + std::to_string(t->level_count()) + " mip levels)";
+  }
+  if (solid > 0) files += (files.empty() ? "" : "; ") + std::to_string(solid) + " plain colours (Kd)";
+  return files + "; frames shade each pixel as the texture's albedo times the interpolated irradiance";
+}
+
 }  // namespace
 
 Mesh LoadSceneMesh(const SceneOptions& options, OutputFolder* folder) {
@@ -68,7 +85,7 @@ Mesh LoadSceneMesh(const SceneOptions& options, OutputFolder* folder) {
     mesh = MakeDemoScene();
     what = "embedded demo scene (torus knot on a ground plane)";
   } else {
-    LoadedMesh loaded = LoadObj(options.mesh);
+    LoadedMesh loaded = LoadObj(options.mesh, options.texture);
     if (folder)
       for (const std::string& file : loaded.files_read) folder->KeepInput(file);
     for (const auto& w : loaded.report.warnings) Warn(w);
@@ -78,6 +95,7 @@ Mesh LoadSceneMesh(const SceneOptions& options, OutputFolder* folder) {
   }
   Summary("mesh: " + what + ": " + std::to_string(mesh.vertex_count()) + " vertices, " +
           std::to_string(mesh.triangle_count()) + " triangles" + Formatted(" [%.3f s]", SecondsSince(t0)));
+  if (mesh.textured()) Summary("texture: " + DescribeTextures(mesh));
   if (!orientation.fixed.empty()) Summary("orientation: " + orientation.fixed);
   if (!orientation.warning.empty()) Warn(options.mesh + ": " + orientation.warning);
   ApplySceneEdits(mesh, options);
@@ -89,6 +107,8 @@ void ApplySceneEdits(Mesh& mesh, const SceneOptions& options) {
   if (options.material.glossy) {  // before any long work: the mesh's own albedo with KS
     float brightest = 0.0f;
     for (const glm::vec3& a : mesh.albedo) brightest = std::max({brightest, a.x, a.y, a.z});
+    for (const auto& texture : mesh.textures)
+      for (const glm::vec3& a : texture->level(0).pixels) brightest = std::max({brightest, a.x, a.y, a.z});
     CheckMaterialEnergy(options.material, brightest,
                         options.albedo ? "--albedo" : options.mesh.empty() ? "the demo scene" : "the brightest Kd of " + options.mesh);
   }

@@ -12,6 +12,7 @@
 #include "core/parallel.h"
 #include "env/cubemap.h"
 #include "env/load_environment.h"
+#include "io/image_load.h"
 #include "precompute/sample_rule.h"
 #include "sh/coeffs.h"
 
@@ -55,6 +56,10 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
        "gives smooth, correlated error",
        std::to_string(d.direction_sets)});
   add({"--albedo", "R,G,B", "override the material colour, each channel in [0, 1]", albedo});
+  add({"--texture", "FILE",
+       "one albedo texture for every face of --mesh, by its texture coordinates (png/jpg as sRGB, hdr/exr "
+       "linear); it replaces the materials' Kd and map_Kd",
+       d.texture.empty() ? "each material's map_Kd (relative to its .mtl); Kd without one" : d.texture});
   add({"--material", "M",
        "diffuse: f = albedo/pi | phong:N[,KS]: f = albedo/pi + KS (N+2)/(2 pi) max(0, r.s)^N, r the view direction "
        "mirrored about the normal, s the light direction, N an integer 1..1000, KS 0..1 (default 0.5); the "
@@ -88,6 +93,12 @@ void CheckInputs(Args& args, const SceneOptions& o) {
   if (!o.mesh.empty()) {
     if (!fs::exists(o.mesh, ec)) throw Error(o.mesh + ": no such file (expected an OBJ mesh for --mesh)");
     if (fs::is_directory(o.mesh, ec)) throw Error(o.mesh + ": is a directory (expected an OBJ file for --mesh)");
+  }
+  if (!o.texture.empty()) {
+    if (o.mesh.empty()) args.Fail("--texture: needs --mesh (an OBJ with texture coordinates; the demo scene has none)");
+    if (o.albedo) args.Fail("--texture and --albedo both set the albedo (expected one of them)");
+    int width = 0, height = 0;
+    ImageSize(o.texture, width, height);  // exists, is an image, and of a size prt accepts
   }
   if (fs::is_directory(o.env, ec)) {
     CheckCubemapFolder(o.env);
@@ -148,7 +159,7 @@ void WarnIfLobeTooSharp(const SceneOptions& o) {
 const std::vector<std::string>& AllSceneOptionNames() {
   static const std::vector<std::string> names = {
       "--mesh",    "--env",          "--lmax",   "--tolerance", "--transport",      "--samples",
-      "--sampler", "--bounces",      "--direction-sets",        "--albedo",         "--material", "--seed",
+      "--sampler", "--bounces",      "--direction-sets",        "--albedo",         "--texture", "--material", "--seed",
       "--threads", "--games202-faces", "--window", "--max-edge"};
   return names;
 }
@@ -168,6 +179,7 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
   SceneOptions o = d;
   const auto has = [&args](const char* name) { return args.Accepts(name); };
   if (has("--mesh")) o.mesh = args.String("--mesh", d.mesh);
+  if (has("--texture")) o.texture = args.String("--texture", d.texture);
   if (has("--env")) o.env = args.String("--env", d.env);
   if (has("--tolerance")) o.tolerance = args.Double("--tolerance", d.tolerance, 1e-12, 1.0);
   if (has("--lmax")) {

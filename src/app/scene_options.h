@@ -21,6 +21,7 @@ namespace prt {
 
 struct SceneOptions {
   std::string mesh;                  ///< OBJ path; empty = the embedded demo scene
+  std::string texture;               ///< --texture: one albedo texture for every face; empty = map_Kd
   std::string env = "sky";           ///< cubemap folder, image file, or built-in name
   int lmax = 2;                      ///< highest SH band
   /// The highest --lmax the command accepts: kMaxLmax where per-vertex transport is stored,

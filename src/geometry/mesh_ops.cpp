@@ -1,5 +1,7 @@
 #include "geometry/mesh_ops.h"
 
+#include "core/error.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -24,15 +26,23 @@ Bounds3 MeshBounds(const Mesh& mesh) {
 }
 
 void AppendMesh(Mesh& dst, const Mesh& src) {
+  if (!dst.triangles.empty() && !src.triangles.empty() && dst.textured() != src.textured())
+    throw Error("append mesh: a textured and an untextured mesh (expected both textured or neither)");
   const auto base = static_cast<std::uint32_t>(dst.positions.size());
   dst.positions.insert(dst.positions.end(), src.positions.begin(), src.positions.end());
   dst.normals.insert(dst.normals.end(), src.normals.begin(), src.normals.end());
   dst.albedo.insert(dst.albedo.end(), src.albedo.begin(), src.albedo.end());
   for (const auto& t : src.triangles) dst.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  if (!src.textured()) return;
+  const auto texture_base = static_cast<std::uint32_t>(dst.textures.size());
+  dst.textures.insert(dst.textures.end(), src.textures.begin(), src.textures.end());
+  dst.corner_uv.insert(dst.corner_uv.end(), src.corner_uv.begin(), src.corner_uv.end());
+  for (std::uint32_t t : src.triangle_texture) dst.triangle_texture.push_back(t + texture_base);
 }
 
 void SetUniformAlbedo(Mesh& mesh, const glm::vec3& albedo) {
   mesh.albedo.assign(mesh.positions.size(), albedo);
+  mesh.corner_uv.clear(), mesh.triangle_texture.clear(), mesh.textures.clear();
 }
 
 float TriangleDoubleArea(const Mesh& mesh, std::size_t t) {

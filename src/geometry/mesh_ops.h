@@ -32,10 +32,11 @@ struct Bounds3 {
 /// Bounds of all vertex positions of `mesh`.
 Bounds3 MeshBounds(const Mesh& mesh);
 
-/// Appends `src` to `dst`: vertices after dst's, triangle indices shifted accordingly.
+/// Appends `src` to `dst`: vertices after dst's, triangle indices shifted accordingly. A textured
+/// `src` needs an empty or textured `dst` (its texture indices are shifted after dst's).
 void AppendMesh(Mesh& dst, const Mesh& src);
 
-/// Sets every vertex albedo to `albedo` (linear RGB), e.g. for `--albedo`.
+/// Sets every vertex albedo to `albedo` (linear RGB), e.g. for `--albedo`; drops any textures.
 void SetUniformAlbedo(Mesh& mesh, const glm::vec3& albedo);
 
 /// Twice the area of triangle `t` (|e1 x e2|), in world units squared.

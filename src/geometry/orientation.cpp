@@ -235,6 +235,7 @@ OrientationReport OrientMesh(Mesh& mesh, const std::vector<std::uint8_t>& normal
     if (!parts[part_of_triangle[t]].flip_winding) continue;
     auto& tri = mesh.triangles[t];
     std::swap(tri[1], tri[2]);
+    if (mesh.textured()) std::swap(mesh.corner_uv[3 * t + 1], mesh.corner_uv[3 * t + 2]);
     touched[tri[0]] = touched[tri[1]] = touched[tri[2]] = 1;
     ++report.flipped_triangles;
   }

@@ -83,6 +83,12 @@ int DescendantsLog4(const Mesh& mesh, const Triangle& t, const Limits& limits) {
 class Midpoints {
  public:
   explicit Midpoints(Mesh& mesh) : mesh_(mesh) {}
+  /// The midpoint of a and b if this pass made it, else kNoMidpoint (nothing is added).
+  static constexpr std::uint32_t kNoMidpoint = 0xffffffffu;
+  std::uint32_t Find(std::uint32_t a, std::uint32_t b) const {
+    const auto it = cache_.find(PositionEdgeKey(a, b));
+    return it == cache_.end() ? kNoMidpoint : it->second;
+  }
   std::uint32_t Of(std::uint32_t a, std::uint32_t b) {
     const auto [it, inserted] = cache_.emplace(PositionEdgeKey(a, b), 0u);  // packs the vertex pair
     std::uint32_t& id = it->second;
@@ -105,6 +111,26 @@ class Midpoints {
   Mesh& mesh_;
   std::unordered_map<std::uint64_t, std::uint32_t> cache_;
 };
+
+// Appends the texture coordinates and texture of children out[first_child ...] of triangle
+// `parent`: each child corner is a parent corner or the midpoint of a parent edge.
+void AddChildCoordinates(const Mesh& mesh, std::size_t parent, const Midpoints& midpoints,
+                         const std::vector<Triangle>& out, std::size_t first_child, std::vector<glm::vec2>& out_uv,
+                         std::vector<std::uint32_t>& out_texture) {
+  const Triangle& v = mesh.triangles[parent];
+  const glm::vec2* uv = &mesh.corner_uv[3 * parent];
+  const auto coordinate = [&](std::uint32_t id) {
+    for (int i = 0; i < 3; ++i)
+      if (id == v[i]) return uv[i];
+    for (int i = 0; i < 3; ++i)
+      if (id == midpoints.Find(v[i], v[(i + 1) % 3])) return 0.5f * (uv[i] + uv[(i + 1) % 3]);
+    return uv[0];  // unreachable: children are made of corners and edge midpoints
+  };
+  for (std::size_t child = first_child; child < out.size(); ++child) {
+    for (std::uint32_t id : out[child]) out_uv.push_back(coordinate(id));
+    out_texture.push_back(mesh.triangle_texture[parent]);
+  }
+}
 
 }  // namespace
 
@@ -143,8 +169,16 @@ SplitReport SplitLongEdges(Mesh& mesh, float max_edge) {
     Midpoints midpoints(mesh);
     std::vector<Triangle> out;
     out.reserve(mesh.triangles.size());
+    // A textured mesh's children take their corners' coordinates from the parent's: a corner at
+    // a midpoint gets the mean of the edge's two corner coordinates (per triangle, so a seam
+    // stays a seam).
+    const bool textured = mesh.textured();
+    std::vector<glm::vec2> out_uv;
+    std::vector<std::uint32_t> out_texture;
     bool split = false;
-    for (const Triangle& v : mesh.triangles) {
+    for (std::size_t parent = 0; parent < mesh.triangles.size(); ++parent) {
+      const Triangle& v = mesh.triangles[parent];
+      const std::size_t first_child = out.size();
       // Edge i runs from v[i] to v[i + 1].
       bool long_edge[3];
       int k = 0;
@@ -154,6 +188,7 @@ SplitReport SplitLongEdges(Mesh& mesh, float max_edge) {
       }
       if (k == 0) {
         out.push_back(v);
+        if (textured) AddChildCoordinates(mesh, parent, midpoints, out, first_child, out_uv, out_texture);
         continue;
       }
       split = true;
@@ -184,9 +219,11 @@ SplitReport SplitLongEdges(Mesh& mesh, float max_edge) {
         out.push_back({r, q, v[2]});
         out.push_back({p, q, r});
       }
+      if (textured) AddChildCoordinates(mesh, parent, midpoints, out, first_child, out_uv, out_texture);
     }
     if (!split) break;
     mesh.triangles.swap(out);
+    if (textured) mesh.corner_uv.swap(out_uv), mesh.triangle_texture.swap(out_texture);
     ++report.passes;
   }
 

@@ -90,6 +90,10 @@ WeldedMesh WeldCorners(const CornerSoup& soup, float position_tolerance, MeshRep
       continue;
     }
     mesh.triangles.push_back(tri);
+    if (!soup.texture.empty()) {
+      mesh.triangle_texture.push_back(soup.texture[t / 3]);
+      for (std::size_t c = 0; c < 3; ++c) mesh.corner_uv.push_back(soup.uv[t + c]);
+    }
   }
 
   // Normals from the file where given, smooth ones elsewhere; mean albedo.

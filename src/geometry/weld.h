@@ -36,6 +36,10 @@ struct CornerSoup {
   /// with a normal and equal ids are one vertex. Ignored for corners without a normal.
   std::vector<std::uint64_t> ids;
   std::vector<glm::vec3> albedo;   ///< linear RGB of the corner's material
+  /// Texture coordinates per corner and the texture of each triangle (t, not 3 t + c); both
+  /// empty for an untextured soup. They pass to the kept triangles unwelded (Mesh::corner_uv).
+  std::vector<glm::vec2> uv;
+  std::vector<std::uint32_t> texture;
 };
 
 /// A welded mesh and, per vertex, where its normal came from.

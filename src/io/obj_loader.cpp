@@ -14,9 +14,11 @@
 #include "core/error.h"
 #include "core/progress.h"
 #include "geometry/mesh_ops.h"
+#include "geometry/mesh_texture.h"
 #include "geometry/weld.h"
 #include "io/obj_materials.h"
 #include "io/obj_scan.h"
+#include "io/obj_textures.h"
 
 namespace prt {
 namespace {
@@ -95,7 +97,7 @@ void TranslateWarnings(const std::string& path, const std::string& raw, std::set
 
 }  // namespace
 
-LoadedMesh LoadObj(const std::string& path) {
+LoadedMesh LoadObj(const std::string& path, const std::string& texture) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!fs::exists(path, ec)) Fail(path, "no such file", "an OBJ mesh");
@@ -134,12 +136,17 @@ LoadedMesh LoadObj(const std::string& path) {
   for (const std::string& r : libraries.remarks()) out.report.warnings.push_back(r);
   out.files_read.push_back(path);
   for (const std::string& library : libraries.read_paths()) out.files_read.push_back(library);
-  WarnMissingMaterials(path, scan.faces_by_material, materials, libraries, not_found, out.report.warnings);
+  if (texture.empty())  // --texture replaces every material's colour: none is missing then
+    WarnMissingMaterials(path, scan.faces_by_material, materials, libraries, not_found, out.report.warnings);
   const std::vector<glm::vec3> albedos = MaterialAlbedos(materials, path, out.report.warnings);
   auto albedo_of = [&](int id) {
     return id < 0 || static_cast<std::size_t>(id) >= albedos.size() ? glm::vec3(kDefaultAlbedo)
                                                                      : albedos[static_cast<std::size_t>(id)];
   };
+  if (!texture.empty() && attrib.texcoords.empty())
+    Fail(path, "has no texture coordinates (vt lines) for --texture " + texture, "an OBJ with vt coordinates on its faces");
+  ObjTextures textures(materials, libraries.material_folders(), albedos, texture, path);
+  const auto texcoord_count = static_cast<int>(attrib.texcoords.size() / 2);
 
   // Gather the triangles' corners. The scan checked the indices on the text; the two checks
   // below only confirm that tinyobjloader resolved them alike (they guard memory, not input).
@@ -149,6 +156,7 @@ LoadedMesh LoadObj(const std::string& path) {
   for (const auto& shape : shapes) corners += shape.mesh.indices.size() / 3 * 3;
   CornerSoup soup;
   soup.positions.reserve(corners), soup.normals.reserve(corners), soup.ids.reserve(corners), soup.albedo.reserve(corners);
+  if (textures.active()) soup.uv.reserve(corners), soup.texture.reserve(corners / 3);
   // Progress: half of the build stage for gathering, half for welding.
   const std::size_t build_units = bytes * kBuildWeight;
   std::size_t build_reported = 0;
@@ -175,7 +183,18 @@ LoadedMesh LoadObj(const std::string& path) {
       }
       // Zero-area faces go on into the soup: the welder drops them from the triangles but
       // keeps them in file_triangles, so per-face outputs still have a row for every face.
-      const glm::vec3 albedo = albedo_of(shape.mesh.material_ids.empty() ? -1 : shape.mesh.material_ids[f]);
+      const int material = shape.mesh.material_ids.empty() ? -1 : shape.mesh.material_ids[f];
+      const glm::vec3 albedo = albedo_of(material);
+      if (textures.active()) {
+        // Corners without a vt (or with an index tinyobjloader did not resolve) have none.
+        bool has_uv = true;
+        for (int c = 0; c < 3; ++c) {
+          const int t = idx[f * 3 + c].texcoord_index;
+          has_uv = has_uv && t >= 0 && t < texcoord_count;
+          soup.uv.push_back(has_uv ? glm::vec2(attrib.texcoords[2 * t], attrib.texcoords[2 * t + 1]) : glm::vec2(0.f));
+        }
+        soup.texture.push_back(textures.ForFace(material, has_uv));
+      }
       for (int c = 0; c < 3; ++c) {
         const tinyobj::index_t& i = idx[f * 3 + c];
         soup.positions.emplace_back(p[c]);
@@ -209,6 +228,12 @@ LoadedMesh LoadObj(const std::string& path) {
   WeldedMesh welded = WeldCorners(soup, tolerance, out.report);
   progress.Advance(build_units - build_reported);
   out.mesh = std::move(welded.mesh);
+  if (textures.active()) {
+    out.mesh.textures = textures.TakeTextures();
+    SetVertexAlbedoFromTextures(out.mesh);
+    for (std::string& w : textures.Warnings()) out.report.warnings.push_back(std::move(w));
+    for (std::string& file : textures.Files()) out.files_read.push_back(std::move(file));
+  }
   out.normal_from_file = std::move(welded.normal_from_file);
   if (out.mesh.triangles.empty())
     Fail(path, "all " + std::to_string(faces) + " faces have zero area or collapse when welding",

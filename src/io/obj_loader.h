@@ -57,7 +57,12 @@ inline constexpr float kWeldRelativeTolerance = 1e-6f;
 /// missing normals recomputed and lines that are not OBJ skipped (counted in the report); a
 /// material no library defines (the library missing, unreadable or silent about it) is one
 /// warning per name and leaves its faces at the default albedo 0.8.
-LoadedMesh LoadObj(const std::string& path);
+///
+/// Textures (obj_textures.h): materials' map_Kd, or `texture` (non-empty: one file for every
+/// face, --texture) make the mesh textured: texture coordinates per corner, a texture per face,
+/// each vertex's albedo the mean of the texture at its corners (geometry/mesh_texture.h).
+/// `texture` needs texture coordinates in the file: a file with no `vt` is an Error.
+LoadedMesh LoadObj(const std::string& path, const std::string& texture = "");
 
 /// The run summary's words for report.skipped_lines, e.g. `3 lines not understood, skipped
 /// (first: line 12: 'hello world')`; empty when there were none.

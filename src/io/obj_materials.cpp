@@ -44,6 +44,7 @@ bool MaterialLibraries::operator()(const std::string& name, std::vector<tinyobj:
   std::istringstream stream(text.str());
   std::string remarks;
   tinyobj::LoadMtl(names, materials, &stream, &remarks, err);
+  material_folders_.resize(materials->size(), path.parent_path().string());
   for (const std::string& r : TinyObjLines(remarks)) remarks_.push_back(path.string() + ": " + r);
   read_.push_back(name);
   read_paths_.push_back(path.string());

@@ -45,12 +45,15 @@ class MaterialLibraries : public tinyobj::MaterialReader {
   const std::vector<std::string>& read_paths() const { return read_paths_; }
   /// One entry per library that could not be read: "x.mtl was not found", "... could not be read".
   const std::vector<std::string>& unread() const { return unread_; }
+  /// Per material read (in tinyobjloader's order), the folder of the library that defined it:
+  /// where its map_Kd is looked up.
+  const std::vector<std::string>& material_folders() const { return material_folders_; }
   /// tinyobjloader's remarks on the libraries' content, each prefixed with the library's path.
   const std::vector<std::string>& remarks() const { return remarks_; }
 
  private:
   std::string folder_;
-  std::vector<std::string> read_, read_paths_, unread_, remarks_;
+  std::vector<std::string> read_, read_paths_, unread_, remarks_, material_folders_;
 };
 
 /// Albedo for each tinyobjloader material id: the Kd of the LAST definition of its name,

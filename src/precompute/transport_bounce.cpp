@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/parallel.h"
+#include "geometry/mesh_texture.h"
 #include "core/progress.h"
 #include "precompute/transport_steps.h"
 
@@ -13,6 +14,8 @@ namespace prt {
 namespace {
 
 bool GreyAlbedo(const Mesh& mesh) {
+  for (const auto& texture : mesh.textures)
+    if (!texture->grey()) return false;
   for (const auto& a : mesh.albedo)
     if (a.x != a.y || a.y != a.z) return false;
   return true;
@@ -27,16 +30,26 @@ double Energy(const std::vector<double>& t, int count) {
 
 }  // namespace
 
+float HitFootprint(const Mesh& mesh, std::size_t vertex, std::uint32_t triangle, float u, float v,
+                   std::size_t directions) {
+  const auto& tri = mesh.triangles[triangle];
+  const glm::vec3 point = (1.f - u - v) * mesh.positions[tri[0]] + u * mesh.positions[tri[1]] + v * mesh.positions[tri[2]];
+  return RayFootprint(glm::length(point - mesh.positions[vertex]), directions);
+}
+
 int TransportChannels(const Mesh& mesh, TransportMode mode) {
   return mode == TransportMode::kInterreflection && !GreyAlbedo(mesh) ? 3 : 1;
 }
 
 void AddHitLight(const Mesh& mesh, std::uint32_t triangle, float u, float v, const std::vector<double>& transfer,
-                 int channels, int count, int c, double scale, double* out) {
+                 int channels, int count, int c, double scale, double* out, float footprint) {
   const auto& tri = mesh.triangles[triangle];
   const double b[3] = {1.0 - u - v, u, v};
   double rho = 0.0;
-  for (int j = 0; j < 3; ++j) rho += b[j] * mesh.albedo[tri[j]][c];
+  if (mesh.textured())
+    rho = SurfaceAlbedo(mesh, triangle, u, v, footprint)[c];
+  else
+    for (int j = 0; j < 3; ++j) rho += b[j] * mesh.albedo[tri[j]][c];
   const std::size_t stride = std::size_t(channels) * count;
   const double* t0 = transfer.data() + tri[0] * stride + c * count;
   const double* t1 = transfer.data() + tri[1] * stride + c * count;
@@ -84,8 +97,10 @@ BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const Direc
         for (const VertexHit& h : direct.hits[v]) {
           if (!h.front) continue;  // the unlit back of a surface reflects nothing
           const double cosine = glm::dot(n, dirs[h.dir]);
+          const float footprint = mesh.textured() ? HitFootprint(mesh, v, h.triangle, h.u, h.v, dirs.size()) : 0.f;
           for (int c = 0; c < channels; ++c)
-            AddHitLight(mesh, h.triangle, h.u, h.v, current, channels, count, c, weight * cosine, out + c * count);
+            AddHitLight(mesh, h.triangle, h.u, h.v, current, channels, count, c, weight * cosine, out + c * count,
+                        footprint);
         }
       }
       progress.Advance(end - begin);

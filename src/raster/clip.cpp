@@ -21,7 +21,8 @@ float Distance(const glm::vec4& p, int plane, const ClipPlanes& c) {
 // The point where the edge from `in` (inside) to `out` (outside) crosses the plane.
 ClipVertex Cut(const ClipVertex& in, float d_in, const ClipVertex& out, float d_out) {
   const float t = d_in / (d_in - d_out);
-  return {in.position + t * (out.position - in.position), in.color + t * (out.color - in.color)};
+  return {in.position + t * (out.position - in.position), in.color + t * (out.color - in.color),
+          {in.texture.uv + t * (out.texture.uv - in.texture.uv), in.texture.added + t * (out.texture.added - in.texture.added)}};
 }
 
 }  // namespace

@@ -18,12 +18,15 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "raster/triangle_setup.h"
+
 namespace prt {
 
 /// A vertex in clip space (OpenGL convention, w = depth along the view axis) with its colour.
 struct ClipVertex {
   glm::vec4 position{0.f};
   glm::vec3 color{0.f};
+  TextureCorner texture;  ///< a textured triangle's corner data, interpolated like colour
 };
 
 /// The planes kept: w >= near_w, |x| <= guard_x w, |y| <= guard_y w.

@@ -44,6 +44,16 @@ void Validate(const Camera& camera, int width, int height, const std::vector<glm
   if (colors.size() != positions.size())
     throw Error("rasterizer: " + std::to_string(colors.size()) + " colours for " +
                 std::to_string(positions.size()) + " vertices (expected one per vertex)");
+  if (const RasterTexturing* tx = options.texturing) {
+    if (!tx->corner_uv || !tx->triangle_texture || !tx->textures || tx->corner_uv->size() != 3 * triangles.size() ||
+        tx->triangle_texture->size() != triangles.size() || (tx->added && tx->added->size() != positions.size()))
+      throw Error("rasterizer: texturing arrays do not match the mesh (expected 3 coordinates per triangle, one "
+                  "texture per triangle and one added colour per vertex)");
+    for (std::uint32_t index : *tx->triangle_texture)
+      if (index >= tx->textures->size() || !(*tx->textures)[index])
+        throw Error("rasterizer: texture " + std::to_string(index) + " does not exist (expected < " +
+                    std::to_string(tx->textures->size()) + ")");
+  }
   for (std::size_t i = 0; i < triangles.size(); ++i)
     for (std::uint32_t index : triangles[i])
       if (index >= positions.size())
@@ -62,15 +72,28 @@ ScreenVertex Project(const ClipVertex& c, Target target) {
 
 // Clips, projects and sets up one input triangle; appends 0 or more raster triangles. `screen`
 // holds the projected vertices of the triangles inside every plane (outcodes all zero).
+// With `texture` (textured triangles), each emitted triangle's texture planes are appended to
+// `planes` and its `textured` holds their index until the chunk is complete (see SetUp).
 void SetupOne(const ClipVertex (&v)[3], const ScreenVertex* const (&screen)[3], const unsigned (&outcode)[3],
-              const ClipPlanes& planes, Target target, bool cull, std::vector<RasterTriangle>& out) {
+              const ClipPlanes& planes, Target target, bool cull, std::vector<RasterTriangle>& out,
+              const Texture* texture = nullptr, std::vector<TexturePlanes>* texture_planes = nullptr) {
   if (outcode[0] & outcode[1] & outcode[2]) return;  // entirely outside one plane
-  const auto emit = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+  const auto emit = [&](const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c,
+                        const TextureCorner* corners) {
     out.emplace_back();
-    if (!SetupTriangle(a, b, c, target.width, target.height, cull, out.back())) out.pop_back();
+    TexturePlanes tp;
+    if (!SetupTriangle(a, b, c, target.width, target.height, cull, out.back(), texture ? corners : nullptr, &tp)) {
+      out.pop_back();
+      return;
+    }
+    if (!texture) return;
+    tp.texture = texture;
+    out.back().textured = reinterpret_cast<const TexturePlanes*>(texture_planes->size());  // an index for now
+    texture_planes->push_back(tp);
   };
   if ((outcode[0] | outcode[1] | outcode[2]) == 0) {
-    emit(*screen[0], *screen[1], *screen[2]);
+    const TextureCorner corners[3] = {v[0].texture, v[1].texture, v[2].texture};
+    emit(*screen[0], *screen[1], *screen[2], corners);
     return;
   }
   // Crosses a plane: clip to a convex polygon and draw it as a fan.
@@ -78,13 +101,57 @@ void SetupOne(const ClipVertex (&v)[3], const ScreenVertex* const (&screen)[3], 
       ClipTriangle(v[0], v[1], v[2], outcode[0] | outcode[1] | outcode[2], planes);
   ScreenVertex s[kMaxClipVertices];
   for (int i = 0; i < poly.count; ++i) s[i] = Project(poly.vertex[i], target);
-  for (int i = 1; i + 1 < poly.count; ++i) emit(s[0], s[i], s[i + 1]);
+  for (int i = 1; i + 1 < poly.count; ++i) {
+    const TextureCorner corners[3] = {poly.vertex[0].texture, poly.vertex[i].texture, poly.vertex[i + 1].texture};
+    emit(s[0], s[i], s[i + 1], corners);
+  }
+}
+
+// The textured fill of one pixel: colour times the texture's albedo at the perspective-correct
+// (u, v), filtered at the pixel's footprint (the derivatives of u = (u/w) / (1/w) across and
+// down the screen), plus the added colour.
+inline glm::vec3 TexturedColor(const TexturePlanes& p, const glm::vec3& color, float scale, float u_w, float v_w,
+                               const Plane& inv_w_plane, const glm::vec3& added_w) {
+  const float u = u_w * scale, v = v_w * scale;
+  const glm::vec2 d_dx((p.u_w.ddx - u * inv_w_plane.ddx) * scale, (p.v_w.ddx - v * inv_w_plane.ddx) * scale);
+  const glm::vec2 d_dy((p.u_w.ddy - u * inv_w_plane.ddy) * scale, (p.v_w.ddy - v * inv_w_plane.ddy) * scale);
+  return color * p.texture->Sample({u, v}, p.texture->LodOf(d_dx, d_dy)) + added_w * scale;
+}
+
+// FillRows for a textured triangle.
+void FillRowsTextured(const RasterTriangle& t, int row_begin, int row_end, int band_y0, int width, float* depth,
+                      glm::vec3* color) {
+  const TexturePlanes& p = *t.textured;
+  const int y_first = std::max(t.y_min, row_begin), y_end = std::min(t.y_max + 1, row_end);
+  if (y_first >= y_end) return;
+  RowWalker rows(t, y_first);
+  const auto at = [](const Plane& q, float dx, float dy) { return q.at_ref + q.ddx * dx + q.ddy * dy; };
+  for (int y = y_first; y < y_end; ++y) {
+    const Span span = rows.Next();
+    if (span.begin >= span.end) continue;
+    const float dy = static_cast<float>(y) + 0.5f - t.ref_y;
+    const std::size_t row = static_cast<std::size_t>(y - band_y0) * width;
+    for (int x = span.begin; x < span.end; ++x) {
+      const float dx = static_cast<float>(x) + 0.5f - t.ref_x;
+      const float inv_w = at(t.inv_w, dx, dy);
+      if (!(inv_w > depth[row + x])) continue;  // depth test: nearer wins, first drawn keeps ties
+      depth[row + x] = inv_w;
+      const float scale = 1.f / inv_w;
+      const glm::vec3 shade(at(t.r_w, dx, dy) * scale, at(t.g_w, dx, dy) * scale, at(t.b_w, dx, dy) * scale);
+      const glm::vec3 added_w(at(p.ar_w, dx, dy), at(p.ag_w, dx, dy), at(p.ab_w, dx, dy));
+      color[row + x] = TexturedColor(p, shade, scale, at(p.u_w, dx, dy), at(p.v_w, dx, dy), t.inv_w, added_w);
+    }
+  }
 }
 
 // Fills the rows [row_begin, row_end) of one triangle; depth and colour hold the band, whose
 // first sample row is band_y0. Depth is 1/w: larger is nearer, 0 means empty.
 void FillRows(const RasterTriangle& t, int row_begin, int row_end, int band_y0, int width,
               float* depth, glm::vec3* color) {
+  if (t.textured) {
+    FillRowsTextured(t, row_begin, row_end, band_y0, width, depth, color);
+    return;
+  }
   const int y_first = std::max(t.y_min, row_begin), y_end = std::min(t.y_max + 1, row_end);
   if (y_first >= y_end) return;
   RowWalker rows(t, y_first);
@@ -178,8 +245,8 @@ void Resolve(const BandBuffers& band, int row_begin, int row_end, int band_y0, i
 void Rasterizer::SetUp(const Camera& camera, float aspect, int target_width, int target_height,
                        const std::vector<glm::vec3>& positions,
                        const std::vector<std::array<std::uint32_t, 3>>& triangles,
-                       const std::vector<glm::vec3>& colors, bool cull_back_faces, int band_samples,
-                       int band_count) {
+                       const std::vector<glm::vec3>& colors, const RasterTexturing* texturing,
+                       bool cull_back_faces, int band_samples, int band_count) {
   const Target target{target_width, target_height};
   // Vertices to clip space, with their outcodes, and projected when inside every plane (a
   // vertex is shared by about six triangles: it is projected once).
@@ -192,7 +259,7 @@ void Rasterizer::SetUp(const Camera& camera, float aspect, int target_width, int
     for (std::size_t i = begin; i < end; ++i) {
       clip_[i] = view_projection * glm::vec4(positions[i], 1.f);
       outcodes_[i] = Outcode(clip_[i], planes);
-      if (outcodes_[i] == 0) screen_[i] = Project({clip_[i], colors[i]}, target);
+      if (outcodes_[i] == 0) screen_[i] = Project({clip_[i], colors[i], {}}, target);
     }
   });
   // Triangle setup in fixed chunks; chunk c's output keeps the input order. Each chunk also
@@ -204,15 +271,30 @@ void Rasterizer::SetUp(const Camera& camera, float aspect, int target_width, int
   ParallelFor(triangles.size(), kTriangleGrain, [&](std::size_t begin, std::size_t end) {
     const std::size_t c = begin / kTriangleGrain;
     std::vector<RasterTriangle>& out = chunks_[c].triangles;
+    std::vector<TexturePlanes>& textured = chunks_[c].textured;
     out.clear();
+    textured.clear();
     for (std::size_t i = begin; i < end; ++i) {
       const auto& tri = triangles[i];
       const unsigned codes[3] = {outcodes_[tri[0]], outcodes_[tri[1]], outcodes_[tri[2]]};
       const ScreenVertex* const screen[3] = {&screen_[tri[0]], &screen_[tri[1]], &screen_[tri[2]]};
-      const ClipVertex v[3] = {{clip_[tri[0]], colors[tri[0]]}, {clip_[tri[1]], colors[tri[1]]},
-                               {clip_[tri[2]], colors[tri[2]]}};
-      SetupOne(v, screen, codes, planes, target, cull_back_faces, out);
+      ClipVertex v[3] = {{clip_[tri[0]], colors[tri[0]], {}}, {clip_[tri[1]], colors[tri[1]], {}},
+                         {clip_[tri[2]], colors[tri[2]], {}}};
+      if (!texturing) {
+        SetupOne(v, screen, codes, planes, target, cull_back_faces, out);
+        continue;
+      }
+      for (int k = 0; k < 3; ++k) {
+        v[k].texture.uv = (*texturing->corner_uv)[3 * i + k];
+        if (texturing->added) v[k].texture.added = (*texturing->added)[tri[k]];
+      }
+      const Texture* texture = (*texturing->textures)[(*texturing->triangle_texture)[i]].get();
+      SetupOne(v, screen, codes, planes, target, cull_back_faces, out, texture, &textured);
     }
+    // The chunk's planes no longer move: turn the indices into pointers.
+    if (texturing)
+      for (RasterTriangle& t : out)
+        t.textured = &textured[reinterpret_cast<std::size_t>(t.textured)];
     std::vector<BandRange>& ranges = chunks_[c].bands;
     ranges.resize(out.size());
     std::size_t* count = &chunk_band_count_[c * bands];
@@ -260,7 +342,7 @@ const RasterImage& Rasterizer::Draw(const Camera& camera, int width, int height,
   const float aspect = static_cast<float>(width) / static_cast<float>(height);
   const int band_samples = kBandRows * k;
   const int band_count = (height + kBandRows - 1) / kBandRows;
-  SetUp(camera, aspect, target.width, target.height, positions, triangles, colors,
+  SetUp(camera, aspect, target.width, target.height, positions, triangles, colors, options.texturing,
         options.cull_back_faces, band_samples, band_count);
   Bin(band_count);
 

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// The rasterizer: draws triangles with per-vertex linear RGB colours into a linear image,
-/// with a depth buffer, near-plane clipping and optional supersampling.
+/// The rasterizer: draws triangles with per-vertex linear RGB colours, optionally times a
+/// filtered texture per pixel, into a linear image, with a depth buffer, near-plane clipping and
+/// optional supersampling.
 ///
 /// The pipeline, one step per function in rasterizer.cpp:
 ///   1. vertices -> clip space (camera.h);
@@ -18,14 +19,17 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "core/image.h"
 #include "raster/camera.h"
 #include "raster/triangle_setup.h"
+#include "texture/texture.h"
 
 namespace prt {
 
@@ -37,11 +41,24 @@ struct Background {
   std::function<glm::vec3(const glm::vec3& direction)> radiance;
 };
 
+/// A textured mesh's per-pixel albedo: each pixel of triangle i is colour * albedo + added, with
+/// albedo = textures[triangle_texture[i]] sampled at the texture coordinates interpolated
+/// perspective-correctly from corner_uv[3 i + c] (filtered by its mip levels at the pixel's own
+/// footprint: texture/texture.h), and `added` interpolated from per-vertex colours like `colors`
+/// (a glossy lobe, which the albedo does not scale; may be null). The arrays must outlive Draw.
+struct RasterTexturing {
+  const std::vector<glm::vec2>* corner_uv = nullptr;
+  const std::vector<std::uint32_t>* triangle_texture = nullptr;
+  const std::vector<std::shared_ptr<const Texture>>* textures = nullptr;
+  const std::vector<glm::vec3>* added = nullptr;
+};
+
 /// How to draw.
 struct RasterOptions {
   int ssaa = 1;                  ///< K: render K*W x K*H samples, box-filter to W x H; 1..8
   bool cull_back_faces = false;  ///< drop triangles clockwise on screen (counter-clockwise = front)
   Background background;
+  const RasterTexturing* texturing = nullptr;  ///< null: per-vertex colours only
 };
 
 /// Largest render target side in samples (width * ssaa and height * ssaa).
@@ -74,7 +91,8 @@ class Rasterizer {
   void SetUp(const Camera& camera, float aspect, int target_width, int target_height,
              const std::vector<glm::vec3>& positions,
              const std::vector<std::array<std::uint32_t, 3>>& triangles,
-             const std::vector<glm::vec3>& colors, bool cull_back_faces, int band_samples, int band_count);
+             const std::vector<glm::vec3>& colors, const RasterTexturing* texturing, bool cull_back_faces,
+             int band_samples, int band_count);
   void Bin(int band_count);
 
   struct BandRange {
@@ -83,6 +101,7 @@ class Rasterizer {
   struct SetupChunk {
     std::vector<RasterTriangle> triangles;  ///< in input order
     std::vector<BandRange> bands;           ///< per triangle
+    std::vector<TexturePlanes> textured;    ///< the textured triangles' planes, in order
   };
 
   RasterImage frame_;

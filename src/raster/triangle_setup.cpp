@@ -68,9 +68,11 @@ Plane MakePlane(const double x[3], const double y[3], double q0, double q1, doub
 }  // namespace
 
 bool SetupTriangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
-                   int width, int height, bool cull_back_faces, RasterTriangle& t) {
+                   int width, int height, bool cull_back_faces, RasterTriangle& t,
+                   const TextureCorner* corners, TexturePlanes* planes) {
   // Snap to the fixed-point grid.
   const ScreenVertex* v[3] = {&v0, &v1, &v2};
+  const TextureCorner* tc[3] = {corners, corners + 1, corners + 2};
   Fixed f[3];
   for (int i = 0; i < 3; ++i)
     if (!Snap(*v[i], f[i])) return false;
@@ -82,6 +84,7 @@ bool SetupTriangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenV
   if (area2 < 0) {  // make the area positive so that "inside" means E > 0 on every edge
     std::swap(f[1], f[2]);
     std::swap(v[1], v[2]);
+    std::swap(tc[1], tc[2]);
   }
 
   // Pixel bounds: centres 256 x + 128 inside the fixed-point bounding box, clipped to the target.
@@ -111,6 +114,17 @@ bool SetupTriangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenV
   t.r_w = MakePlane(x, y, w[0] * v[0]->color.x, w[1] * v[1]->color.x, w[2] * v[2]->color.x, inv_det);
   t.g_w = MakePlane(x, y, w[0] * v[0]->color.y, w[1] * v[1]->color.y, w[2] * v[2]->color.y, inv_det);
   t.b_w = MakePlane(x, y, w[0] * v[0]->color.z, w[1] * v[1]->color.z, w[2] * v[2]->color.z, inv_det);
+  t.textured = nullptr;
+  if (corners && planes) {
+    const auto plane = [&](auto value) {
+      return MakePlane(x, y, w[0] * value(*tc[0]), w[1] * value(*tc[1]), w[2] * value(*tc[2]), inv_det);
+    };
+    planes->u_w = plane([](const TextureCorner& c) { return double(c.uv.x); });
+    planes->v_w = plane([](const TextureCorner& c) { return double(c.uv.y); });
+    planes->ar_w = plane([](const TextureCorner& c) { return double(c.added.x); });
+    planes->ag_w = plane([](const TextureCorner& c) { return double(c.added.y); });
+    planes->ab_w = plane([](const TextureCorner& c) { return double(c.added.z); });
+  }
   return true;
 }
 

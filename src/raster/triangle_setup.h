@@ -11,6 +11,7 @@
 ///
 /// Colour is interpolated perspective-correctly [3]: 1/w and colour/w are affine functions of
 /// the screen position, so they are stored as planes and colour = (colour/w) / (1/w) per pixel.
+/// Texture coordinates of a textured triangle likewise, with their own planes (TexturePlanes).
 ///
 /// References:
 ///  [1] J. Pineda, "A Parallel Algorithm for Polygon Rasterization", SIGGRAPH 1988.
@@ -21,7 +22,10 @@
 
 #include <cstdint>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+
+#include "texture/texture.h"
 
 namespace prt {
 
@@ -52,6 +56,19 @@ struct Plane {
   float at_ref = 0.f, ddx = 0.f, ddy = 0.f;
 };
 
+/// What a textured triangle's corner adds to its ScreenVertex: texture coordinates, and a colour
+/// added after the albedo multiplies the vertex colour (a glossy lobe's radiance).
+struct TextureCorner {
+  glm::vec2 uv{0.f};
+  glm::vec3 added{0.f};
+};
+
+/// A textured triangle's extra planes: (u, v)/w and added/w, and its texture.
+struct TexturePlanes {
+  Plane u_w, v_w, ar_w, ag_w, ab_w;
+  const Texture* texture = nullptr;
+};
+
 /// A triangle ready to fill. Bounds are the inclusive pixel range that may be covered, already
 /// clipped to the render target.
 struct RasterTriangle {
@@ -59,14 +76,18 @@ struct RasterTriangle {
   int x_min = 0, x_max = -1, y_min = 0, y_max = -1;
   float ref_x = 0.f, ref_y = 0.f;  ///< where the planes are anchored (the first vertex)
   Plane inv_w, r_w, g_w, b_w;      ///< 1/w and colour/w
+  /// Textured: the pixel's colour is colour * albedo(u, v) + added; null for a plain triangle.
+  const TexturePlanes* textured = nullptr;
 };
 
 /// Snaps and sets up a triangle for a width x height target into `t`. Returns false (and `t` is
 /// unspecified) when the triangle covers no pixel centre of the target, has zero area, is
 /// back-facing and cull_back_faces is set (front faces are counter-clockwise on screen, the
 /// OpenGL default), or has a coordinate beyond kMaxScreenCoord or a non-positive inv_w.
+/// With `corners` (three, in vertex order) the texture planes are set up into `*planes` too.
 bool SetupTriangle(const ScreenVertex& v0, const ScreenVertex& v1, const ScreenVertex& v2,
-                   int width, int height, bool cull_back_faces, RasterTriangle& t);
+                   int width, int height, bool cull_back_faces, RasterTriangle& t,
+                   const TextureCorner* corners = nullptr, TexturePlanes* planes = nullptr);
 
 /// Pixels [begin, end) of scanline y covered by the triangle (empty when begin >= end).
 /// Precondition: y in [t.y_min, t.y_max].

@@ -1,0 +1,70 @@
+#pragma once
+/// \file
+/// The OBJ loader's textures: which texture each face takes, read once per file.
+///
+/// Sources. A material's `map_Kd FILE` is its diffuse texture, FILE relative to the folder of the
+/// .mtl that defines it (as OBJ tools resolve it); `--texture FILE` applies one texture to every
+/// face instead. The texture replaces the material's Kd rather than multiplying it (Blender's
+/// importer reads it so; exporters write Kd 0.8 or 1 beside a map_Kd, and a painted albedo
+/// darkened by 0.8 is not what the artist painted).
+///
+/// A textured mesh has a texture on every face: a material without map_Kd gets a 1 x 1 texture
+/// of its Kd, and a face of a textured material without texture coordinates (no `vt` on a
+/// corner) a 1 x 1 texture of the texture's mean, counted in one warning. A map_Kd file that does
+/// not exist is a warning (its faces keep Kd, as a missing material keeps the default); one that
+/// exists but cannot be decoded is an error. Each file is read once however many materials name it.
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <tiny_obj_loader.h>
+
+#include "texture/texture.h"
+
+namespace prt {
+
+class ObjTextures {
+ public:
+  /// `folders[m]`: the folder of the .mtl that defined material m; `albedos[m]`: its Kd
+  /// (obj_materials.h). `override_path` non-empty: --texture, for every face.
+  ObjTextures(const std::vector<tinyobj::material_t>& materials, const std::vector<std::string>& folders,
+              const std::vector<glm::vec3>& albedos, const std::string& override_path, const std::string& obj_path);
+
+  /// True when some material names a map_Kd or --texture is given: the mesh is textured.
+  bool active() const { return active_; }
+  /// The texture index of a face of material `id` (-1: none), whose corners all have texture
+  /// coordinates when `has_uv`. Reads the texture on first use.
+  std::uint32_t ForFace(int id, bool has_uv);
+  /// The textures ForFace numbered, and the warnings (missing files, faces without coordinates).
+  std::vector<std::shared_ptr<const Texture>> TakeTextures() { return std::move(textures_); }
+  std::vector<std::string> Warnings() const;
+  /// The texture files read, for the run's record of inputs.
+  std::vector<std::string> Files() const {
+    std::vector<std::string> out;
+    for (const auto& [path, texture] : files_) out.push_back(path);
+    return out;
+  }
+
+ private:
+  std::uint32_t Add(std::shared_ptr<const Texture> texture);
+  std::uint32_t Solid(const glm::vec3& albedo, const std::string& name);
+
+  const std::vector<tinyobj::material_t>& materials_;
+  std::vector<std::string> folders_;
+  std::vector<glm::vec3> albedos_;
+  std::string override_, obj_path_;
+  bool active_ = false;
+  std::vector<int> last_definition_;                 ///< per material id: the id of its name's last definition
+  std::map<std::string, std::shared_ptr<const Texture>> files_;  ///< by resolved path
+  std::map<std::string, std::uint32_t> index_of_;   ///< by key (see ForFace)
+  std::vector<std::shared_ptr<const Texture>> textures_;
+  std::vector<std::string> warnings_;
+  std::map<std::string, std::size_t> missing_;       ///< map_Kd path -> faces
+  std::size_t faces_without_uv_ = 0;
+};
+
+}  // namespace prt
