@@ -36,6 +36,13 @@ std::uint64_t TransportKey(const Mesh& mesh, const TransportOptions& o) {
   h = HashVector(mesh.normals, h);
   h = HashVector(mesh.albedo, h);
   h = HashVector(mesh.triangles, h);
+  // A textured mesh's bounces read its texels at the hit points.
+  h = HashVector(mesh.corner_uv, h);
+  h = HashVector(mesh.triangle_texture, h);
+  for (const auto& texture : mesh.textures) {
+    const std::uint64_t content = texture->content_hash();
+    h = Fnv1a(&content, sizeof content, h);
+  }
   const std::string options = std::string("prt ") + PRT_VERSION + " mode=" + TransportModeName(o.mode) +
                               " lmax=" + std::to_string(o.lmax) + " samples=" + std::to_string(o.samples) +
                               " sampler=" + SamplerName(o.sampler) + " bounces=" + std::to_string(o.bounces) +
