@@ -308,6 +308,29 @@ TEST_SUITE("app") {
                            "the cache") != std::string::npos);
     CHECK(fs::exists(out + "/frame_0000.png"));
   }
+
+  TEST_CASE("bad input: textures (--texture and map_Kd) before any work") {
+    const std::string dir = test::ScratchDir("bad_texture");
+    {
+      std::ofstream obj(dir + "/square.obj");
+      obj << "v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n";
+      std::ofstream bad(dir + "/bad.png");
+      bad << "not a png";
+    }
+    const std::string render = "render --frames 1 --size 8x8 --env furnace --transport unshadowed --out " + Q(dir + "/out");
+    ExpectFailure(render + " --mesh " + Q(dir + "/square.obj") + " --texture " + Q(dir + "/none.png"), 1,
+                  {dir + "/none.png", "no such file"});
+    ExpectFailure(render + " --mesh " + Q(dir + "/square.obj") + " --texture " + Q(dir + "/bad.png"), 1,
+                  {dir + "/bad.png"});
+    ExpectFailure(render + " --mesh " + Q(dir + "/square.obj") + " --texture " + Q(dir), 1, {dir});
+    ExpectFailure(render + " --texture " + Q(Image("rgba8.png")), 2, {"--texture", "needs --mesh"});
+    ExpectFailure(render + " --mesh " + Q(dir + "/square.obj") + " --texture " + Q(Image("rgba8.png")) +
+                      " --albedo 0.5,0.5,0.5", 2, {"--texture and --albedo"});
+    ExpectFailure(render + " --mesh " + Q(Obj("tetra_no_normals.obj")) + " --texture " + Q(Image("rgba8.png")), 1,
+                  {"tetra_no_normals.obj", "no texture coordinates"});
+    CHECK(!fs::exists(dir + "/out/frame_0000.png"));
+    ExpectSuccess(render + " --mesh " + Q(dir + "/square.obj") + " --texture " + Q(Image("rgba8.png")));
+  }
 }
 
 }  // namespace prt
