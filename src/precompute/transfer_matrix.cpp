@@ -82,10 +82,12 @@ void ComputeTransferMatrices(const Mesh& mesh, const DirectionPool* pool, const 
             for (int c = 0; c < channels; ++c) AddOuter(-weight * cosine, y.data(), y.data(), n, m.data() + c * nn);
           if (!hit_transfer || !h.front) continue;
           // The hit point's diffuse light: albedo(h) T(h), barycentric (or the texture).
-          const float footprint = mesh.textured() ? HitFootprint(mesh, v, h.triangle, h.u, h.v, dirs.size()) : 0.f;
+          const glm::vec3 albedo =
+              mesh.textured() ? HitAlbedo(mesh, v, h.triangle, h.u, h.v, dirs.size()) : glm::vec3(0.f);
           for (int c = 0; c < channels; ++c) {
             std::fill(lit.begin(), lit.end(), 0.0);
-            AddHitLight(mesh, h.triangle, h.u, h.v, *hit_transfer, channels, n, c, 1.0, lit.data(), footprint);
+            AddHitLight(mesh, h.triangle, h.u, h.v, *hit_transfer, channels, n, c, 1.0, lit.data(),
+                        mesh.textured() ? &albedo : nullptr);
             AddOuter(weight * cosine, y.data(), lit.data(), n, m.data() + c * nn);
           }
         }

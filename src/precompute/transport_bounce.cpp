@@ -30,11 +30,11 @@ double Energy(const std::vector<double>& t, int count) {
 
 }  // namespace
 
-float HitFootprint(const Mesh& mesh, std::size_t vertex, std::uint32_t triangle, float u, float v,
-                   std::size_t directions) {
+glm::vec3 HitAlbedo(const Mesh& mesh, std::size_t vertex, std::uint32_t triangle, float u, float v,
+                    std::size_t directions) {
   const auto& tri = mesh.triangles[triangle];
   const glm::vec3 point = (1.f - u - v) * mesh.positions[tri[0]] + u * mesh.positions[tri[1]] + v * mesh.positions[tri[2]];
-  return RayFootprint(glm::length(point - mesh.positions[vertex]), directions);
+  return SurfaceAlbedo(mesh, triangle, u, v, RayFootprint(glm::length(point - mesh.positions[vertex]), directions));
 }
 
 int TransportChannels(const Mesh& mesh, TransportMode mode) {
@@ -42,12 +42,12 @@ int TransportChannels(const Mesh& mesh, TransportMode mode) {
 }
 
 void AddHitLight(const Mesh& mesh, std::uint32_t triangle, float u, float v, const std::vector<double>& transfer,
-                 int channels, int count, int c, double scale, double* out, float footprint) {
+                 int channels, int count, int c, double scale, double* out, const glm::vec3* albedo) {
   const auto& tri = mesh.triangles[triangle];
   const double b[3] = {1.0 - u - v, u, v};
   double rho = 0.0;
-  if (mesh.textured())
-    rho = SurfaceAlbedo(mesh, triangle, u, v, footprint)[c];
+  if (albedo)
+    rho = (*albedo)[c];
   else
     for (int j = 0; j < 3; ++j) rho += b[j] * mesh.albedo[tri[j]][c];
   const std::size_t stride = std::size_t(channels) * count;
@@ -77,6 +77,7 @@ BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const Direc
   if (keep_before_last) result.before_last = current;
   const double direct_energy = Energy(current, count);
   const double weight = 4.0 / double(pool.size());  // (4 pi / N) * (1 / pi)
+  const bool textured = mesh.textured();
 
   std::size_t front_hits = 0;
   for (const auto& hits : direct.hits)
@@ -97,10 +98,10 @@ BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const Direc
         for (const VertexHit& h : direct.hits[v]) {
           if (!h.front) continue;  // the unlit back of a surface reflects nothing
           const double cosine = glm::dot(n, dirs[h.dir]);
-          const float footprint = mesh.textured() ? HitFootprint(mesh, v, h.triangle, h.u, h.v, dirs.size()) : 0.f;
+          const glm::vec3 albedo = textured ? HitAlbedo(mesh, v, h.triangle, h.u, h.v, dirs.size()) : glm::vec3(0.f);
           for (int c = 0; c < channels; ++c)
             AddHitLight(mesh, h.triangle, h.u, h.v, current, channels, count, c, weight * cosine, out + c * count,
-                        footprint);
+                        textured ? &albedo : nullptr);
         }
       }
       progress.Advance(end - begin);

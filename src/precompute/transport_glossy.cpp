@@ -72,11 +72,11 @@ std::vector<double> ComputeGlossy(const Mesh& mesh, const Bvh* bvh, const Transp
           for (int k = 0; k < count; ++k) out[c * count + k] -= f * y[k];
         // The unlit back of a surface sends nothing.
         if (!hit_transfer || !FrontSide(mesh, *hits[i], glm::vec3(s))) continue;
-        const float footprint =
-            mesh.textured() ? HitFootprint(mesh, v, hits[i]->triangle, hits[i]->u, hits[i]->v, std::size_t(m)) : 0.f;
+        const glm::vec3 albedo =
+            mesh.textured() ? HitAlbedo(mesh, v, hits[i]->triangle, hits[i]->u, hits[i]->v, std::size_t(m)) : glm::vec3(0.f);
         for (int c = 0; c < channels; ++c)
           AddHitLight(mesh, hits[i]->triangle, hits[i]->u, hits[i]->v, *hit_transfer, channels, count, c, f,
-                      out + c * count, footprint);
+                      out + c * count, mesh.textured() ? &albedo : nullptr);
       }
     }
     rays += local_rays;

@@ -20,10 +20,10 @@ bool FrontSide(const Mesh& mesh, const Hit& hit, const glm::vec3& dir);
 /// Adds `scale` times the light a hit point sends out as a diffuse surface, per light
 /// coefficient: albedo(h) T(h) for channel c, T barycentric over the hit triangle (u, v) from
 /// `transfer` laid out [(vertex * channels + c) * count + k], the albedo barycentric too, or
-/// from the texture filtered over `footprint` world units (geometry/mesh_texture.h). The gather
-/// of every bounce.
+/// `*albedo` when given (a textured mesh's, HitAlbedo, looked up once for the three channels).
+/// The gather of every bounce.
 void AddHitLight(const Mesh& mesh, std::uint32_t triangle, float u, float v, const std::vector<double>& transfer,
-                 int channels, int count, int c, double scale, double* out, float footprint = 0.f);
+                 int channels, int count, int c, double scale, double* out, const glm::vec3* albedo = nullptr);
 
 /// A blocked direction of a vertex and what it hit (kept for the bounces).
 struct VertexHit {
@@ -33,11 +33,11 @@ struct VertexHit {
   bool front;          ///< hit the lit (front) side of the surface
 };
 
-/// The width of the patch of surface that the hit at barycentrics (u, v) of `triangle`, one ray
-/// of `directions` from `vertex`, stands for (geometry/mesh_texture.h, RayFootprint): what its
-/// texture is filtered over.
-float HitFootprint(const Mesh& mesh, std::size_t vertex, std::uint32_t triangle, float u, float v,
-                   std::size_t directions);
+/// A textured mesh's albedo at the hit at barycentrics (u, v) of `triangle`, one ray of
+/// `directions` from `vertex`: the texture filtered over the patch of surface the ray stands for
+/// (geometry/mesh_texture.h, RayFootprint).
+glm::vec3 HitAlbedo(const Mesh& mesh, std::size_t vertex, std::uint32_t triangle, float u, float v,
+                    std::size_t directions);
 
 struct DirectResult {
   std::vector<double> transfer;                ///< [v * count + k]
