@@ -11,6 +11,7 @@
 #include "core/progress.h"
 #include "core/rng.h"
 #include "geometry/bvh.h"
+#include "geometry/mesh_texture.h"
 #include "geometry/ray.h"
 #include "material/lobe_transfer.h"
 #include "precompute/lobe_rays.h"  // kLobeStream: a half's lobe samples, apart from its other streams
@@ -154,7 +155,8 @@ class Estimator {
   }
 
   /// Lo(h) = albedo(h) * [direct + indirect through depth - 1] that the hit of `ray` sends
-  /// back as a diffuse surface (barycentric normal and albedo); 0 from the unlit back.
+  /// back as a diffuse surface (barycentric normal and albedo, or the texture's); 0 from the
+  /// unlit back.
   glm::dvec3 HitRadiance(const Ray& ray, const Hit& hit, int depth, Pcg32& rng, std::uint64_t& rays) const {
     const auto& tri = mesh_.triangles[hit.triangle];
     if (!FrontSide(mesh_, hit, ray.dir)) return glm::dvec3(0.0);  // the unlit back reflects nothing
@@ -167,6 +169,8 @@ class Estimator {
     }
     if (glm::dot(hn, hn) == 0.0) return glm::dvec3(0.0);
     hn = glm::normalize(hn);
+    // A textured surface's albedo at the hit itself (unfiltered: each path samples one point).
+    if (mesh_.textured()) albedo = glm::dvec3(SurfaceAlbedo(mesh_, hit.triangle, hit.u, hit.v, 0.f));
     glm::dvec3 lo = Direct(hp, hn, rng.NextDouble(), rng.NextDouble(), rays);
     if (depth > 1) lo += Indirect(hp, hn, rng.NextDouble(), rng.NextDouble(), depth - 1, rng, rays);
     return albedo * lo;
