@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "core/atomic_file.h"
 #include "core/background_jobs.h"
 #include "core/log.h"
 #include "core/parallel.h"
@@ -160,7 +161,7 @@ ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& 
 }
 
 FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Environment& env,
-                        const Camera& camera, const RenderOptions& o, OutputFolder& folder) {
+                        const Camera& camera, const RenderOptions& o, OutputFolder& folder, VideoWriter* video) {
   FrameStats stats;
   stats.frames = o.frames;
   Rasterizer rasterizer;
@@ -191,7 +192,11 @@ FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRg
 
     const std::string path = folder.Output(FrameName(i, o.frames));
     // Rethrows an earlier frame's write error.
-    stats.encode_seconds += writing.Submit([path, image = std::move(mapped.image)] { WritePng(path, image); });
+    stats.encode_seconds += writing.Submit([path, i, video, image = std::move(mapped.image)] {
+      const std::string png = EncodePng(image);
+      WriteFileAtomic(path, png);
+      if (video) video->AddFrame(i, image, png);
+    });
     progress.Advance(1);
   }
   stats.encode_seconds += writing.Wait();

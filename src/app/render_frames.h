@@ -6,7 +6,8 @@
 /// about the axis (sh/axis_rotation.h, built from the absolute angle: no drift), the vertices are
 /// shaded by their transport (precompute/shade.h), the mesh is rasterized over the environment
 /// turned by the same rotation, tone-mapped, and written as DIR/frame_NNNN.png (four digits, more
-/// when N needs them, so names sort in frame order). Encoding frame i overlaps drawing i+1.
+/// when N needs them, so names sort in frame order), and appended to the video if one is asked
+/// for. Encoding frame i overlaps drawing i+1.
 
 #include <cstddef>
 #include <string>
@@ -21,6 +22,7 @@
 #include "raster/tonemap.h"
 #include "sh/axis_rotation.h"
 #include "sh/coeffs.h"
+#include "video/video_writer.h"
 
 namespace prt {
 
@@ -62,10 +64,12 @@ ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& 
                      const AxisRotation& rotation, const Environment& env, const Camera& camera,
                      const RenderOptions& options, double angle, double exposure_ev);
 
-/// Renders all frames into `folder`, each named through folder.Output(); the automatic
-/// exposure (raster/exposure.h) is measured on frame 0 and used for every frame.
+/// Renders all frames into `folder`, each named through folder.Output(), and hands each to
+/// `video` (if given) once its PNG is encoded; the automatic exposure (raster/exposure.h) is
+/// measured on frame 0 and used for every frame.
 FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Environment& env,
-                        const Camera& camera, const RenderOptions& options, OutputFolder& folder);
+                        const Camera& camera, const RenderOptions& options, OutputFolder& folder,
+                        VideoWriter* video = nullptr);
 
 /// The file name of frame `i` of `count`: frame_0000.png ..., with as many digits as count - 1
 /// needs (at least four), so that the names sort in frame order.

@@ -4,6 +4,7 @@
 #include <regex>
 
 #include "app/pipeline.h"
+#include "app/render_video.h"
 #include "core/atomic_file.h"
 #include "core/log.h"
 #include "io/transport_txt.h"
@@ -70,7 +71,8 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
   Summary("rotation: " + rotation.Describe() + "; only the " + std::to_string(CoeffCount(transport.lmax)) +
           " coefficients the transport has are turned");
 
-  const FrameStats stats = RenderFrames(mesh, transport, light, *env, camera, render, folder);
+  RenderVideo video(render, folder);
+  const FrameStats stats = RenderFrames(mesh, transport, light, *env, camera, render, folder, video.writer());
   if (stats.legend_left_out)
     Summary("legend: left out, a " + std::to_string(render.width) + "x" + std::to_string(render.height) +
             " frame is too small to hold it readably");
@@ -82,6 +84,7 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
     Summary("ringing: " + std::to_string(stats.negative_pixels) +
             " pixels over all frames had negative radiance (SH ringing), clamped to 0; --window auto reduces it");
   if (stats.nan_pixels > 0) Summary("warning: " + std::to_string(stats.nan_pixels) + " NaN pixels set to 0");
+  if (const std::string line = video.Finish(); !line.empty()) Summary(line);
   FinishOutputs(folder);
   NoteForeignFrames(folder);
 }

@@ -11,6 +11,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include "app/render_video.h"
 #include "core/atomic_file.h"  // WriteProblem
 #include "core/error.h"
 #include "core/text.h"
@@ -72,6 +73,12 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
        "transport.txt's layout: the welded vertex count, then three `R G B` rows per face of the mesh in file "
        "order, one per corner",
        d.vertex_radiance.empty() ? "none" : d.vertex_radiance});
+  add({"--video", "FILE",
+       "the frames also as one video: .png or .apng an animated PNG that loops (written by prt, plays in every "
+       "browser), .mp4 H.264 or .webm VP9 through Debian's ffmpeg program; written when the run succeeds, like the "
+       "frames",
+       d.video.empty() ? "none" : d.video});
+  add({"--fps", "F", "frames per second of --video, 0.1..240 (at most 90 for an animated PNG)", Formatted("%g", d.fps)});
   add({"--cache", "PATH",
        "transport cache to reuse and update, so a re-run with the same mesh and options skips the precompute; "
        "`none` disables it; a path that cannot be used is a warning, not an error",
@@ -157,7 +164,7 @@ const std::vector<std::string>& AllRenderOptionNames() {
   static const std::vector<std::string> names = {
       "--frames", "--size",     "--out",  "--axis", "--turns",  "--background", "--tonemap", "--exposure",
       "--ssaa",   "--view",     "--eye",  "--target", "--up",   "--fov",        "--orbit",
-      "--vertex-radiance", "--cache"};
+      "--vertex-radiance", "--video", "--fps", "--cache"};
   return names;
 }
 
@@ -223,6 +230,7 @@ RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
     ::close(fd);
     ::unlink(probe.c_str());
   }
+  ReadVideoOptions(args, o, d);
   return o;
 }
 

@@ -43,6 +43,11 @@ struct RenderOptions {
   double orbit = 0.0;
   /// Where frame 0's per-vertex linear radiance is written (io/transport_txt.h); empty: nowhere.
   std::string vertex_radiance;
+  /// The frames also as one video file (app/render_video.h); empty: none. Its rate in frames
+  /// per second, and the ffmpeg program for .mp4 and .webm (found when the options are read).
+  std::string video;
+  double fps = 30.0;
+  std::string ffmpeg;
 };
 
 /// The camera of `prt demo`, also used by render and reference on the embedded scene: a

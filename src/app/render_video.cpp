@@ -1,0 +1,99 @@
+#include "app/render_video.h"
+
+#include <chrono>
+#include <filesystem>
+#include <regex>
+
+#include "core/error.h"
+#include "core/text.h"
+#include "video/apng_writer.h"
+#include "video/ffmpeg_encoder.h"
+
+namespace prt {
+namespace fs = std::filesystem;
+namespace {
+
+/// The folder `path` is in, made absolute and normal (it need not exist yet).
+fs::path FolderOf(const std::string& path) {
+  std::error_code ec;
+  fs::path parent = fs::path(path).parent_path();
+  if (parent.empty()) parent = ".";
+  fs::path normal = fs::weakly_canonical(fs::absolute(parent, ec), ec);
+  return ec ? fs::absolute(parent).lexically_normal() : normal;
+}
+
+/// True if `file` names an output the run writes itself into `out`: a frame, or the
+/// transport cache.
+bool IsRunOutputName(const std::string& file, const RenderOptions& o) {
+  const std::string name = fs::path(file).filename().string();
+  if (FolderOf(file) != FolderOf(o.out + "/x")) return false;
+  static const std::regex frame("frame_[0-9]+\\.png", std::regex::icase);
+  return std::regex_match(name, frame) || (o.cache.empty() && name == "transport.cache") || name.rfind(".prt", 0) == 0;
+}
+
+bool InsideFolder(const std::string& file, const std::string& dir) { return FolderOf(file) == FolderOf(dir + "/x"); }
+
+}  // namespace
+
+void ReadVideoOptions(Args& args, RenderOptions& o, const RenderOptions& d) {
+  if (!args.Accepts("--video")) return;
+  const bool has_video = args.Has("--video");
+  if (args.Has("--fps") && !has_video) args.Fail("--fps: sets the rate of --video, which is not given (expected --video FILE)");
+  if (!has_video) return;
+  o.video = args.String("--video", d.video);
+  const std::string& v = o.video;
+  const auto format = VideoFormatOf(v);
+  if (!format)
+    args.Fail("--video: '" + v + "' has no video extension (expected .png or .apng for an animated PNG, .mp4 or .webm "
+              "through ffmpeg)");
+  o.fps = args.Double("--fps", d.fps, 0.1, 240.0);
+  if (*format == VideoFormat::kApng && o.fps > kApngMaxFps)
+    args.Fail("--fps: " + Formatted("%g", o.fps) + " is too fast for an animated PNG (expected at most " +
+              Formatted("%g", kApngMaxFps) + ": browsers play frames of 10 ms or less at 10 frames per second)");
+  if (*format == VideoFormat::kMp4 && (o.width % 2 != 0 || o.height % 2 != 0))
+    args.Fail("--video: H.264 in '" + v + "' needs an even frame size, not " + std::to_string(o.width) + "x" +
+              std::to_string(o.height) + " (expected even --size values, or a .png or .webm video)");
+  if (IsRunOutputName(v, o))
+    args.Fail("--video: '" + v + "' is the name of one of the run's own outputs in " + o.out +
+              " (expected another name, such as turn.png)");
+  if (!o.vertex_radiance.empty() && FolderOf(v) == FolderOf(o.vertex_radiance) &&
+      fs::path(v).filename() == fs::path(o.vertex_radiance).filename())
+    args.Fail("--video: '" + v + "' is also the --vertex-radiance file (expected another name)");
+  std::error_code ec;
+  if (fs::is_directory(v, ec)) throw Error(v + ": is a folder (expected a file name for --video)");
+  if (*format != VideoFormat::kApng)
+    o.ffmpeg = FindFfmpeg(*format == VideoFormat::kMp4 ? FfmpegCodec::kH264Mp4 : FfmpegCodec::kVp9Webm, "--video " + v);
+}
+
+RenderVideo::RenderVideo(const RenderOptions& o, OutputFolder& folder) : path_(o.video) {
+  if (o.video.empty()) return;
+  VideoSpec spec;
+  spec.format = *VideoFormatOf(o.video);
+  spec.width = o.width, spec.height = o.height, spec.frames = o.frames, spec.fps = o.fps;
+  spec.ffmpeg = o.ffmpeg;
+  std::string write_path;
+  if (InsideFolder(o.video, folder.dir())) {
+    write_path = folder.Output(fs::path(o.video).filename().string());
+  } else {
+    CreateParentFolder(o.video);
+    outside_ = std::make_unique<AtomicFile>(o.video);
+    write_path = outside_->temp_path();
+  }
+  writer_ = std::make_unique<VideoWriter>(spec, write_path, o.video);
+}
+
+RenderVideo::~RenderVideo() = default;
+
+std::string RenderVideo::Finish() {
+  if (!writer_) return "";
+  const auto t0 = std::chrono::steady_clock::now();
+  writer_->Finish();
+  if (outside_) outside_->Commit();
+  const VideoSpec& s = writer_->spec();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return Formatted("video: %d frames of %dx%d at %g fps (%.2f s%s) as %s in %s [%.3f s after the last frame]", s.frames,
+                   s.width, s.height, s.fps, s.frames / s.fps, s.format == VideoFormat::kApng ? ", looping" : "",
+                   VideoFormatName(s.format), path_.c_str(), seconds);
+}
+
+}  // namespace prt

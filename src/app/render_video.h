@@ -1,0 +1,48 @@
+#pragma once
+/// \file
+/// `--video FILE` and `--fps F` of render and demo: the options, checked before any work, and
+/// the video of a run, written beside the PNG frames (video/video_writer.h) and put in place
+/// only when the run succeeds, like every output (docs/CLI.md, "Outputs").
+///
+/// A video inside the output folder is one of the folder's outputs: staged with the frames and
+/// listed, so a later run without it removes it. A video elsewhere is written under a temporary
+/// name beside it and renamed when complete.
+
+#include <memory>
+#include <string>
+
+#include "app/args.h"
+#include "app/render_options.h"
+#include "core/atomic_file.h"
+#include "core/output_folder.h"
+#include "video/video_writer.h"
+
+namespace prt {
+
+/// Reads --video and --fps into `o` (after --size and --out): the extension names a format, the
+/// rate suits it, the size suits H.264, the name is not one of the run's other outputs, and
+/// ffmpeg with its encoder is installed for .mp4 and .webm. Throws UsageError (through `args`)
+/// or Error.
+void ReadVideoOptions(Args& args, RenderOptions& o, const RenderOptions& defaults);
+
+class RenderVideo {
+ public:
+  /// The video of a run of `options` into `folder`; nothing when options.video is empty.
+  /// Creates the video's folder if missing. Throws Error if it cannot be started.
+  RenderVideo(const RenderOptions& options, OutputFolder& folder);
+  ~RenderVideo();
+
+  /// The writer the frame loop hands each frame to, or null without --video.
+  VideoWriter* writer() { return writer_.get(); }
+
+  /// After every frame: completes the video and, outside the output folder, renames it into
+  /// place. Returns the run summary's line ("" without --video).
+  std::string Finish();
+
+ private:
+  std::string path_;                    ///< the user's name
+  std::unique_ptr<AtomicFile> outside_;  ///< the temporary file of a video outside the folder
+  std::unique_ptr<VideoWriter> writer_;
+};
+
+}  // namespace prt

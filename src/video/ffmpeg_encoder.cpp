@@ -1,0 +1,97 @@
+#include "video/ffmpeg_encoder.h"
+
+#include <cstdio>
+#include <cstdlib>
+
+#include <unistd.h>
+
+#include "core/error.h"
+#include "core/text.h"
+
+namespace prt {
+namespace {
+
+/// The encoder's threads: fixed, so the file is the same on every machine (x264 and libvpx give
+/// the same bytes for the same settings and thread count).
+constexpr const char* kEncoderThreads = "4";
+
+/// A new empty file for ffmpeg's messages, in $TMPDIR or /tmp.
+std::string MakeLogFile() {
+  const char* tmp = std::getenv("TMPDIR");
+  std::string path = std::string(tmp && *tmp ? tmp : "/tmp") + "/prt-ffmpeg-XXXXXX";
+  const int fd = ::mkstemp(path.data());
+  if (fd < 0) return "/dev/null";
+  ::close(fd);
+  return path;
+}
+
+}  // namespace
+
+const char* FfmpegEncoderName(FfmpegCodec codec) { return codec == FfmpegCodec::kH264Mp4 ? "libx264" : "libvpx-vp9"; }
+
+std::string FindFfmpeg(FfmpegCodec codec, const std::string& what) {
+  const auto program = FindProgram("ffmpeg");
+  if (!program)
+    throw Error(what + ": needs the ffmpeg program, which is not on PATH (expected Debian's package: apt-get install "
+                       "ffmpeg; or a .png video, which prt writes itself)");
+  // ffmpeg -encoders lists one encoder a line: " V....D libx264  libx264 H.264 / AVC ...".
+  const ProgramResult encoders = RunProgram({*program, "-hide_banner", "-encoders"});
+  if (encoders.out.find(std::string(" ") + FfmpegEncoderName(codec) + " ") == std::string::npos)
+    throw Error(what + ": " + *program + " has no " + FfmpegEncoderName(codec) +
+                " encoder (expected Debian's ffmpeg package, which has it)");
+  return *program;
+}
+
+std::vector<std::string> FfmpegArguments(const std::string& program, FfmpegCodec codec, int width, int height,
+                                         double fps, const std::string& path) {
+  std::vector<std::string> a = {program, "-hide_banner", "-nostats", "-loglevel", "error", "-y",
+                                // input: raw 8-bit sRGB frames on standard input
+                                "-f", "rawvideo", "-pix_fmt", "rgb24",
+                                "-video_size", std::to_string(width) + "x" + std::to_string(height),
+                                "-framerate", Formatted("%.17g", fps), "-i", "pipe:0", "-an",
+                                // RGB to limited-range 4:2:0 by the BT.709 matrix, and tagged so
+                                "-vf", "scale=out_color_matrix=bt709:out_range=tv,format=yuv420p",
+                                "-colorspace", "bt709", "-color_primaries", "bt709", "-color_trc", "bt709",
+                                "-color_range", "tv", "-threads", kEncoderThreads};
+  if (codec == FfmpegCodec::kH264Mp4) {
+    for (const char* s : {"-c:v", "libx264", "-preset", "medium", "-crf", "18", "-movflags", "+faststart", "-f", "mp4"})
+      a.emplace_back(s);
+  } else {
+    for (const char* s : {"-c:v", "libvpx-vp9", "-crf", "30", "-b:v", "0", "-deadline", "good", "-cpu-used", "2",
+                          "-row-mt", "1", "-f", "webm"})
+      a.emplace_back(s);
+  }
+  a.push_back(path);
+  return a;
+}
+
+FfmpegEncoder::FfmpegEncoder(const std::string& program, FfmpegCodec codec, const std::string& path, std::string name,
+                             int width, int height, double fps)
+    : name_(std::move(name)), log_(MakeLogFile()), width_(width), height_(height) {
+  child_ = std::make_unique<ChildProcess>(FfmpegArguments(program, codec, width, height, fps, path), log_);
+}
+
+FfmpegEncoder::~FfmpegEncoder() {
+  child_.reset();  // kills ffmpeg if it still runs
+  if (log_ != "/dev/null") std::remove(log_.c_str());
+}
+
+void FfmpegEncoder::Fail(const std::string& what) const {
+  const std::string said = LastLine(log_);
+  throw Error(name_ + ": " + what + (said.empty() ? "" : ": " + said) + " (expected ffmpeg to encode the frames)");
+}
+
+void FfmpegEncoder::AddFrame(const Image8& image) {
+  if (image.width != width_ || image.height != height_) throw Error(name_ + ": a frame of another size (internal)");
+  if (!child_->Write(std::string_view(reinterpret_cast<const char*>(image.rgb.data()), image.rgb.size()))) {
+    const int code = child_->Wait();
+    Fail("ffmpeg stopped reading frames (exit " + std::to_string(code) + ")");
+  }
+}
+
+void FfmpegEncoder::Finish() {
+  const int code = child_->Wait();
+  if (code != 0) Fail("ffmpeg failed (exit " + std::to_string(code) + ")");
+}
+
+}  // namespace prt

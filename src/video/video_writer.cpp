@@ -1,0 +1,91 @@
+#include "video/video_writer.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "core/error.h"
+#include "video/apng_writer.h"
+#include "video/ffmpeg_encoder.h"
+
+namespace prt {
+
+std::optional<VideoFormat> VideoFormatOf(const std::string& path) {
+  const auto dot = path.rfind('.');
+  const auto slash = path.rfind('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return std::nullopt;
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if (ext == "png" || ext == "apng") return VideoFormat::kApng;
+  if (ext == "mp4") return VideoFormat::kMp4;
+  if (ext == "webm") return VideoFormat::kWebm;
+  return std::nullopt;
+}
+
+const char* VideoFormatName(VideoFormat format) {
+  switch (format) {
+    case VideoFormat::kApng: return "animated PNG";
+    case VideoFormat::kMp4: return "H.264 MP4 (ffmpeg)";
+    case VideoFormat::kWebm: return "VP9 WebM (ffmpeg)";
+  }
+  return "";
+}
+
+VideoWriter::VideoWriter(const VideoSpec& spec, const std::string& path, std::string name)
+    : spec_(spec), name_(std::move(name)) {
+  if (spec.format == VideoFormat::kApng) {
+    apng_ = std::make_unique<ApngWriter>(path, name_, spec.frames, spec.fps);
+  } else {
+    const FfmpegCodec codec = spec.format == VideoFormat::kMp4 ? FfmpegCodec::kH264Mp4 : FfmpegCodec::kVp9Webm;
+    ffmpeg_ = std::make_unique<FfmpegEncoder>(spec.ffmpeg, codec, path, name_, spec.width, spec.height, spec.fps);
+  }
+}
+
+VideoWriter::~VideoWriter() = default;
+
+void VideoWriter::Append(const Image8* image, const std::string* png) {
+  if (apng_) apng_->AddFrame(*png);
+  else ffmpeg_->AddFrame(*image);
+  ++next_;
+}
+
+void VideoWriter::AddFrame(int index, const Image8& image, const std::string& png) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!failed_.empty()) throw Error(failed_);
+  if (index < next_ || waiting_png_.count(index) || waiting_image_.count(index))
+    throw Error(name_ + ": frame " + std::to_string(index) + " given twice (internal)");
+  try {
+    if (index != next_) {
+      // An earlier frame is still being encoded: keep only what this format needs.
+      if (apng_) waiting_png_.emplace(index, png);
+      else waiting_image_.emplace(index, image);
+      return;
+    }
+    Append(&image, &png);
+    // Then every waiting frame that now follows on.
+    while (true) {
+      if (auto p = waiting_png_.find(next_); p != waiting_png_.end()) {
+        Append(nullptr, &p->second);
+        waiting_png_.erase(p);
+      } else if (auto i = waiting_image_.find(next_); i != waiting_image_.end()) {
+        Append(&i->second, nullptr);
+        waiting_image_.erase(i);
+      } else {
+        break;
+      }
+    }
+  } catch (const Error& e) {
+    failed_ = e.what();
+    throw;
+  }
+}
+
+void VideoWriter::Finish() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!failed_.empty()) throw Error(failed_);
+  if (next_ != spec_.frames)
+    throw Error(name_ + ": " + std::to_string(next_) + " of " + std::to_string(spec_.frames) + " frames arrived (internal)");
+  if (apng_) apng_->Finish();
+  else ffmpeg_->Finish();
+}
+
+}  // namespace prt
