@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
-# Installs the Debian packages prt needs to build and test, and nothing that is already there.
+# Installs the Debian packages prt needs to build (and, with `test`, to test), and nothing that
+# is already there.
 # Idempotent: a machine that has everything runs no apt command at all.
 set -euo pipefail
 
 packages=(g++ cmake make pkg-config
           zlib1g-dev libglm-dev libstb-dev libtinyobjloader-dev libnanoflann-dev doctest-dev libopenexr-dev)
+# `bash scripts/install-deps.sh test`: also what the tests run besides prt. The --video tests
+# encode .mp4 and .webm and decode every video with Debian's ffmpeg (prt itself needs it only for
+# those two formats, and says so when it is missing).
+[ "${1:-}" = test ] && packages+=(ffmpeg)
 [ -n "${PRT_EXTRA_PACKAGES:-}" ] && read -r -a extra <<<"$PRT_EXTRA_PACKAGES" && packages+=("${extra[@]}")
 
 missing=()

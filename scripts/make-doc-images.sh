@@ -10,8 +10,9 @@ trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$out"
 
 "$prt" demo --frames 120 --out "$tmp/demo" --quiet
-cp "$tmp/demo/frame_0000.png" "$out/demo.png"
 cp "$tmp/demo/frame_0040.png" "$out/demo_turned.png"
+# The README's animation: a full turn as an animated PNG, small enough to load quickly.
+"$prt" demo --frames 60 --size 320x240 --fps 20 --out "$tmp/turning" --video "$out/demo_turning.png" --quiet
 "$prt" basis --lmax 3 --cell 64 --out "$out/basis.png" --quiet
 # The same scene and transport as the demo (its cache is reused), other views of it.
 for v in light:view_light.png irradiance:view_irradiance.png transport:0:view_transport0.png transport:6:view_transport6.png; do

@@ -7,7 +7,7 @@ cd "$(dirname "$0")/.."
 what=${1:-demo}
 build=${PRT_BUILD_DIR:-build}
 
-bash scripts/install-deps.sh
+bash scripts/install-deps.sh "$what"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" --parallel "$(nproc)"
 

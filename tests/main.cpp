@@ -8,6 +8,8 @@
 //   is there.
 // - Required where it must be there: with PRT_REQUIRE_SHARED_DATA=1 (CI sets it) a missing data
 //   folder fails the run at once instead of skipping anything.
+// The tests that need Debian's ffmpeg (test::NeedsFfmpeg()) follow the same two rules, with
+// PRT_REQUIRE_FFMPEG=1.
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
 
@@ -101,6 +103,11 @@ int main(int argc, char** argv) {
                  PRT_SHARED_DATA_DIR);
     return 1;
   }
+  const char* need_ffmpeg = std::getenv("PRT_REQUIRE_FFMPEG");
+  if (need_ffmpeg && *need_ffmpeg && std::strcmp(need_ffmpeg, "0") != 0 && !prt::test::Ffmpeg()) {
+    std::fprintf(stderr, "prt_tests: PRT_REQUIRE_FFMPEG is set, but ffmpeg and ffprobe are not on PATH\n");
+    return 1;
+  }
   int result = 0;
   {
     const std::vector<std::string> escaped = EscapedSuiteQuery(argc, argv);
@@ -111,7 +118,8 @@ int main(int argc, char** argv) {
     result = context.run();
   }
   if (result == 0 && Counter::run && Counter::started == 0 && SelectedWithoutSkipping(argc, argv) > 0) {
-    std::printf("[prt_tests] skipped: the selected test cases need the course data (%s)\n", PRT_SHARED_DATA_DIR);
+    std::printf("[prt_tests] skipped: the selected test cases need the course data (%s) or ffmpeg\n",
+                PRT_SHARED_DATA_DIR);
     return kSkipExit;
   }
   return result;

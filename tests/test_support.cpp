@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "core/atomic_file.h"
+#include "core/child_process.h"
 #include "geometry/procedural.h"
 #include "io/obj_writer.h"
 
@@ -45,6 +46,14 @@ std::string ShellQuote(const std::string& text) {
 
 doctest::skip NeedsSharedData() { return doctest::skip(!SharedData().has_value()); }
 
+std::optional<std::string> Ffmpeg() {
+  const auto ffmpeg = FindProgram("ffmpeg");
+  if (!ffmpeg || !FindProgram("ffprobe")) return std::nullopt;
+  return ffmpeg;
+}
+
+doctest::skip NeedsFfmpeg() { return doctest::skip(!Ffmpeg().has_value()); }
+
 std::string PrtBinary() {
   const char* binary = std::getenv("PRT_BINARY");
   return binary && *binary ? binary : PRT_BINARY_PATH;
@@ -76,17 +85,21 @@ glm::ivec3 PixelAt(const Image8& image, int x, int y) {
   return {image.rgb[p], image.rgb[p + 1], image.rgb[p + 2]};
 }
 
-int StartLongRender(const std::string& out, const std::string& size) {
+int StartLongRender(const std::string& out, const std::string& size, const std::vector<std::string>& extra) {
   // Everything the child needs is made before fork: after it, the child (of a process with
   // threads) may only make async-signal-safe calls.
   const std::string binary = PrtBinary(), mesh = Fixture("obj/tetra_no_normals.obj");
+  std::vector<std::string> args = {binary, "render", "--mesh", mesh, "--env", "furnace", "--transport", "unshadowed",
+                                   "--frames", "9999", "--size", size, "--threads", "1", "--quiet", "--out", out};
+  args.insert(args.end(), extra.begin(), extra.end());
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
   const pid_t pid = ::fork();
   if (pid == 0) {
     const int null = ::open("/dev/null", O_WRONLY);
     if (null >= 0) ::dup2(null, 2);
-    ::execl(binary.c_str(), binary.c_str(), "render", "--mesh", mesh.c_str(), "--env", "furnace", "--transport",
-            "unshadowed", "--frames", "9999", "--size", size.c_str(), "--threads", "1", "--quiet", "--out", out.c_str(),
-            static_cast<char*>(nullptr));
+    ::execv(binary.c_str(), argv.data());
     ::_exit(127);
   }
   return pid;

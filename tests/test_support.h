@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -28,6 +29,14 @@ std::optional<std::string> SharedData();
 /// test::NeedsSharedData())` is skipped, and counted as skipped by the runner, when it is absent.
 /// Inside such a test, SharedData() has a value.
 doctest::skip NeedsSharedData();
+
+/// Debian's ffmpeg program (with ffprobe beside it) if it is on PATH: the video tests need it
+/// to encode .mp4 and .webm and to decode what prt writes with a standard decoder.
+std::optional<std::string> Ffmpeg();
+
+/// The decorator of a test case that needs Ffmpeg(): skipped, and counted as skipped by the
+/// runner, without it (PRT_REQUIRE_FFMPEG=1, which CI sets, makes its absence an error).
+doctest::skip NeedsFfmpeg();
 
 /// The `prt` binary the command-line tests run: $PRT_BINARY if set, else the one built beside
 /// the tests (its path is compiled in, so the tests need no runner to find it).
@@ -67,8 +76,8 @@ glm::ivec3 PixelAt(const Image8& image, int x, int y);
 
 /// Starts, in a child process, a render of 9999 frames of `size` (QuickScene, one thread,
 /// stderr silenced) into `out`: a run that lasts long enough to be watched and killed.
-/// Returns the child's process id (the caller waits for it).
-int StartLongRender(const std::string& out, const std::string& size);
+/// `extra` options are appended. Returns the child's process id (the caller waits for it).
+int StartLongRender(const std::string& out, const std::string& size, const std::vector<std::string>& extra = {});
 
 /// Runs a shell command line, capturing its stdout and stderr.
 RunResult RunCommand(const std::string& command);

@@ -22,13 +22,20 @@ fs::path FolderOf(const std::string& path) {
   return ec ? fs::absolute(parent).lexically_normal() : normal;
 }
 
-/// True if `file` names an output the run writes itself into `out`: a frame, or the
-/// transport cache.
+/// True if the two paths name the same file (which need not exist yet).
+bool SamePath(const std::string& a, const std::string& b) {
+  return FolderOf(a) == FolderOf(b) && fs::path(a).filename() == fs::path(b).filename();
+}
+
+/// True if `file` names an output the run writes itself: a frame or a file of prt's own in the
+/// output folder, the transport cache, the --vertex-radiance file.
 bool IsRunOutputName(const std::string& file, const RenderOptions& o) {
   const std::string name = fs::path(file).filename().string();
-  if (FolderOf(file) != FolderOf(o.out + "/x")) return false;
   static const std::regex frame("frame_[0-9]+\\.png", std::regex::icase);
-  return std::regex_match(name, frame) || (o.cache.empty() && name == "transport.cache") || name.rfind(".prt", 0) == 0;
+  if (FolderOf(file) == FolderOf(o.out + "/x") && (std::regex_match(name, frame) || name.rfind(".prt", 0) == 0))
+    return true;
+  const std::string cache = o.cache.empty() ? o.out + "/transport.cache" : o.cache;
+  return (o.cache != "none" && SamePath(file, cache)) || (!o.vertex_radiance.empty() && SamePath(file, o.vertex_radiance));
 }
 
 bool InsideFolder(const std::string& file, const std::string& dir) { return FolderOf(file) == FolderOf(dir + "/x"); }
@@ -56,9 +63,6 @@ void ReadVideoOptions(Args& args, RenderOptions& o, const RenderOptions& d) {
   if (IsRunOutputName(v, o))
     args.Fail("--video: '" + v + "' is the name of one of the run's own outputs in " + o.out +
               " (expected another name, such as turn.png)");
-  if (!o.vertex_radiance.empty() && FolderOf(v) == FolderOf(o.vertex_radiance) &&
-      fs::path(v).filename() == fs::path(o.vertex_radiance).filename())
-    args.Fail("--video: '" + v + "' is also the --vertex-radiance file (expected another name)");
   std::error_code ec;
   if (fs::is_directory(v, ec)) throw Error(v + ": is a folder (expected a file name for --video)");
   if (*format != VideoFormat::kApng)

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/rng.h"
 #include "io/png_io.h"
+#include "tests/io/png_test_util.h"
 #include "tests/test_support.h"
 
 // Part of libstb's stb_image_write implementation, but not declared in its header.
@@ -18,29 +19,14 @@ extern "C" unsigned char* stbi_zlib_compress(unsigned char* data, int data_len, 
 
 namespace {
 
+using prt::test::BigEndian32;
+using prt::test::Chunk;
+
 prt::Image8 Noise(int w, int h, std::uint64_t seed) {
   prt::Pcg32 rng(seed, 1);
   prt::Image8 image(w, h);
   for (auto& v : image.rgb) v = static_cast<std::uint8_t>(rng.NextU32() & 0xff);
   return image;
-}
-
-std::uint32_t Crc32(const std::string& bytes) {
-  std::uint32_t crc = 0xffffffffu;
-  for (unsigned char c : bytes) {
-    crc ^= c;
-    for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
-  }
-  return ~crc;
-}
-
-std::string BigEndian32(std::uint32_t v) {
-  return {char(v >> 24), char((v >> 16) & 0xff), char((v >> 8) & 0xff), char(v & 0xff)};
-}
-
-std::string Chunk(const std::string& type, const std::string& data) {
-  return BigEndian32(static_cast<std::uint32_t>(data.size())) + type + data +
-         BigEndian32(Crc32(type + data));
 }
 
 // A 16-bit RGB PNG built by hand (stb cannot write one).
