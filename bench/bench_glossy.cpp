@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <string>
 
-#include "app/render_options.h"
+#include "app/render_args.h"
 #include "bench/bench.h"
 #include "core/parallel.h"
 #include "env/procedural.h"

@@ -44,17 +44,17 @@
 #include <glm/geometric.hpp>
 
 #include "app/pipeline.h"
-#include "bench/embree_scene.h"
 #include "app/scene_options.h"
+#include "bench/embree_scene.h"
 #include "core/atomic_file.h"
 #include "core/log.h"
 #include "core/parallel.h"
 #include "core/text.h"
 #include "geometry/ray.h"
-#include "io/light_txt.h"
-#include "io/transport_txt.h"
 #include "precompute/direction_pool.h"
 #include "precompute/samplers.h"
+#include "precompute_io/light_txt.h"
+#include "precompute_io/transport_txt.h"
 #include "sh/basis.h"
 #include "sh/zonal.h"
 

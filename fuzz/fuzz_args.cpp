@@ -7,7 +7,7 @@
 
 #include "app/args.h"
 #include "app/commands.h"
-#include "app/render_options.h"
+#include "app/render_args.h"
 #include "app/scene_options.h"
 #include "core/error.h"
 

@@ -4,7 +4,7 @@
 
 #include "core/error.h"
 #include "fuzz/fuzz_support.h"
-#include "io/transport_cache.h"
+#include "precompute_io/transport_cache.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string path = prt::fuzz::WriteInput(data, size, ".cache");

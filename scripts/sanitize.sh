@@ -4,7 +4,8 @@
 #                                                   (build-asan/), every test by default
 #   bash scripts/sanitize.sh tsan [doctest args]   ThreadSanitizer (build-tsan/), the threaded
 #                                                   stages by default: core (thread pool),
-#                                                   precompute (transport) and app (rendering)
+#                                                   precompute (transport), video (frames from
+#                                                   several threads) and app (rendering)
 #   bash scripts/sanitize.sh all                    both, one after the other
 # The `prt` binary that the command-line tests run is the sanitized one too. Any report fails
 # the run (halt_on_error). PRT_JOBS sets the build parallelism (default: all cores).
@@ -30,7 +31,7 @@ run_asan() {
 run_tsan() {
   build build-tsan PRT_TSAN
   local filter=()
-  [ $# -eq 0 ] && filter=(--test-suite=core,precompute,app)
+  [ $# -eq 0 ] && filter=(--test-suite=core,precompute,video,app)
   echo "== ThreadSanitizer: prt_tests ${filter[*]} $*"
   TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
   build-tsan/prt_tests --no-intro=true "${filter[@]}" "$@"

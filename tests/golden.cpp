@@ -46,4 +46,16 @@ void CheckGolden(const std::string& name, const Image8& actual, const GoldenLimi
   }
 }
 
+RenderOptions GoldenFrame() {
+  RenderOptions o;
+  o.tonemap = ToneCurve::kSrgb;
+  o.exposure = 0.0;
+  o.ssaa = 1;
+  o.width = o.height = 96;
+  o.eye = glm::dvec3(0.0, 3.0, 7.0);
+  o.target = glm::dvec3(0.0, 0.8, 0.0);
+  o.fov = 40.0;
+  return o;
+}
+
 }  // namespace prt::test

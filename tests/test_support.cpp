@@ -1,6 +1,9 @@
 #include "tests/test_support.h"
 
 #include <array>
+#include <thread>
+#include <csignal>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -103,6 +106,20 @@ int StartLongRender(const std::string& out, const std::string& size, const std::
     ::_exit(127);
   }
   return pid;
+}
+
+bool KillWhenFileAppears(int pid, const std::string& path) {
+  bool appeared = false;
+  for (int tries = 0; tries < 60000 && !appeared; ++tries) {
+    appeared = fs::exists(path);
+    int status = 0;
+    if (!appeared && ::waitpid(pid, &status, WNOHANG) == pid) return false;  // exited (and reaped)
+    if (!appeared) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  ::kill(pid, SIGKILL);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return appeared && WIFSIGNALED(status);
 }
 
 RunResult RunPrt(const std::string& arguments) { return RunCommand(ShellQuote(PrtBinary()) + " " + arguments); }

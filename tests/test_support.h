@@ -79,6 +79,12 @@ glm::ivec3 PixelAt(const Image8& image, int x, int y);
 /// `extra` options are appended. Returns the child's process id (the caller waits for it).
 int StartLongRender(const std::string& out, const std::string& size, const std::vector<std::string>& extra = {});
 
+/// Waits until the file `path` exists (polling every millisecond) or the child `pid` has exited,
+/// then kills the child with SIGKILL and reaps it. Returns true if the file appeared while the
+/// child ran. The wait is bounded (a minute) only so that a broken build cannot hang the suite;
+/// it is not a time limit on prt.
+bool KillWhenFileAppears(int pid, const std::string& path);
+
 /// Runs a shell command line, capturing its stdout and stderr.
 RunResult RunCommand(const std::string& command);
 

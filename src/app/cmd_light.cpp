@@ -7,9 +7,9 @@
 #include "app/pipeline.h"
 #include "core/log.h"
 #include "core/text.h"
-#include "io/light_txt.h"
-#include "sh/rotation.h"
+#include "precompute_io/light_txt.h"
 #include "sh/dering.h"
+#include "sh/rotation.h"
 
 namespace prt {
 namespace {

@@ -1,12 +1,12 @@
 #include "app/commands.h"
 #include "app/pipeline.h"
-#include "app/render_options.h"
+#include "app/render_args.h"
 #include "core/atomic_file.h"
 #include "core/color.h"
 #include "core/log.h"
-#include "io/light_txt.h"
-#include "io/transfer_matrix_file.h"
-#include "io/transport_txt.h"
+#include "precompute_io/light_txt.h"
+#include "precompute_io/transfer_matrix_file.h"
+#include "precompute_io/transport_txt.h"
 
 namespace prt {
 namespace {

@@ -5,11 +5,11 @@
 
 #include "app/commands.h"
 #include "app/pipeline.h"
-#include "app/report_image.h"
 #include "core/atomic_file.h"
 #include "core/log.h"
 #include "io/png_io.h"
 #include "precompute/reference.h"
+#include "report/report_image.h"
 
 namespace prt {
 namespace {

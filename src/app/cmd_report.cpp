@@ -5,15 +5,15 @@
 
 #include "app/commands.h"
 #include "app/pipeline.h"
-#include "app/render_frames.h"
-#include "app/report_glossy.h"
-#include "app/report_image.h"
-#include "app/report_sweep.h"
-#include "app/report_write.h"
-#include "app/stability.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "render/render_frames.h"
+#include "report/report_glossy.h"
+#include "report/report_image.h"
+#include "report/report_sweep.h"
+#include "report/report_write.h"
+#include "report/stability.h"
 
 namespace prt {
 namespace {

@@ -6,15 +6,15 @@
 
 #include <unistd.h>
 
-#include "core/error.h"
 #include "core/atomic_file.h"  // WriteProblem
+#include "core/error.h"
 #include "core/log.h"
 #include "core/memory.h"
 #include "core/text.h"
 #include "env/load_environment.h"
-#include "io/transport_cache.h"
 #include "precompute/light.h"
 #include "precompute/transfer_matrix.h"
+#include "precompute_io/transport_cache.h"
 #include "raster/exposure.h"
 #include "sh/dering.h"
 #include "sh/window.h"

@@ -16,13 +16,14 @@
 #include <optional>
 #include <string>
 
-#include "app/render_frames.h"
+#include "app/render_args.h"
 #include "app/scene_options.h"
 #include "core/output_folder.h"
 #include "env/environment.h"
 #include "geometry/mesh.h"
 #include "precompute/transport.h"
 #include "raster/camera.h"
+#include "render/render_frames.h"
 #include "sh/coeffs.h"
 
 namespace prt {

@@ -7,9 +7,9 @@
 #include "app/render_video.h"
 #include "core/atomic_file.h"
 #include "core/log.h"
-#include "io/transport_txt.h"
-#include "precompute/shade.h"
 #include "core/text.h"
+#include "precompute/shade.h"
+#include "precompute_io/transport_txt.h"
 
 namespace prt {
 namespace {
@@ -37,7 +37,7 @@ void NoteForeignFrames(OutputFolder& folder) {
 }
 
 /// Frame 0's per-vertex radiance toward the camera (its light not turned), as RenderFrames
-/// shades it, to `path` (io/transport_txt.h).
+/// shades it, to `path` (precompute_io/transport_txt.h).
 void WriteVertexRadiance(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Camera& camera,
                          const std::string& path) {
   const glm::dvec3 eye(camera.eye);

@@ -95,9 +95,9 @@ std::string RenderVideo::Finish() {
   if (outside_) outside_->Commit();
   const VideoSpec& s = writer_->spec();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return Formatted("video: %d frames of %dx%d at %g fps (%.2f s%s) as %s in %s [%.3f s after the last frame]", s.frames,
-                   s.width, s.height, s.fps, s.frames / s.fps, s.format == VideoFormat::kApng ? ", looping" : "",
-                   VideoFormatName(s.format), path_.c_str(), seconds);
+  return Formatted("video: %s, %s of %d frames of %dx%d at %g fps (%.2f s%s) [%.3f s after the last frame]",
+                   path_.c_str(), VideoFormatName(s.format), s.frames, s.width, s.height, s.fps, s.frames / s.fps,
+                   s.format == VideoFormat::kApng ? ", looping" : "", seconds);
 }
 
 }  // namespace prt

@@ -12,7 +12,7 @@
 #include <string>
 
 #include "app/args.h"
-#include "app/render_options.h"
+#include "app/render_args.h"
 #include "core/atomic_file.h"
 #include "core/output_folder.h"
 #include "video/video_writer.h"

@@ -5,15 +5,15 @@
 #include <filesystem>
 #include <map>
 
-#include "app/report_auto_lmax.h"
 #include "core/error.h"
-#include "core/text.h"
 #include "core/log.h"
 #include "core/parallel.h"
+#include "core/text.h"
 #include "env/cubemap.h"
 #include "env/load_environment.h"
 #include "io/image_load.h"
 #include "precompute/sample_rule.h"
+#include "report/report_auto_lmax.h"
 #include "sh/coeffs.h"
 
 namespace prt {

@@ -33,8 +33,9 @@ struct ApngDelay {
 /// fps whose inverse has such a fraction: 30 -> 1/30, 29.97 -> 100/2997, 0.5 -> 2/1.
 ApngDelay ApngDelayOf(double fps);
 
-/// Browsers play frames of at most 10 ms as if they lasted 100 ms (a rule inherited from
-/// GIF), so an animated PNG above this frame rate would play ten times too slowly.
+/// The highest frame rate of an animated PNG. Browsers play frames of 10 ms or less as if they
+/// lasted 100 ms (a rule inherited from GIF), so at 100 fps and above an animation would play
+/// ten times too slowly; 90 keeps frames at 11 ms or more.
 constexpr double kApngMaxFps = 90.0;
 
 class ApngWriter {

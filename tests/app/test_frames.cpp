@@ -10,11 +10,11 @@
 
 #include <glm/vec3.hpp>
 
-#include "app/render_frames.h"
 #include "core/image.h"
 #include "io/png_io.h"
 #include "raster/image_diff.h"
 #include "raster/tonemap.h"
+#include "render/render_frames.h"
 #include "tests/env/env_test_util.h"
 #include "tests/test_support.h"
 

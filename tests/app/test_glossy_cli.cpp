@@ -11,7 +11,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "io/transfer_matrix_file.h"
+#include "precompute_io/transfer_matrix_file.h"
 #include "tests/test_support.h"
 
 using namespace prt;

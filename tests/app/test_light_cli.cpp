@@ -11,7 +11,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "io/light_txt.h"
+#include "precompute_io/light_txt.h"
 #include "sh/coeffs.h"
 #include "tests/sh/sh_test_util.h"
 #include "tests/test_support.h"

@@ -65,21 +65,8 @@ TEST_SUITE("app") {
     const pid_t pid = test::StartLongRender(dir, "48x32");
     REQUIRE(pid > 0);
     const std::string staging = dir + "/" + OutputFolder::kStagingName;
-    const std::string watched = staging + "/frame_0020.png";
-    bool started = false;
-    // Polls until frame 20 is staged (or the child has exited, which fails below). The bound
-    // only keeps a broken build from hanging the suite; it is not a time limit on prt.
-    for (int tries = 0; tries < 60000 && !started; ++tries) {
-      started = fs::exists(watched);
-      int status = 0;
-      if (!started && ::waitpid(pid, &status, WNOHANG) == pid) break;
-      if (!started) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    }
-    ::kill(pid, SIGKILL);
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    REQUIRE(started);
-    CHECK(WIFSIGNALED(status));
+    // Killed once frame 20 is staged; the kill ends it (not an exit of its own).
+    REQUIRE(test::KillWhenFileAppears(pid, staging + "/frame_0020.png"));
 
     // The folder itself: every earlier frame intact, nothing new but prt's own files.
     int kept = 0;

@@ -16,9 +16,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "app/render_frames.h"
 #include "core/atomic_file.h"
 #include "core/output_folder.h"
+#include "render/render_frames.h"
 #include "tests/test_support.h"
 
 namespace prt {

@@ -6,20 +6,15 @@
 // refused before any work; a failing encoder fails the run without a partial video.
 #include <doctest/doctest.h>
 
-#include <chrono>
 #include <cmath>
-#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <thread>
 
-#include <sys/wait.h>
-
-#include "app/render_frames.h"
-#include "core/output_folder.h"
 #include "core/atomic_file.h"
+#include "core/output_folder.h"
 #include "io/png_io.h"
+#include "render/render_frames.h"
 #include "tests/test_support.h"
 #include "tests/video/apng_test_reader.h"
 #include "video/apng_writer.h"
@@ -203,27 +198,30 @@ TEST_SUITE("app") {
     refused("--video " + Q(dir + "/t.webm"), 1, "apt-get install ffmpeg", "PATH=/nonexistent ");
   }
 
-  TEST_CASE("video: an encoder that fails mid-way fails the run (exit 1, its message), leaving no video") {
-    const std::string dir = test::ScratchDir("video_ffmpeg_fails");
-    // A stand-in ffmpeg that lists the encoder, reads part of the first frames and gives up.
-    fs::create_directories(dir + "/bin");
-    std::ofstream(dir + "/bin/ffmpeg") << "#!/bin/sh\n"
-                                          "case \"$*\" in *-encoders*) echo ' V....D libx264  H.264'; exit 0;; esac\n"
-                                          "head -c 1000 >/dev/null\n"
-                                          "echo 'stand-in encoder: gave up' >&2\n"
-                                          "exit 3\n";
-    fs::permissions(dir + "/bin/ffmpeg", fs::perms::owner_all);
-    const std::string video = dir + "/turn.mp4";
-    std::ofstream(video) << "an earlier video";
-    // 12 frames of 64x48 are more than a pipe holds, so prt writes into a closed pipe.
-    const auto r = test::RunCommand("PATH=" + Q(dir + "/bin") + ":\"$PATH\" " + Q(test::PrtBinary()) + " render " +
-                                    kScene + "--frames 12 --out " + Q(dir + "/out") + " --video " + Q(video));
-    CAPTURE(r.err);
-    CHECK(r.exit_code == 1);  // not a signal (SIGPIPE would be 141)
-    CHECK(r.err.find("stand-in encoder: gave up") != std::string::npos);
-    CHECK(ReadFile(video) == "an earlier video");
-    CHECK_FALSE(fs::exists(dir + "/out/frame_0000.png"));
-    for (const auto& entry : fs::directory_iterator(dir)) CHECK_FALSE(AtomicFile::IsTemporaryName(entry.path().filename()));
+  TEST_CASE("video: an encoder that fails mid-way or at the end fails the run (exit 1, its message), leaving no video") {
+    // Stand-ins for ffmpeg that list the encoder, then give up after part of the first frames
+    // (prt then writes into a closed pipe: 12 frames of 64x48 are more than a pipe holds), or
+    // read every frame and fail at the end.
+    for (const std::string reading : {"head -c 1000 >/dev/null", "cat >/dev/null"}) {
+      CAPTURE(reading);
+      const std::string dir = test::ScratchDir("video_ffmpeg_fails");
+      fs::create_directories(dir + "/bin");
+      std::ofstream(dir + "/bin/ffmpeg") << "#!/bin/sh\n"
+                                            "case \"$*\" in *-encoders*) echo ' V....D libx264  H.264'; exit 0;; esac\n" +
+                                                reading + "\necho 'stand-in encoder: gave up' >&2\nexit 3\n";
+      fs::permissions(dir + "/bin/ffmpeg", fs::perms::owner_all);
+      const std::string video = dir + "/turn.mp4";
+      std::ofstream(video) << "an earlier video";
+      const auto r = test::RunCommand("PATH=" + Q(dir + "/bin") + ":\"$PATH\" " + Q(test::PrtBinary()) + " render " +
+                                      kScene + "--frames 12 --out " + Q(dir + "/out") + " --video " + Q(video));
+      CAPTURE(r.err);
+      CHECK(r.exit_code == 1);  // not a signal (SIGPIPE would be 141)
+      CHECK(r.err.find("stand-in encoder: gave up") != std::string::npos);
+      CHECK(ReadFile(video) == "an earlier video");
+      CHECK_FALSE(fs::exists(dir + "/out/frame_0000.png"));
+      for (const auto& entry : fs::directory_iterator(dir))
+        CHECK_FALSE(AtomicFile::IsTemporaryName(entry.path().filename()));
+    }
   }
 
   TEST_CASE("video: a render killed mid-video leaves the earlier video as it was, beside only a temporary file") {
@@ -232,20 +230,8 @@ TEST_SUITE("app") {
     std::ofstream(video) << "an earlier video";
     const pid_t pid = test::StartLongRender(dir + "/out", "32x24", {"--video", video});
     REQUIRE(pid > 0);
-    // Killed once frame 20 is staged: by then frames are in the video. The bound only keeps a
-    // broken build from hanging the suite.
-    const std::string watched = dir + "/out/" + OutputFolder::kStagingName + "/frame_0020.png";
-    bool started = false;
-    for (int tries = 0; tries < 60000 && !started; ++tries) {
-      started = fs::exists(watched);
-      int status = 0;
-      if (!started && ::waitpid(pid, &status, WNOHANG) == pid) break;
-      if (!started) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    }
-    ::kill(pid, SIGKILL);
-    int status = 0;
-    ::waitpid(pid, &status, 0);
-    REQUIRE(started);
+    // Killed once frame 20 is staged: by then frames are in the video.
+    REQUIRE(test::KillWhenFileAppears(pid, dir + "/out/" + OutputFolder::kStagingName + "/frame_0020.png"));
     CHECK(ReadFile(video) == "an earlier video");
     int temporary = 0;
     for (const auto& entry : fs::directory_iterator(dir))

@@ -12,13 +12,13 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfRgbaFile.h>
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "env/load_environment.h"
-#include "io/light_txt.h"
 #include "precompute/light.h"
+#include "precompute_io/light_txt.h"
 #include "sh/basis.h"
 #include "sh/zonal.h"
-#include "core/atomic_file.h"
 #include "tests/env/env_test_util.h"
 #include "tests/test_support.h"
 

@@ -10,6 +10,8 @@
 
 using namespace prt;
 
+TEST_SUITE_BEGIN("material");
+
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
@@ -122,3 +124,5 @@ TEST_CASE("the share of a lobe's energy in bands 0..lmax grows to 1, all of it f
   CHECK(LobeBandShare(Lobe{LobeKind::kRaisedCosine, 5}, 5) == doctest::Approx(1.0).epsilon(1e-13));
   CHECK(LobeBandShare(Lobe{LobeKind::kRaisedCosine, 5}, 4) < 1.0 - 1e-6);
 }
+
+TEST_SUITE_END();

@@ -17,6 +17,8 @@
 
 using namespace prt;
 
+TEST_SUITE_BEGIN("material");
+
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
@@ -147,3 +149,5 @@ TEST_CASE("lobe transfer at high lmax on a fresh thread: its low bands agree wit
   CHECK(std::abs(low[0]) > 0.05);
   for (std::size_t k = 0; k < low.size(); ++k) CHECK(std::abs(high[k] - low[k]) < 1e-9);
 }
+
+TEST_SUITE_END();

@@ -8,6 +8,8 @@
 
 using namespace prt;
 
+TEST_SUITE_BEGIN("material");
+
 namespace {
 std::string Problem(const std::string& text) {
   try {
@@ -49,3 +51,5 @@ TEST_CASE("albedo + KS above 1 is refused, at 1 accepted") {
   // An albedo stored as float: 0.8f + 0.2 is 1 to float precision, not above it.
   CHECK_NOTHROW(CheckMaterialEnergy(ParseMaterial("phong:10,0.2"), double(0.8f), "the demo scene"));
 }
+
+TEST_SUITE_END();

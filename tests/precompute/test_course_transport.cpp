@@ -6,8 +6,8 @@
 
 #include "core/atomic_file.h"
 #include "io/obj_loader.h"
-#include "io/transport_txt.h"
 #include "precompute/transport.h"
+#include "precompute_io/transport_txt.h"
 #include "tests/test_support.h"
 
 using namespace prt;

@@ -18,10 +18,12 @@
 #include "precompute/transfer_matrix.h"
 #include "precompute/transport.h"
 #include "sh/basis.h"
-#include "tests/precompute/glossy_test_util.h"
 #include "sh/zonal.h"
+#include "tests/precompute/glossy_test_util.h"
 
 using namespace prt;
+
+TEST_SUITE_BEGIN("precompute");
 using test::BandLimitedLight;
 using test::LightAt;
 using test::SphereOverPlane;
@@ -212,3 +214,5 @@ TEST_CASE("matrix path seen from any eye equals the fixed-camera vector toward t
     CHECK(worst <= kTol * peak);
   }
 }
+
+TEST_SUITE_END();

@@ -7,21 +7,23 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/parallel.h"
 #include "geometry/bvh.h"
 #include "geometry/mesh_ops.h"
 #include "geometry/procedural.h"
 #include "geometry/ray.h"
-#include "io/transport_cache.h"
 #include "material/lobe_transfer.h"
 #include "precompute/lobe_rays.h"
 #include "precompute/shade.h"
 #include "precompute/transport.h"
-#include "core/parallel.h"
+#include "precompute_io/transport_cache.h"
 #include "sh/basis.h"
 #include "tests/precompute/glossy_test_util.h"
 #include "tests/test_support.h"
 
 using namespace prt;
+
+TEST_SUITE_BEGIN("precompute");
 using test::BandLimitedLight;
 using test::LightAt;
 using test::SphereOverPlane;
@@ -189,3 +191,5 @@ TEST_CASE("glossy transfer does not depend on the thread count") {
   CHECK(one.glossy == two.glossy);
   CHECK(one.coeffs == two.coeffs);
 }
+
+TEST_SUITE_END();

@@ -15,6 +15,8 @@
 
 using namespace prt;
 
+TEST_SUITE_BEGIN("texture");
+
 namespace {
 
 // Sampling sums a few float products of values in [0, 1]: a few ulps of 1.
@@ -117,3 +119,5 @@ TEST_CASE("texture files: missing, corrupt and directory paths are one-line erro
     }
   }
 }
+
+TEST_SUITE_END();

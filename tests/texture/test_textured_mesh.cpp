@@ -18,6 +18,8 @@
 
 using namespace prt;
 
+TEST_SUITE_BEGIN("texture");
+
 namespace {
 
 // Corner coordinates are copied or averaged from the file's floats: float rounding only.
@@ -152,3 +154,5 @@ TEST_CASE("textured mesh: splitting long edges and turning inside-out parts keep
   CHECK(loaded.mesh.triangle_count() > 16);
   check_affine(loaded.mesh);
 }
+
+TEST_SUITE_END();

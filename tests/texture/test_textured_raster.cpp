@@ -8,7 +8,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "app/render_frames.h"
 #include "core/atomic_file.h"
 #include "env/load_environment.h"
 #include "env/procedural.h"
@@ -17,16 +16,19 @@
 #include "geometry/procedural.h"
 #include "io/obj_loader.h"
 #include "io/png_io.h"
-#include "io/transport_cache.h"
 #include "precompute/light.h"
 #include "precompute/transport.h"
+#include "precompute_io/transport_cache.h"
 #include "raster/rasterizer.h"
 #include "raster/tonemap.h"
+#include "render/render_frames.h"
 #include "sh/axis_rotation.h"
 #include "tests/golden.h"
 #include "tests/test_support.h"
 
 using namespace prt;
+
+TEST_SUITE_BEGIN("texture");
 
 namespace {
 
@@ -214,18 +216,6 @@ Mesh CheckerSphereOnFloor() {
   return sphere;
 }
 
-RenderOptions GoldenFrame() {
-  RenderOptions o;
-  o.tonemap = ToneCurve::kSrgb;
-  o.exposure = 0.0;
-  o.ssaa = 1;
-  o.width = o.height = 96;
-  o.eye = glm::dvec3(0.0, 3.0, 7.0);
-  o.target = glm::dvec3(0.0, 0.8, 0.0);
-  o.fov = 40.0;
-  return o;
-}
-
 Image8 DrawScene(const Mesh& mesh, const Environment& env, const RenderOptions& o, TransportMode mode, int samples) {
   TransportOptions t;
   t.mode = mode;
@@ -244,7 +234,7 @@ TEST_CASE("golden frame: a checker-textured sphere on a checker-textured floor u
   SkyParams sky;
   sky.sun = 6.0;
   const auto env = MakeSky(sky);
-  test::CheckGolden("textured_checker_sphere", DrawScene(CheckerSphereOnFloor(), *env, GoldenFrame(),
+  test::CheckGolden("textured_checker_sphere", DrawScene(CheckerSphereOnFloor(), *env, test::GoldenFrame(),
                                                           TransportMode::kShadowed, 128));
 }
 
@@ -253,9 +243,11 @@ TEST_CASE("golden frame: textured mary (the course's texture) under Grace Cathed
   const Mesh mary = LoadObj(data + "/games202/mary/mary.obj", data + "/games202/mary/MC003_Kozakura_Mari.png").mesh;
   REQUIRE(mary.textured());
   const auto env = LoadEnvironment(data + "/games202/cubemap/GraceCathedral", CubeLayout::kStandard);
-  RenderOptions o = GoldenFrame();
+  RenderOptions o = test::GoldenFrame();
   o.width = 72, o.height = 96;
   o.env_background = false;
   o.eye = glm::dvec3(0, 8, 22) * 0.45, o.target = glm::dvec3(0, 1.7, 0), o.fov = 30.0;
   test::CheckGolden("textured_mary_gracecathedral", DrawScene(mary, *env, o, TransportMode::kShadowed, 64));
 }
+
+TEST_SUITE_END();

@@ -1,0 +1,251 @@
+#include "app/render_args.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+#include <glm/geometric.hpp>
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include "app/render_video.h"
+#include "core/atomic_file.h"  // WriteProblem
+#include "core/error.h"
+#include "core/text.h"
+#include "raster/camera.h"
+#include "raster/rasterizer.h"
+#include "sh/coeffs.h"
+
+namespace prt {
+namespace {
+
+std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
+  const RenderOptions demo = WithDemoCamera({});  // the embedded scene's camera
+  std::map<std::string, OptionSpec> s;
+  auto add = [&s](OptionSpec o) { s[o.name] = std::move(o); };
+  add({"--frames", "N", "frames over the turns, 1..100000 (frame i shows the light turned by 360 * turns * i / N degrees)",
+       std::to_string(d.frames)});
+  add({"--size", "WxH", "frame size in pixels, each 1..16384", std::to_string(d.width) + "x" + std::to_string(d.height)});
+  add({"--out", "DIR",
+       "output folder, created if missing; one run at a time, and after a successful run it holds exactly that "
+       "run's outputs (older prt outputs it did not rewrite are removed, other files are never touched)",
+       d.out.empty() ? "required" : d.out});
+  add({"--axis", "X,Y,Z", "rotation axis of the light", VecText(d.axis) + ", world up"});
+  add({"--turns", "T", "full turns of the light over all frames, -1e6..1e6", Formatted("%g", double(d.turns))});
+  add({"--background", "B", "env | black | R,G,B (linear, each >= 0): env draws the environment, turning with the light",
+       d.env_background ? "env" : "black"});
+  add({"--tonemap", "T", "srgb (clamp) | reinhard | aces (a filmic curve that keeps bright suns from clipping)",
+       ToneCurveName(d.tonemap)});
+  add({"--exposure", "EV",
+       "radiance is scaled by 2^EV before tone mapping, -20..20; auto: chosen from frame 0's mesh pixels and "
+       "printed on the run summary, so a run can be repeated exactly",
+       d.exposure ? Formatted("%g", double(*d.exposure)) : "auto"});
+  add({"--ssaa", "K", "K x K supersampling per pixel, 1..8", std::to_string(d.ssaa)});
+  add({"--view", "V",
+       "radiance | irradiance | albedo | transport:K | light | glossy: the final colour; the lighting alone (albedo 1); "
+       "the albedo; the K-th transport coefficient in false colour with a legend, on a grey background; the "
+       "light as the SH coefficients reconstruct it (on the mesh: in the normal's direction); a glossy "
+       "material's lobe term alone (the highlights, without the diffuse part)",
+       d.view == "transport" ? "transport:" + std::to_string(d.transport_index) : d.view});
+  add({"--eye", "X,Y,Z", "camera position",
+       d.eye ? VecText(*d.eye)
+             : "a three-quarter view fitted to the mesh's projected bounds; " + VecText(*demo.eye) + " for the embedded scene"});
+  add({"--target", "X,Y,Z", "point the camera looks at (the image centre)",
+       d.target ? VecText(*d.target)
+                : "fitted with --eye; the mesh's centre when only --eye is given; " + VecText(*demo.target) +
+                      " for the embedded scene"});
+  add({"--up", "X,Y,Z",
+       "camera up direction (when the default 0,1,0 is parallel to the view, a perpendicular one is chosen and "
+       "printed)",
+       d.up ? VecText(*d.up) : "0,1,0"});
+  add({"--fov", "DEGREES", "vertical field of view, 0.001..179", d.fov ? Formatted("%g", double(*d.fov))
+             : Formatted("%g; %g for the embedded scene", double(Camera{}.fov_deg), *demo.fov)});
+  add({"--orbit", "DEGREES",
+       "the camera turns this many degrees about the target (around its up direction) over the frames, "
+       "-1e6..1e6; a glossy --material then uses transfer matrices, so highlights follow the view",
+       Formatted("%g", d.orbit)});
+  add({"--vertex-radiance", "FILE",
+       "write frame 0's per-vertex linear RGB radiance toward the camera (albedo in, before tone mapping) in "
+       "transport.txt's layout: the welded vertex count, then three `R G B` rows per face of the mesh in file "
+       "order, one per corner",
+       d.vertex_radiance.empty() ? "none" : d.vertex_radiance});
+  add({"--video", "FILE",
+       "the frames also as one video: .png or .apng an animated PNG that loops (written by prt, plays in every "
+       "browser), .mp4 H.264 or .webm VP9 through Debian's ffmpeg program; written when the run succeeds, like the "
+       "frames",
+       d.video.empty() ? "none" : d.video});
+  add({"--fps", "F", "frames per second of --video, 0.1..240 (at most 90 for an animated PNG)", Formatted("%g", d.fps)});
+  add({"--cache", "PATH",
+       "transport cache to reuse and update, so a re-run with the same mesh and options skips the precompute; "
+       "`none` disables it; a path that cannot be used is a warning, not an error",
+       d.cache.empty() ? "DIR/transport.cache" : d.cache});
+  return s;
+}
+
+/// WxH, each from 1 to 16384.
+void ReadSize(Args& args, RenderOptions& o) {
+  const auto size = args.String("--size");
+  if (!size) return;
+  const auto x = size->find('x');
+  const auto w = ParseNumber(size->substr(0, x)), h = x == std::string::npos ? std::nullopt : ParseNumber(size->substr(x + 1));
+  if (!w || !h || std::floor(*w) != *w || std::floor(*h) != *h)
+    args.Fail("--size: '" + *size + "' is not a size (expected WxH, each from 1 to 16384)");
+  if (*w < 1 || *h < 1 || *w > 16384 || *h > 16384)
+    args.Fail("--size: '" + *size + "' is out of range (expected WxH, each from 1 to 16384)");
+  o.width = static_cast<int>(*w), o.height = static_cast<int>(*h);
+}
+
+void ReadBackground(Args& args, RenderOptions& o, const RenderOptions& d) {
+  const std::string bg = args.String("--background", d.env_background ? "env" : "black");
+  if (bg == "env") {
+    o.env_background = true;
+  } else if (bg == "black") {
+    o.env_background = false, o.background_color = glm::vec3(0.0f);
+  } else {
+    std::istringstream ss(bg);
+    glm::dvec3 c;
+    char c1 = 0, c2 = 0;
+    if (!(ss >> c.x >> c1 >> c.y >> c2 >> c.z) || c1 != ',' || c2 != ',' || c.x < 0 || c.y < 0 || c.z < 0 ||
+        !std::isfinite(c.x + c.y + c.z))
+      args.Fail("--background: '" + bg + "' (expected env, black or R,G,B with each >= 0)");
+    o.env_background = false, o.background_color = glm::vec3(c);
+  }
+}
+
+void ReadView(Args& args, RenderOptions& o, const RenderOptions& d) {
+  const std::string view = args.String("--view", d.view == "transport" ? "transport:" + std::to_string(d.transport_index) : d.view);
+  if (view.rfind("transport:", 0) == 0) {
+    const std::string k = view.substr(10);
+    char* end = nullptr;
+    const long index = std::strtol(k.c_str(), &end, 10);
+    if (k.empty() || *end != '\0' || index < 0 || index >= CoeffCount(kMaxLmax))
+      args.Fail("--view: '" + view + "' is not a coefficient index (expected transport:K with K an integer from 0)");
+    o.view = "transport", o.transport_index = static_cast<int>(index);
+  } else if (view == "radiance" || view == "irradiance" || view == "albedo" || view == "light" || view == "glossy") {
+    o.view = view;
+  } else {
+    args.Fail("--view: unknown value '" + view + "' (expected radiance, irradiance, albedo, transport:K, light or glossy)");
+  }
+}
+
+/// The camera options, checked on their own: a zero --up, --eye equal to --target, and an
+/// explicit --up along an explicit view are errors; a default up along the view is not (it is
+/// replaced when the camera is built, raster/camera.h).
+void ReadCamera(Args& args, RenderOptions& o) {
+  if (auto v = args.Vec3("--eye")) o.eye = v;
+  if (auto v = args.Vec3("--target")) o.target = v;
+  if (auto v = args.Vec3("--up")) {
+    if (glm::length(*v) < 1e-12) args.Fail("--up: '" + *args.String("--up") + "' is zero (expected a direction, such as 0,1,0)");
+    o.up = v;
+  }
+  if (args.Has("--fov")) o.fov = args.Double("--fov", 35.0, 1e-3, 179.0);
+  if (args.Has("--eye") && args.Has("--target")) {
+    const glm::dvec3 view = *o.target - *o.eye;
+    if (glm::length(view) < 1e-12) args.Fail("--eye: equals --target (expected two different points)");
+    if (args.Has("--up") && glm::length(glm::cross(glm::normalize(view), glm::normalize(*o.up))) < 1e-6)
+      args.Fail("--up: parallel to the view direction --target - --eye (expected a direction across it)");
+  }
+}
+
+}  // namespace
+
+const std::vector<std::string>& AllRenderOptionNames() {
+  static const std::vector<std::string> names = {
+      "--frames", "--size",     "--out",  "--axis", "--turns",  "--background", "--tonemap", "--exposure",
+      "--ssaa",   "--view",     "--eye",  "--target", "--up",   "--fov",        "--orbit",
+      "--vertex-radiance", "--video", "--fps", "--cache"};
+  return names;
+}
+
+OptionGroup RenderOptionGroup(const RenderOptions& defaults, const std::vector<std::string>& names,
+                              const std::string& title) {
+  return PickOptions(RenderSpecs(defaults), names, title);
+}
+
+RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
+  RenderOptions o = d;
+  const auto has = [&args](const char* name) { return args.Accepts(name); };
+  if (has("--frames")) o.frames = args.Int("--frames", d.frames, 1, 100000);
+  if (has("--size")) ReadSize(args, o);
+  if (has("--out")) o.out = args.String("--out", d.out);
+  if (has("--axis")) {
+    if (const auto axis = args.Vec3("--axis")) {
+      if (glm::length(*axis) < 1e-12)
+        args.Fail("--axis: '" + *args.String("--axis") + "' is zero (expected a direction, such as 0,1,0)");
+      o.axis = *axis;
+    }
+  }
+  if (has("--turns")) o.turns = args.Double("--turns", d.turns, -1e6, 1e6);
+  if (has("--background")) ReadBackground(args, o, d);
+  if (has("--tonemap")) {
+    const std::string curve = args.Choice("--tonemap", ToneCurveName(d.tonemap), {"srgb", "reinhard", "aces"});
+    o.tonemap = *ParseToneCurve(curve);
+  }
+  if (has("--exposure")) {
+    const auto text = args.String("--exposure");
+    if (text && *text == "auto") {
+      o.exposure.reset();
+    } else if (text) {
+      const auto v = ParseNumber(*text);
+      if (!v || *v < -20.0 || *v > 20.0)
+        args.Fail("--exposure: " + NumberProblem(*text, false, "a number from -20 to 20, or auto"));
+      o.exposure = *v;
+    }
+  }
+  if (has("--ssaa")) o.ssaa = args.Int("--ssaa", d.ssaa, 1, 8);
+  if (static_cast<long long>(o.width) * o.ssaa > kMaxTargetSide || static_cast<long long>(o.height) * o.ssaa > kMaxTargetSide)
+    args.Fail("--ssaa: " + std::to_string(o.ssaa) + " times the frame size exceeds " + std::to_string(kMaxTargetSide) +
+              " samples per side (expected a smaller --ssaa or --size)");
+  if (has("--view")) ReadView(args, o, d);
+  if (has("--eye")) ReadCamera(args, o);
+  if (has("--cache")) o.cache = args.String("--cache", d.cache);
+  if (has("--orbit")) o.orbit = args.Double("--orbit", d.orbit, -1e6, 1e6);
+  if (has("--vertex-radiance") && args.Has("--vertex-radiance")) {
+    o.vertex_radiance = args.String("--vertex-radiance", d.vertex_radiance);
+    // Checked now, not after the precompute: the folder exists and takes new files.
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    const std::string& file = o.vertex_radiance;
+    const std::string expected = " (expected a file name in a writable folder for --vertex-radiance)";
+    if (file.empty()) args.Fail("--vertex-radiance: an empty name" + expected);
+    if (fs::is_directory(file, ec)) throw Error(file + ": is a folder" + expected);
+    fs::path dir = fs::path(file).parent_path();
+    if (dir.empty()) dir = ".";
+    if (!fs::is_directory(dir, ec)) throw Error(file + ": folder '" + dir.string() + "' does not exist" + expected);
+    // A probe file, not access(): root passes access() on folders that take no files (/proc).
+    const std::string probe = (dir / (".prt-probe-" + std::to_string(::getpid()))).string();
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+    if (fd < 0) throw Error(file + ": " + WriteProblem(file, errno) + expected);
+    ::close(fd);
+    ::unlink(probe.c_str());
+  }
+  ReadVideoOptions(args, o, d);
+  return o;
+}
+
+RenderOptions CompleteRenderOptions(Args& args, RenderOptions o, const SceneOptions& scene) {
+  if (o.view == "transport" && o.transport_index >= CoeffCount(scene.lmax))
+    args.Fail("--view: transport:" + std::to_string(o.transport_index) + " is out of range (expected 0 to " +
+              std::to_string(CoeffCount(scene.lmax) - 1) + " for lmax " + std::to_string(scene.lmax) + ")");
+  if (scene.mesh.empty()) {
+    // The embedded scene: each camera value not given is the demo's (help promises them one by
+    // one), so --fov 50 alone widens the demo's view instead of refitting the camera.
+    const RenderOptions demo = WithDemoCamera(o);
+    if (!o.eye) o.eye = demo.eye;
+    if (!o.target) o.target = demo.target;
+    if (!o.fov) o.fov = demo.fov;
+    if (glm::length(*o.target - *o.eye) < 1e-12)
+      args.Fail(std::string(args.Has("--eye") ? "--eye" : "--target") +
+                ": equals the embedded scene's camera " +
+                (args.Has("--eye") ? "target " + VecText(*demo.target) : "eye " + VecText(*demo.eye)) +
+                " (expected two different points)");
+    if (args.Has("--up") && glm::length(glm::cross(glm::normalize(*o.target - *o.eye), glm::normalize(*o.up))) < 1e-6)
+      args.Fail("--up: parallel to the view direction --target - --eye (expected a direction across it)");
+  }
+  return o;
+}
+
+}  // namespace prt

@@ -1,0 +1,206 @@
+#include "render/render_frames.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "core/atomic_file.h"
+#include "core/background_jobs.h"
+#include "core/log.h"
+#include "core/parallel.h"
+#include "core/progress.h"
+#include "geometry/mesh_ops.h"
+#include "io/image_load.h"
+#include "io/png_io.h"
+#include "precompute/shade.h"
+#include "raster/annotate.h"
+#include "raster/exposure.h"
+#include "sh/basis.h"
+
+namespace prt {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+/// Radiance of the SH reconstruction sum_k L_k Y_k(d).
+glm::vec3 Reconstruct(const ShRgb& light, const glm::dvec3& d) {
+  const int lmax = LmaxOfCount(light.size());
+  double y[CoeffCount(kMaxLmax)];
+  EvalBasis(lmax, d, y);
+  glm::dvec3 sum(0.0);
+  for (std::size_t k = 0; k < light.size(); ++k) sum += y[k] * light[k];
+  return glm::vec3(sum);
+}
+
+/// Per-vertex colours of the chosen view; `scale` is TransportViewScale for the transport view.
+std::vector<glm::vec3> ViewColors(const Mesh& mesh, const Transport& transport, const ShRgb& lit,
+                                  const RenderOptions& o, double scale, const glm::dvec3& eye) {
+  if (o.view == "irradiance") return ShadeVertices(mesh, transport, lit, false);
+  if (o.view == "albedo") return mesh.albedo;
+  if (o.view == "glossy") return ShadeGlossy(mesh, transport, lit, &eye);
+  std::vector<glm::vec3> colors(mesh.vertex_count());
+  if (o.view == "light") {
+    for (std::size_t v = 0; v < colors.size(); ++v) colors[v] = Reconstruct(lit, glm::dvec3(mesh.normals[v]));
+    return colors;
+  }
+  if (o.view == "transport") {
+    const double s = scale > 0 ? scale : 1.0;
+    for (std::size_t v = 0; v < colors.size(); ++v) {
+      // Palette colours are display values: decode them so the sRGB tone curve restores them.
+      const glm::vec3 c = DivergingColor(transport.at(v, 0)[o.transport_index] / s);
+      colors[v] = glm::vec3(SrgbToLinear(c.x), SrgbToLinear(c.y), SrgbToLinear(c.z));
+    }
+    return colors;
+  }
+  return ShadeVertices(mesh, transport, lit, true, &eye);
+}
+
+/// A perpendicular up for a view along world up: looking down, the image's top shows -Z (the
+/// far side of a scene facing +Z); looking up, +Z.
+glm::vec3 UpAcross(const glm::vec3& view) { return view.y < 0.f ? glm::vec3(0, 0, -1) : glm::vec3(0, 0, 1); }
+
+}  // namespace
+
+std::string FrameName(int i, int count) {
+  int digits = 4;
+  for (long long limit = 10000; limit < count; limit *= 10) ++digits;
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "frame_%0*d.png", digits, i);
+  return buf;
+}
+
+Camera ChooseCamera(const Mesh& mesh, const RenderOptions& o, std::string* note) {
+  const Bounds3 b = MeshBounds(mesh);
+  const float aspect = float(o.width) / float(o.height);
+  // Fitted only when the eye is not given (a given eye decides the view; the target then
+  // defaults to the mesh's centre).
+  Camera c = o.eye ? Camera{} : FramePoints(mesh.positions, aspect, o.fov ? float(*o.fov) : Camera{}.fov_deg);
+  if (o.eye) c.eye = glm::vec3(*o.eye);
+  if (o.target) c.target = glm::vec3(*o.target);
+  else if (o.eye) c.target = 0.5f * (b.lo + b.hi);
+  if (o.up) c.up = glm::vec3(*o.up);
+  if (o.fov) c.fov_deg = float(*o.fov);
+  const glm::vec3 view = c.target - c.eye;
+  if (!o.up && glm::length(view) > 0.f &&
+      glm::length(glm::cross(glm::normalize(view), glm::normalize(c.up))) < 1e-6f) {
+    const glm::vec3 world_up = c.up;
+    c.up = UpAcross(view);
+    if (note) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "up %g,%g,%g is parallel to the view, so up %g,%g,%g is used", double(world_up.x),
+                    double(world_up.y), double(world_up.z), double(c.up.x), double(c.up.y), double(c.up.z));
+      *note = buf;
+    }
+  }
+  c = FitClipPlanes(c, b.lo, b.hi);
+  CheckCamera(c);
+  return c;
+}
+
+const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport,
+                                  const ShRgb& light, const AxisRotation& rotation, const Environment& env,
+                                  const Camera& camera, const RenderOptions& o, double angle, double view_scale) {
+  // The light, and the environment behind the mesh, turned by R: L'(d) = L(R^T d). Only the
+  // bands the transport has are turned.
+  const ShRgb lit = rotation.Rotate(FirstBands(light, transport.lmax), angle);
+  // A textured mesh is shaded per pixel: the texture's albedo times the interpolated irradiance
+  // (the vertex colour without albedo), plus a glossy lobe, which the albedo does not scale.
+  const bool textured = mesh.textured() && (o.view == "radiance" || o.view == "albedo");
+  std::vector<glm::vec3> colors, added;
+  if (!textured) {
+    colors = ViewColors(mesh, transport, lit, o, view_scale, glm::dvec3(camera.eye));
+  } else if (o.view == "albedo") {
+    colors.assign(mesh.vertex_count(), glm::vec3(1.f));
+  } else {
+    const glm::dvec3 eye(camera.eye);
+    colors = ShadeVertices(mesh, transport, lit, false);
+    if (transport.material.glossy) added = ShadeGlossy(mesh, transport, lit, &eye);
+  }
+  RasterTexturing texturing{&mesh.corner_uv, &mesh.triangle_texture, &mesh.textures, added.empty() ? nullptr : &added};
+  RasterOptions ro;
+  if (textured) ro.texturing = &texturing;
+  ro.ssaa = o.ssaa;
+  ro.background.color = o.background_color;
+  if (o.view == "transport") {
+    ro.background.color = glm::vec3(static_cast<float>(SrgbToLinear(0.5f)));  // neutral grey: no colour to confuse with T
+  } else if (o.view == "light") {
+    ro.background.radiance = [lit](const glm::vec3& d) { return Reconstruct(lit, glm::dvec3(d)); };
+  } else if (o.env_background) {
+    const glm::mat3 inverse(glm::transpose(AxisAngle(glm::normalize(o.axis), angle)));
+    ro.background.radiance = [&env, inverse](const glm::vec3& d) { return glm::vec3(env.Radiance(glm::dvec3(inverse * d))); };
+  }
+  return rasterizer.Draw(camera, o.width, o.height, mesh.positions, mesh.triangles, colors, ro);
+}
+
+ToneMapped ToneMapFrame(const RasterImage& frame, const RenderOptions& o, double exposure_ev, double view_scale) {
+  ToneMapOptions tone;
+  tone.curve = o.tonemap;
+  tone.exposure_ev = float(exposure_ev);
+  if (o.view == "transport") tone = ToneMapOptions{};  // false colours pass through unchanged
+  ToneMapped mapped = ToneMap(frame.image, tone);
+  if (o.view == "transport") DrawDivergingLegend(mapped.image, view_scale, "T" + std::to_string(o.transport_index));
+  return mapped;
+}
+
+double TransportViewScale(const Transport& transport, int index) {
+  double scale = 0.0;
+  for (std::size_t v = 0; v < transport.vertices; ++v)
+    scale = std::max(scale, double(std::abs(transport.at(v, 0)[index])));
+  return scale;
+}
+
+ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
+                     const AxisRotation& rotation, const Environment& env, const Camera& camera,
+                     const RenderOptions& o, double angle, double exposure_ev) {
+  const double scale = o.view == "transport" ? TransportViewScale(transport, o.transport_index) : 0.0;
+  return ToneMapFrame(RasterizeFrame(rasterizer, mesh, transport, light, rotation, env, camera, o, angle, scale), o,
+                      exposure_ev, scale);
+}
+
+FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Environment& env,
+                        const Camera& camera, const RenderOptions& o, OutputFolder& folder, VideoWriter* video) {
+  FrameStats stats;
+  stats.frames = o.frames;
+  Rasterizer rasterizer;
+  const AxisRotation rotation(o.axis, transport.lmax);
+  const bool transport_view = o.view == "transport";
+  const double view_scale = transport_view ? TransportViewScale(transport, o.transport_index) : 0.0;
+  stats.legend_left_out =
+      transport_view && !LayoutDivergingLegend(o.width, o.height, view_scale, "T" + std::to_string(o.transport_index));
+  // The automatic exposure is measured on frame 0 (its light at angle 0) and used for all frames.
+  const bool measure = !o.exposure && !transport_view;
+  stats.exposure = o.exposure.value_or(0.0);
+  // Frames encoded and written in the background, one PNG per thread at most: the bytes of
+  // each file do not depend on how many are in flight.
+  BackgroundJobs writing(ThreadCount());
+  const Bounds3 bounds = MeshBounds(mesh);
+  Progress progress("rendering", static_cast<std::size_t>(o.frames));
+  for (int i = 0; i < o.frames; ++i) {
+    // Each frame from its absolute angle: no accumulated drift.
+    const double angle = 2.0 * kPi * o.turns * double(i) / double(o.frames);
+    const auto t0 = std::chrono::steady_clock::now();
+    const Camera seen_from = Orbit(camera, o.orbit * double(i) / double(o.frames), bounds.lo, bounds.hi);
+    const RasterImage& frame = RasterizeFrame(rasterizer, mesh, transport, light, rotation, env, seen_from, o, angle, view_scale);
+    if (i == 0 && measure) stats.exposure = AutoExposureEv(frame, o.tonemap);
+    ToneMapped mapped = ToneMapFrame(frame, o, stats.exposure, view_scale);
+    stats.draw_seconds += SecondsSince(t0);
+    stats.negative_pixels += mapped.negative_pixels;
+    stats.nan_pixels += mapped.nan_pixels;
+
+    const std::string path = folder.Output(FrameName(i, o.frames));
+    // Rethrows an earlier frame's write error.
+    stats.encode_seconds += writing.Submit([path, i, video, image = std::move(mapped.image)] {
+      const std::string png = EncodePng(image);
+      WriteFileAtomic(path, png);
+      if (video) video->AddFrame(i, image, png);
+    });
+    progress.Advance(1);
+  }
+  stats.encode_seconds += writing.Wait();
+  return stats;
+}
+
+}  // namespace prt

@@ -1,0 +1,78 @@
+#pragma once
+/// \file
+/// The frame loop of `render` and `demo`. For frame i of N the light is turned by
+///     a_i = 2 pi * turns * i / N
+/// and the camera by orbit * i / N degrees about its target (raster/camera.h, Orbit)
+/// about the axis (sh/axis_rotation.h, built from the absolute angle: no drift), the vertices are
+/// shaded by their transport (precompute/shade.h), the mesh is rasterized over the environment
+/// turned by the same rotation, tone-mapped, and written as DIR/frame_NNNN.png (four digits, more
+/// when N needs them, so names sort in frame order), and appended to the video if one is asked
+/// for. Encoding frame i overlaps drawing i+1.
+
+#include <cstddef>
+#include <string>
+
+#include "core/output_folder.h"
+#include "env/environment.h"
+#include "geometry/mesh.h"
+#include "precompute/transport.h"
+#include "raster/camera.h"
+#include "raster/rasterizer.h"
+#include "raster/tonemap.h"
+#include "render/render_options.h"
+#include "sh/axis_rotation.h"
+#include "sh/coeffs.h"
+#include "video/video_writer.h"
+
+namespace prt {
+
+struct FrameStats {
+  int frames = 0;
+  double exposure = 0.0;            ///< the EV used (measured when --exposure auto)
+  std::size_t negative_pixels = 0;  ///< summed over frames: pixels whose radiance was < 0 (ringing)
+  std::size_t nan_pixels = 0;
+  double draw_seconds = 0, encode_seconds = 0;
+  bool legend_left_out = false;     ///< transport view: the frame is too small for a readable legend
+};
+
+/// The largest |T_index| over the vertices: the ends of the transport view's colour scale.
+double TransportViewScale(const Transport& transport, int index);
+
+/// The camera of the options: what they give, the rest from automatic framing of the mesh
+/// (raster/camera.h, fitted to its projected vertices), clip planes fitted to the mesh. When no
+/// --up was given and world up is parallel to the view, a perpendicular up is chosen and
+/// `note` (if given) says so.
+Camera ChooseCamera(const Mesh& mesh, const RenderOptions& options, std::string* note = nullptr);
+
+/// The linear frame with the light turned by `angle` radians by `rotation` (about the options'
+/// axis, built once per run for the transport's lmax): shading, rasterizing over the turned
+/// environment (the teaching view transport:K over a neutral grey instead, its colours scaled
+/// by `view_scale`, TransportViewScale). `rasterizer` keeps its buffers; the result is valid
+/// until its next call.
+const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport,
+                                  const ShRgb& light, const AxisRotation& rotation, const Environment& env,
+                                  const Camera& camera, const RenderOptions& options, double angle,
+                                  double view_scale);
+
+/// A rasterized frame tone mapped with `exposure_ev` (the transport view: passed through, with
+/// its legend from -view_scale to +view_scale).
+ToneMapped ToneMapFrame(const RasterImage& frame, const RenderOptions& options, double exposure_ev, double view_scale);
+
+/// One frame, RasterizeFrame then ToneMapFrame (for tests: RenderFrames does the same once per
+/// frame, with the scale computed once).
+ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
+                     const AxisRotation& rotation, const Environment& env, const Camera& camera,
+                     const RenderOptions& options, double angle, double exposure_ev);
+
+/// Renders all frames into `folder`, each named through folder.Output(), and hands each to
+/// `video` (if given) once its PNG is encoded; the automatic exposure (raster/exposure.h) is
+/// measured on frame 0 and used for every frame.
+FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Environment& env,
+                        const Camera& camera, const RenderOptions& options, OutputFolder& folder,
+                        VideoWriter* video = nullptr);
+
+/// The file name of frame `i` of `count`: frame_0000.png ..., with as many digits as count - 1
+/// needs (at least four), so that the names sort in frame order.
+std::string FrameName(int i, int count);
+
+}  // namespace prt

@@ -1,0 +1,54 @@
+#pragma once
+/// \file
+/// What a render draws and how (docs/CLI.md, "Render options"): frames, size, the light's turn,
+/// background, tone mapping, exposure, supersampling, the view, the camera, the video. The
+/// values only: app/render_args.h reads and checks them from the command line.
+
+#include <optional>
+#include <string>
+
+#include <glm/vec3.hpp>
+
+#include "raster/tonemap.h"
+
+namespace prt {
+
+struct RenderOptions {
+  int frames = 120;
+  int width = 640, height = 480;
+  std::string out = "out/render";
+  glm::dvec3 axis{0.0, 1.0, 0.0};  ///< rotation axis of the light (world up)
+  double turns = 1.0;              ///< full turns over all frames
+  bool env_background = true;      ///< the environment behind the mesh, else background_color
+  glm::vec3 background_color{0.0f};
+  ToneCurve tonemap = ToneCurve::kAces;
+  /// EV: radiance is scaled by 2^exposure before tone mapping. Empty: automatic, measured on
+  /// frame 0's mesh pixels (raster/exposure.h) and printed on the run summary.
+  std::optional<double> exposure;
+  int ssaa = 2;
+  std::optional<glm::dvec3> eye, target, up;
+  std::optional<double> fov;
+  /// What to draw: radiance (the final colour), irradiance (albedo 1), albedo, transport (the
+  /// coefficient transport_index in false colour), light (the SH-reconstructed light) or glossy
+  /// (a glossy material's lobe term alone).
+  std::string view = "radiance";
+  int transport_index = 0;
+  /// The transport cache to reuse and update: empty for "DIR/transport.cache", "none" for none.
+  std::string cache;
+  /// Degrees the camera turns about the target (around its up direction) over all frames: frame
+  /// i is seen from the camera turned by orbit * i / frames.
+  double orbit = 0.0;
+  /// Where frame 0's per-vertex linear radiance is written (precompute_io/transport_txt.h); empty: nowhere.
+  std::string vertex_radiance;
+  /// The frames also as one video file (app/render_video.h); empty: none. Its rate in frames
+  /// per second, and the ffmpeg program for .mp4 and .webm (found when the options are read).
+  std::string video;
+  double fps = 30.0;
+  std::string ffmpeg;
+};
+
+/// The camera of `prt demo`, also used by render and reference on the embedded scene: a
+/// three-quarter view of the knot with the horizon in frame.
+RenderOptions WithDemoCamera(RenderOptions options);
+
+}  // namespace prt

@@ -1,0 +1,111 @@
+#pragma once
+/// \file
+/// The measurements behind `prt report`: PRT's per-vertex error against its run time.
+///
+/// For each transport mode, sampler (uniform, stratified, fibonacci) and directions per vertex
+/// (doubling from `min_samples` to `max_samples`) the transport is computed once at `max_lmax`
+/// and timed. Its bands 0..L are exactly what a run at lmax L would compute with the same
+/// directions (each coefficient is its own sum over the same rays), so every lmax L <= max_lmax
+/// is evaluated from that one run; the seconds recorded are that run's, and the report says so.
+/// Each (mode, sampler, samples, lmax) is scored by
+///   (a) sampling error: vertex radiance against the converged transport at the same lmax
+///       (fibonacci, `converged_samples` directions), i.e. the Monte Carlo noise alone;
+///   (b) total error: against the ground truth of precompute/reference.h, SH truncation
+///       included;
+///   and the PSNR of its picture against the reference picture (report/report_image.h).
+/// Unshadowed transport is closed form: one row per lmax, truncation error only.
+/// Light projection is measured separately: the sky averaged into cubemaps of growing face size,
+/// projected (timed) and compared coefficient by coefficient with its exact projection.
+
+#include <string>
+#include <vector>
+
+#include <optional>
+
+#include "env/environment.h"
+#include "geometry/mesh.h"
+#include "precompute/error_metrics.h"
+#include "precompute/transport.h"
+#include "render/render_options.h"
+#include "report/report_glossy.h"
+
+namespace prt {
+
+struct ReportConfig {
+  std::vector<TransportMode> modes = {TransportMode::kShadowed, TransportMode::kInterreflection};
+  int min_samples = 16, max_samples = 16384;
+  int max_lmax = 8;
+  int converged_samples = 65536;
+  int reference_samples = 8192;
+  int bounces = 1;
+  std::uint64_t seed = 1;
+  std::vector<int> face_sizes = {8, 16, 32, 64, 128, 256, 512};
+  int image_width = 320, image_height = 240;
+};
+
+/// The small default scene of the report: a (2, 3) torus knot of 128 x 16 segments standing on
+/// a 24 x 24 ground plane (about 2,700 vertices): the demo scene's shapes, fast enough to sweep.
+Mesh MakeReportScene();
+
+struct SweepRow {
+  std::string mode, sampler;  ///< sampler "closed-form" for unshadowed
+  int samples = 0;            ///< requested directions per vertex
+  int directions = 0;         ///< actually used (stratified: floor(sqrt)^2)
+  int lmax = 0;
+  /// Transport time of the run the row comes from: the fastest of repeated runs that together
+  /// last at least kMinTimedSeconds (report_sweep.cpp), so the clock's resolution plays no part.
+  double seconds = 0;
+  VertexError sampling, total;
+  double psnr = 0;            ///< dB against the reference picture
+};
+
+struct ModeBaseline {
+  std::string mode;
+  double reference_seconds = 0, reference_rms_error = 0, reference_rms_radiance = 0;
+  int reference_samples = 0;
+  double converged_seconds = 0;
+  int converged_samples = 0;
+  /// Relative difference between converged and a half-sample-count run (an upper bound on the
+  /// converged result's own noise), at max_lmax.
+  double converged_self_error = 0;
+  /// [l] for l = 0..max_lmax: the converged transport's total error at lmax l (relative RMS),
+  /// i.e. the SH truncation error (plus the reference's own, much smaller, noise). Empty for
+  /// unshadowed, whose rows hold it directly.
+  std::vector<double> truncation;
+};
+
+/// One cubemap resolution of the light-projection study. Each texel holds the environment's
+/// average over its solid angle (what a real, filtered cubemap stores), from sub-texel samples
+/// weighted by their exact solid angles; a texel-centre sample instead lets the sky's small sun
+/// fall between centres at some sizes and onto one at others, which made the error jump up and
+/// down with the face size.
+struct LightRow {
+  int face_size = 0;
+  int supersample = 1;         ///< sub-texel samples per side of each texel
+  double seconds = 0;          ///< ProjectLight on the cubemap
+  double coeff_error = 0;      ///< relative L2 error of all coefficients (bands 0..max_lmax)
+};
+
+struct ReportData {
+  std::string scene, environment;
+  int vertices = 0;
+  std::vector<SweepRow> rows;
+  std::vector<ModeBaseline> baselines;
+  std::vector<LightRow> light;
+  int max_lmax = 0;
+  double bvh_seconds = 0;  ///< BVH build inside each sampled run (the fastest seen): a fixed cost
+  std::optional<GlossyStudy> glossy;  ///< with --material phong:N,KS (report_glossy.h)
+};
+
+/// The transport of `options`, timed: a run shorter than 0.05 s is repeated until the repeats
+/// together last that long, and `seconds` is the fastest repeat (the clock's resolution and
+/// scheduling noise then stay far below the times reported). `directions` gets the directions
+/// per vertex used, `bvh_seconds` (if given) the BVH build of the fastest run.
+Transport TimedTransport(const Mesh& mesh, const TransportOptions& options, double& seconds, int& directions,
+                         double* bvh_seconds = nullptr);
+
+/// Runs the whole sweep (minutes for the defaults; progress on the run summary).
+ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::string& env_spec,
+                          const ReportConfig& config, const RenderOptions& picture);
+
+}  // namespace prt

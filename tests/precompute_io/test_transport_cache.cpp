@@ -1,0 +1,118 @@
+// The transport cache must never be reused for other inputs: a stale cache is a silently wrong
+// picture. Its key covers every input of the transport, checked one input at a time, in the
+// library and through the binary (a run from the cache gives the very bytes of a run without).
+#include <doctest/doctest.h>
+
+#include <cstdio>
+#include <map>
+#include <set>
+#include <string>
+
+#include "core/atomic_file.h"
+#include "geometry/mesh_ops.h"
+#include "geometry/procedural.h"
+#include "io/obj_writer.h"
+#include "io/png_io.h"
+#include "precompute_io/transport_cache.h"
+#include "raster/image_diff.h"
+#include "tests/test_support.h"
+
+namespace prt {
+namespace {
+
+using test::Q;
+
+/// A sphere resting on a floor: concave, so samples, seeds and bounces all change its transport.
+Mesh SphereOnFloor(float radius) {
+  Mesh m = MakeSphere(10, radius, glm::vec3(0.0f, radius, 0.0f));
+  AppendMesh(m, MakePlane(4.0f, 4));
+  SetUniformAlbedo(m, glm::vec3(0.8f));
+  return m;
+}
+
+}  // namespace
+
+TEST_SUITE("precompute_io") {
+  TEST_CASE("cache key: every input of the transport changes it") {
+    const Mesh mesh = SphereOnFloor(1.0f);
+    const TransportOptions base;
+    std::map<std::string, std::uint64_t> keys;
+    keys["base"] = TransportKey(mesh, base);
+    CHECK(TransportKey(mesh, base) == keys["base"]);  // a function of its inputs only
+    const auto with = [&](const std::string& name, auto change) {
+      TransportOptions o = base;
+      Mesh m = mesh;
+      change(m, o);
+      keys[name] = TransportKey(m, o);
+    };
+    with("position", [](Mesh& m, TransportOptions&) { m.positions[5].y += 1e-6f; });
+    with("normal", [](Mesh& m, TransportOptions&) { m.normals[5].x += 1e-6f; });
+    with("albedo", [](Mesh& m, TransportOptions&) { m.albedo[5].z = 0.5f; });
+    with("triangle", [](Mesh& m, TransportOptions&) { std::swap(m.triangles[3][0], m.triangles[3][1]); });
+    with("mode", [](Mesh&, TransportOptions& o) { o.mode = TransportMode::kInterreflection; });
+    with("lmax", [](Mesh&, TransportOptions& o) { o.lmax = 3; });
+    with("samples", [](Mesh&, TransportOptions& o) { o.samples = 1025; });
+    with("sampler", [](Mesh&, TransportOptions& o) { o.sampler = Sampler::kStratified; });
+    with("bounces", [](Mesh&, TransportOptions& o) { o.bounces = 2; });
+    with("seed", [](Mesh&, TransportOptions& o) { o.seed = 2; });
+    with("tolerance", [](Mesh&, TransportOptions& o) { o.bounce_tolerance = 2e-4; });
+    with("direction sets", [](Mesh&, TransportOptions& o) { o.direction_sets = 63; });
+    std::set<std::uint64_t> distinct;
+    for (const auto& [name, key] : keys) {
+      CAPTURE(name);
+      CHECK(distinct.insert(key).second);
+    }
+  }
+
+  TEST_CASE("cache: a render from the cache is byte for byte a render without it, whatever input changed") {
+    const std::string dir = test::ScratchDir("cache_inputs");
+    for (const auto& [name, radius] : {std::pair{"scene.obj", 1.0f}, std::pair{"moved.obj", 1.05f}}) {
+      ObjPart part{"part", SphereOnFloor(radius), glm::vec3(0.7f, 0.5f, 0.3f)};
+      WriteFileAtomic(dir + "/" + name, FormatObj({part}, "scene.mtl"));
+      WriteFileAtomic(dir + "/scene.mtl", FormatMtl({part}));
+    }
+    // Options by name, so that a change replaces the base value (an option given twice is an error).
+    using Options = std::map<std::string, std::string>;
+    const Options base = {{"--mesh", Q(dir + "/scene.obj")}, {"--transport", "interreflection"},
+                          {"--samples", "64"}, {"--bounces", "1"}, {"--seed", "1"}, {"--direction-sets", "8"},
+                          {"--env", "sky"}, {"--exposure", "0"}, {"--ssaa", "1"}, {"--size", "48x36"},
+                          {"--frames", "1"}, {"--eye", "3,3,5"}, {"--target", "0,0.8,0"}, {"--lmax", "2"}};
+    const auto line = [](const Options& options) {
+      std::string text;
+      for (const auto& [name, value] : options) text += " " + name + " " + value;
+      return text;
+    };
+    const std::string cache = dir + "/transport.cache";
+    const auto frame = [&](const Options& options, const std::string& cache_option) {
+      const std::string out = dir + "/out";
+      const auto r = test::RunPrt("render" + line(options) + " --cache " + cache_option + " --out " + Q(out));
+      CAPTURE(line(options));
+      CAPTURE(r.err);
+      REQUIRE(r.exit_code == 0);
+      return ReadPng(out + "/frame_0000.png");
+    };
+    // The cache is used when nothing changed.
+    frame(base, Q(cache));
+    const auto again = test::RunPrt("render" + line(base) + " --cache " + Q(cache) + " --out " + Q(dir + "/again"));
+    CHECK(again.exit_code == 0);
+    CHECK(again.err.find("transport: taken from the cache") != std::string::npos);
+    const Options changes = {
+        {"--mesh", Q(dir + "/moved.obj")}, {"--albedo", "0.2,0.5,0.9"}, {"--transport", "shadowed"},
+        {"--lmax", "3"}, {"--samples", "96"}, {"--sampler", "stratified"}, {"--bounces", "2"}, {"--seed", "2"},
+        {"--direction-sets", "3"},
+    };
+    for (const auto& [option, value] : changes) {
+      Options changed = base;
+      changed[option] = value;
+      frame(base, Q(cache));  // the cache holds the base transport again
+      const Image8 cached = frame(changed, Q(cache));
+      const Image8 fresh = frame(changed, "none");
+      CAPTURE(option);
+      CHECK(CompareImages(cached, fresh).differing_pixels == 0);
+      // and the change matters at all, so the comparison above can fail
+      CHECK(CompareImages(fresh, frame(base, "none")).differing_pixels > 0);
+    }
+  }
+}
+
+}  // namespace prt

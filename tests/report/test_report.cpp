@@ -1,0 +1,181 @@
+// prt reference and prt report: the stability cases, the plot, and the files the commands write.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/atomic_file.h"
+#include "env/procedural.h"
+#include "raster/plot.h"
+#include "report/report_auto_lmax.h"
+#include "report/stability.h"
+#include "tests/test_support.h"
+
+namespace {
+
+using prt::test::Q;
+
+/// Count of pixels that are not pure white.
+std::size_t Inked(const prt::Image8& im) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < im.rgb.size(); i += 3) n += (im.rgb[i] != 255 || im.rgb[i + 1] != 255 || im.rgb[i + 2] != 255);
+  return n;
+}
+
+}  // namespace
+
+TEST_SUITE("report") {
+  TEST_CASE("stability: every stiff and extreme case meets this test's own limit") {
+    // The limits are the test's, not the report's: a case whose figure drifts, or whose limit or
+    // pass flag is loosened in the code, fails here. Each limit is the promise its case makes,
+    // with the figure measured on this machine for scale.
+    struct Limit {
+      double lo, hi;  // figure must lie in [lo, hi]
+    };
+    const double inf = std::numeric_limits<double>::infinity();
+    const std::map<std::string, Limit> limits = {
+        {"orthonormality_lmax32", {0, 1e-12}},           // measured 1.7e-14
+        {"orthonormality_lmax64", {0, 1e-12}},           // 3.6e-14
+        {"rotation_equivariance_lmax32", {0, 1e-12}},    // 1.0e-14
+        {"rotation_equivariance_lmax64", {0, 1e-11}},    // 2.3e-14
+        {"rotation_equivariance_lmax100", {0, 1e-11}},   // 5.0e-14
+        {"rotation_equivariance_lmax200", {0, 1e-11}},   // 1.0e-13
+        {"rotation_orthogonality_lmax32", {0, 1e-12}},   // 8.9e-16
+        {"rotation_orthogonality_lmax64", {0, 1e-12}},   // 1.1e-15
+        {"rotation_orthogonality_lmax100", {0, 1e-12}},  // 1.2e-15
+        {"rotation_orthogonality_lmax200", {0, 1e-12}},  // 2.6e-15
+        {"basis_finite_lmax200", {1, 1}},                // 1 = finite everywhere
+        {"hdr_sun_peak_over_mean", {1e4, inf}},          // 4.3e4: the case is as stiff as it says
+        {"sun_1e5_peak_over_mean", {1e5, inf}},          // 2.1e5
+        {"ringing_lmax8_none", {-1e-3, 0}},              // -2.3e-4: unwindowed, the sun rings
+        {"ringing_lmax8_hann", {-1e-3, 1}},              // -1.4e-5
+        {"ringing_lmax8_lanczos", {-1e-3, 1}},           // -3.2e-5
+        // --window auto: nowhere negative, and not far above zero either (a window stronger than
+        // needed would lift the minimum): figures 1.7e-7 .. 7e-9 of the peak.
+        {"window_auto_lmax2", {0, 1e-5}},
+        {"window_auto_lmax4", {0, 1e-5}},
+        {"window_auto_lmax8", {0, 1e-5}},
+        {"window_auto_lmax16", {0, 1e-5}},
+        {"window_auto_sun1e5_lmax8", {0, 1e-5}},
+        {"window_auto_sun1e5_lmax64", {0, 1e-5}},
+        {"convex_scale_0.0001", {0, 0}},                 // shadowed == unshadowed exactly
+        {"convex_scale_10000", {0, 0}},
+        {"rotation_36000_frames", {0, 1e-12}},           // 3.4e-15
+        {"sum_1e6_compensated", {0, 1e-12}},             // 0
+        {"extreme_mesh_shadowed", {0, 0}},               // no NaN, no bound broken
+        {"extreme_mesh_interreflection", {0, 0}},
+        {"deep_well_albedo_0.99_64_bounces", {0.5, 1.01}},  // 0.95: energy neither created nor lost
+        {"bad_texels", {0, 0}},                          // no non-finite coefficient
+        // No value not finite, no vertex below the bound its bands imply beyond the noise allowance,
+        // and lmax 2 keeps too little of the lobe (0.9%) for no warning.
+        {"glossy_n1000_lmax2", {0, 0}},
+    };
+    const auto cases = prt::RunStabilityCases();
+    std::set<std::string> seen;
+    for (const auto& c : cases) {
+      INFO(c.name << ": " << c.figure << " (" << c.note << ")");
+      seen.insert(c.name);
+      const auto limit = limits.find(c.name);
+      REQUIRE_MESSAGE(limit != limits.end(), "a case this test has no limit for: add one");
+      CHECK(std::isfinite(c.figure));
+      CHECK(c.figure >= limit->second.lo);
+      CHECK(c.figure <= limit->second.hi);
+      // The report's own verdict agrees with its figure and limit.
+      CHECK(c.pass == (c.at_least ? c.figure >= c.limit : c.figure <= c.limit));
+      CHECK(!c.checks.empty());
+    }
+    CHECK(seen.size() == limits.size());  // every case ran, once
+    const std::string csv = prt::StabilityCsv(cases);
+    CHECK(csv.find("rotation_36000_frames") != std::string::npos);
+  }
+
+  TEST_CASE("--lmax auto: the smallest band count whose irradiance error is within the tolerance") {
+    const auto furnace = prt::MakeFurnace(1.0);
+    CHECK(prt::ChooseLmax(*furnace, 1e-6, 64).lmax == 0);  // constant light: band 0 is all of it
+    const auto sky = prt::MakeSky(prt::SkyParams{});
+    const prt::AutoLmax loose = prt::ChooseLmax(*sky, 0.1, 64), tight = prt::ChooseLmax(*sky, 0.01, 64);
+    CHECK(loose.error <= 0.1);
+    CHECK(tight.error <= 0.01);
+    CHECK(tight.lmax > loose.lmax);
+    CHECK(prt::ChooseLmax(*sky, 0.01, tight.lmax - 1).error > 0.01);  // one band fewer is not enough
+  }
+
+  TEST_CASE("plot: axes, lines and legend are drawn, points that log axes cannot show are skipped") {
+    // Series a is y = 1e-4 / x: a straight falling line on log-log axes. Series b has one point
+    // a log axis can show (x = 0 and y < 0 are skipped): no line, only its legend entry.
+    prt::PlotSeries a{"a", {1e-3, 1e-2, 1e-1}, {1e-1, 1e-2, 1e-3}, prt::PlotColor(0), false};
+    prt::PlotSeries b{"b", {0.0, 1e-2, 1.0}, {1.0, -1.0, 1e-2}, prt::PlotColor(1), true};
+    prt::PlotOptions o;
+    o.title = "t", o.x_label = "x", o.y_label = "y";
+    const prt::Image8 im = prt::DrawLogLogPlot({a, b}, o);
+    REQUIRE(im.width == o.width);
+    REQUIRE(im.height == o.height);
+    const auto pixels_of = [](const prt::Image8& image, const glm::vec3& colour) {
+      std::vector<std::pair<int, int>> at;
+      const glm::ivec3 c = glm::ivec3(glm::round(colour * 255.0f));
+      for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+          if (prt::test::PixelAt(image, x, y) == c) at.emplace_back(x, y);
+      return at;
+    };
+    const auto line_a = pixels_of(im, a.color), line_b = pixels_of(im, b.color);
+    CAPTURE(line_a.size());
+    CAPTURE(line_b.size());
+    REQUIRE(line_a.size() > 200);
+    CHECK(line_b.size() > 0);               // b's legend entry
+    CHECK(line_b.size() < line_a.size() / 2);  // but no line of its own
+    // a's pixels (its legend swatch, a short horizontal line, aside) fall on one straight line
+    // going down to the right: pixel y grows linearly with pixel x.
+    double sx = 0, sy = 0, sxx = 0, syy = 0, sxy = 0, n = 0;
+    for (const auto& [x, y] : line_a) {
+      if (x > im.width * 3 / 4) continue;  // the legend is on the right
+      sx += x, sy += y, sxx += double(x) * x, syy += double(y) * y, sxy += double(x) * y, ++n;
+    }
+    const double correlation = (n * sxy - sx * sy) / std::sqrt((n * sxx - sx * sx) * (n * syy - sy * sy));
+    CHECK(correlation > 0.99);
+    CHECK(Inked(im) > 2000);
+    const prt::Image8 empty = prt::DrawLogLogPlot({}, o);
+    CHECK(Inked(empty) > 0);  // axes even without data
+    CHECK(pixels_of(empty, a.color).empty());
+  }
+
+  TEST_CASE("prt reference and prt report --stability write their files") {
+    const std::string dir = prt::test::ScratchDir("report_cli");
+    const auto ref = prt::test::RunPrt("reference --env furnace:0.5 --transport unshadowed --reference-samples 16 "
+                                       "--size 64x48 --quiet --out " + Q(dir + "/ref"));
+    CHECK(ref.exit_code == 0);
+    CHECK(std::filesystem::exists(dir + "/ref/reference.png"));
+    // The vertex count (the demo scene's), then R G B per vertex. Unshadowed under a constant
+    // light C each vertex reflects albedo * C * (its estimate of the cosine integral, 1): the
+    // channels keep the albedo's ratios exactly (0.7 grey ground, 0.80/0.38/0.20 knot), and the
+    // estimates average to C. Measured: mean 0.49969, standard error 0.00024 (16 samples).
+    std::istringstream text(prt::ReadFile(dir + "/ref/reference.txt"));
+    std::size_t count = 0;
+    text >> count;
+    CHECK(count == 33985);
+    std::size_t rows = 0, other = 0;
+    double sum = 0.0;
+    constexpr double kRatio = 1e-6;  // the file's 9 significant digits, with room
+    for (double r, g, b; text >> r >> g >> b; ++rows) {
+      if (std::abs(r - g) <= kRatio * r && std::abs(g - b) <= kRatio * r) sum += r / 0.7;
+      else if (std::abs(r / 0.80 - g / 0.38) <= kRatio * r && std::abs(r / 0.80 - b / 0.20) <= kRatio * r) sum += r / 0.80;
+      else ++other;
+    }
+    CHECK(rows == count);
+    CHECK(other == 0);
+    CHECK(std::abs(sum / double(rows) - 0.5) < 0.002);  // 8 standard errors
+    const auto stab = prt::test::RunPrt("report --stability --quiet --out " + Q(dir + "/stab"));
+    CHECK(stab.exit_code == 0);
+    CHECK(prt::ReadFile(dir + "/stab/stability.csv").find(",pass,") != std::string::npos);
+    const auto bad = prt::test::RunPrt("report --quick");
+    CHECK(bad.exit_code == 2);  // --out is required
+  }
+}
