@@ -61,8 +61,8 @@ void ReadVideoOptions(Args& args, RenderOptions& o, const RenderOptions& d) {
     args.Fail("--video: H.264 in '" + v + "' needs an even frame size, not " + std::to_string(o.width) + "x" +
               std::to_string(o.height) + " (expected even --size values, or a .png or .webm video)");
   if (IsRunOutputName(v, o))
-    args.Fail("--video: '" + v + "' is the name of one of the run's own outputs in " + o.out +
-              " (expected another name, such as turn.png)");
+    args.Fail("--video: '" + v + "' is the name of one of the run's own outputs (a frame, the transport cache or the "
+              "--vertex-radiance file; expected another name, such as turn.png)");
   std::error_code ec;
   if (fs::is_directory(v, ec)) throw Error(v + ": is a folder (expected a file name for --video)");
   if (*format != VideoFormat::kApng)
