@@ -18,6 +18,7 @@
 #include "core/child_process.h"
 #include "geometry/procedural.h"
 #include "io/obj_writer.h"
+#include "render/render_frames.h"
 
 namespace prt::test {
 namespace fs = std::filesystem;
@@ -121,6 +122,8 @@ bool KillWhenFileAppears(int pid, const std::string& path) {
   ::waitpid(pid, &status, 0);
   return appeared && WIFSIGNALED(status);
 }
+
+std::string FramePath(const std::string& dir, int i, int count) { return dir + "/" + FrameName(i, count); }
 
 RunResult RunPrt(const std::string& arguments) { return RunCommand(ShellQuote(PrtBinary()) + " " + arguments); }
 

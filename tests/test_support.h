@@ -71,6 +71,9 @@ std::string WriteFloorAndWall(const std::string& dir, const glm::vec3& floor_kd,
 std::size_t FloorTriangles();
 std::size_t WallTriangles();
 
+/// Frame i of a run of `count` frames in `dir`, named as render names it (FrameName).
+std::string FramePath(const std::string& dir, int i, int count);
+
 /// Pixel (x, y) of an 8-bit image as integers.
 glm::ivec3 PixelAt(const Image8& image, int x, int y);
 

@@ -5,6 +5,7 @@
 #include <regex>
 
 #include "core/error.h"
+#include "core/log.h"  // SecondsSince
 #include "core/text.h"
 #include "video/apng_writer.h"
 #include "video/ffmpeg_encoder.h"
@@ -13,32 +14,25 @@ namespace prt {
 namespace fs = std::filesystem;
 namespace {
 
-/// The folder `path` is in, made absolute and normal (it need not exist yet).
+/// The resolved folder the file `path` lies in (the file itself is not resolved: a link named
+/// there is written there).
 fs::path FolderOf(const std::string& path) {
-  std::error_code ec;
-  fs::path parent = fs::path(path).parent_path();
-  if (parent.empty()) parent = ".";
-  fs::path normal = fs::weakly_canonical(fs::absolute(parent, ec), ec);
-  return ec ? fs::absolute(parent).lexically_normal() : normal;
+  return ResolvedPath((fs::path(path).parent_path() / "x").string()).parent_path();
 }
 
-/// True if the two paths name the same file (which need not exist yet).
-bool SamePath(const std::string& a, const std::string& b) {
-  return FolderOf(a) == FolderOf(b) && fs::path(a).filename() == fs::path(b).filename();
-}
+/// True if the file `path` lies directly in the folder `dir` (neither need exist yet).
+bool InsideFolder(const std::string& path, const std::string& dir) { return FolderOf(path) == FolderOf(dir + "/x"); }
 
 /// True if `file` names an output the run writes itself: a frame or a file of prt's own in the
 /// output folder, the transport cache, the --vertex-radiance file.
 bool IsRunOutputName(const std::string& file, const RenderOptions& o) {
   const std::string name = fs::path(file).filename().string();
   static const std::regex frame("frame_[0-9]+\\.png", std::regex::icase);
-  if (FolderOf(file) == FolderOf(o.out + "/x") && (std::regex_match(name, frame) || name.rfind(".prt", 0) == 0))
-    return true;
+  if (InsideFolder(file, o.out) && (std::regex_match(name, frame) || name.rfind(".prt", 0) == 0)) return true;
   const std::string cache = o.cache.empty() ? o.out + "/transport.cache" : o.cache;
-  return (o.cache != "none" && SamePath(file, cache)) || (!o.vertex_radiance.empty() && SamePath(file, o.vertex_radiance));
+  return (o.cache != "none" && ResolvedPath(file) == ResolvedPath(cache)) ||
+         (!o.vertex_radiance.empty() && ResolvedPath(file) == ResolvedPath(o.vertex_radiance));
 }
-
-bool InsideFolder(const std::string& file, const std::string& dir) { return FolderOf(file) == FolderOf(dir + "/x"); }
 
 }  // namespace
 
@@ -94,7 +88,7 @@ std::string RenderVideo::Finish() {
   writer_->Finish();
   if (outside_) outside_->Commit();
   const VideoSpec& s = writer_->spec();
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = SecondsSince(t0);
   return Formatted("video: %s, %s of %d frames of %dx%d at %g fps (%.2f s%s) [%.3f s after the last frame]",
                    path_.c_str(), VideoFormatName(s.format), s.frames, s.width, s.height, s.fps, s.frames / s.fps,
                    s.format == VideoFormat::kApng ? ", looping" : "", seconds);

@@ -64,6 +64,17 @@ std::string WriteProblem(const std::string& path, int error) {
   }
 }
 
+int WriteAll(int fd, std::string_view bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return n < 0 ? errno : EIO;
+    done += static_cast<std::size_t>(n);
+  }
+  return 0;
+}
+
 void WriteFileAtomic(const std::string& path, const std::string& bytes) {
   WriteFileAtomic(path, std::vector<std::string_view>{bytes});
 }
@@ -73,19 +84,7 @@ void WriteFileAtomic(const std::string& path, const std::vector<std::string_view
   const int fd = ::open(file.temp_path().c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw Error(path + ": cannot write (" + WriteProblem(path, errno) + ")");
   int error = 0;
-  for (std::size_t p = 0; p < parts.size() && error == 0; ++p) {
-    const std::string_view bytes = parts[p];
-    std::size_t done = 0;
-    while (done < bytes.size()) {
-      const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) {
-        error = n < 0 ? errno : EIO;
-        break;
-      }
-      done += static_cast<std::size_t>(n);
-    }
-  }
+  for (std::size_t p = 0; p < parts.size() && error == 0; ++p) error = WriteAll(fd, parts[p]);
   // close() reports delayed write errors (full disks on network file systems among them).
   if (::close(fd) != 0 && error == 0) error = errno;
   if (error != 0) throw Error(path + ": cannot write (" + WriteProblem(path, error) + ")");

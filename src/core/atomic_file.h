@@ -41,6 +41,10 @@ void WriteFileAtomic(const std::string& path, const std::string& bytes);
 /// cache, transfer matrices) are never copied into one buffer first.
 void WriteFileAtomic(const std::string& path, const std::vector<std::string_view>& parts);
 
+/// Writes all of `bytes` to the file descriptor `fd`, retrying short writes and EINTR. Returns 0,
+/// or the errno of the write that failed (EIO for a write that wrote nothing).
+int WriteAll(int fd, std::string_view bytes);
+
 /// Why writing into `path` failed with `error` (an errno value), in the user's terms: the
 /// folder does not exist (or is a file), exists but takes no new files (ENOENT from /proc and
 /// the like), is not writable (permission denied, read-only file system), the disk is full, or

@@ -14,6 +14,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "core/atomic_file.h"  // WriteAll
 #include "core/error.h"
 
 extern char** environ;
@@ -139,14 +140,7 @@ ChildProcess::~ChildProcess() {
 bool ChildProcess::Write(std::string_view bytes) {
   if (input_ < 0) return false;
   SigpipeBlocked blocked;
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(input_, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
+  return WriteAll(input_, bytes) == 0;
 }
 
 int ChildProcess::Wait() {

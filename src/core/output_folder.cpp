@@ -105,24 +105,19 @@ bool OutputFolder::Wrote(const std::string& name) {
   return staged_.count(name) != 0 || in_place_.count(name) != 0;
 }
 
-namespace {
-
-// `path` absolute, symbolic links resolved as far as it exists, normalised.
-fs::path Resolved(const std::string& path) {
+fs::path ResolvedPath(const std::string& path) {
   std::error_code ec;
   const fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
   return p.lexically_normal();
 }
 
-}  // namespace
-
 void OutputFolder::KeepInput(const std::string& path) {
   std::lock_guard<std::mutex> lock(mutex_);
-  inputs_.push_back(Resolved(path).string());
+  inputs_.push_back(ResolvedPath(path).string());
 }
 
 bool OutputFolder::IsInput(const std::string& name) const {
-  const std::string p = Resolved(dir_ + "/" + name).string();
+  const std::string p = ResolvedPath(dir_ + "/" + name).string();
   for (const std::string& input : inputs_)
     if (p == input || (p.size() > input.size() && p.compare(0, input.size(), input) == 0 && p[input.size()] == '/'))
       return true;

@@ -22,6 +22,7 @@
 /// The commands name every file they write through Output() or OutputInPlace() before writing
 /// it.
 
+#include <filesystem>
 #include <mutex>
 #include <set>
 #include <string>
@@ -32,6 +33,10 @@ namespace prt {
 /// Creates `dir` and its missing parents. Throws Error naming `dir` and the cause (a file in
 /// the way, permission denied, ...) when it cannot.
 void CreateFolder(const std::string& dir);
+
+/// `path` made absolute, its symbolic links resolved as far as it exists, normalised: two paths
+/// name the same file exactly when their resolved paths are equal (neither need exist yet).
+std::filesystem::path ResolvedPath(const std::string& path);
 
 /// Creates the folder a file `path` is to be written into, if missing (see CreateFolder).
 void CreateParentFolder(const std::string& path);

@@ -8,14 +8,10 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "io/png_chunks.h"
 #include "io/png_writer_zlib.h"
 
 namespace prt {
-namespace {
-
-constexpr unsigned char kPngSignature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
-
-}  // namespace
 
 std::string EncodePng(const Image8& image, int level) {
   if (image.width <= 0 || image.height <= 0 ||
@@ -35,8 +31,8 @@ void WritePng(const std::string& path, const Image8& image) {
 }
 
 Image8 DecodePng(const std::string& bytes, const std::string& name) {
-  if (bytes.size() < sizeof kPngSignature ||
-      std::memcmp(bytes.data(), kPngSignature, sizeof kPngSignature) != 0)
+  if (bytes.size() < sizeof kPngSignatureBytes ||
+      std::memcmp(bytes.data(), kPngSignatureBytes, sizeof kPngSignatureBytes) != 0)
     throw Error(name + ": not a PNG file (expected the PNG signature)");
   const auto* data = reinterpret_cast<const stbi_uc*>(bytes.data());
   const int size = static_cast<int>(std::min<std::size_t>(bytes.size(), 0x7fffffff));

@@ -6,7 +6,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include "core/atomic_file.h"  // WriteProblem
+#include "core/atomic_file.h"  // WriteAll, WriteProblem
 #include "core/error.h"
 #include "io/png_chunks.h"
 
@@ -49,13 +49,7 @@ ApngWriter::~ApngWriter() {
 }
 
 void ApngWriter::Write(const std::string& bytes) {
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const ssize_t n = ::write(fd_, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) throw Error(name_ + ": cannot write (" + WriteProblem(name_, n < 0 ? errno : ENOSPC) + ")");
-    done += static_cast<std::size_t>(n);
-  }
+  if (const int error = WriteAll(fd_, bytes)) throw Error(name_ + ": cannot write (" + WriteProblem(name_, error) + ")");
 }
 
 void ApngWriter::AddFrame(std::string_view png) {

@@ -33,9 +33,10 @@ struct ApngDelay {
 /// fps whose inverse has such a fraction: 30 -> 1/30, 29.97 -> 100/2997, 0.5 -> 2/1.
 ApngDelay ApngDelayOf(double fps);
 
-/// The highest frame rate of an animated PNG. Browsers play frames of 10 ms or less as if they
-/// lasted 100 ms (a rule inherited from GIF), so at 100 fps and above an animation would play
-/// ten times too slowly; 90 keeps frames at 11 ms or more.
+/// The highest frame rate of an animated PNG. Browsers are documented to play frames of 10 ms
+/// or less as if they lasted 100 ms (a rule inherited from GIF; not measured here), so at
+/// 100 fps and above an animation would play ten times too slowly; 90 keeps frames at 11 ms or
+/// more.
 constexpr double kApngMaxFps = 90.0;
 
 class ApngWriter {

@@ -11,8 +11,7 @@
 namespace prt {
 namespace {
 
-/// The encoder's threads: fixed, so the file is the same on every machine (x264 and libvpx give
-/// the same bytes for the same settings and thread count).
+/// The encoder's threads: fixed, so that prt's --threads does not reach the file (see the header).
 constexpr const char* kEncoderThreads = "4";
 
 /// A new empty file for ffmpeg's messages, in $TMPDIR or /tmp.
@@ -81,9 +80,10 @@ void FfmpegEncoder::Fail(const std::string& what) const {
   throw Error(name_ + ": " + what + (said.empty() ? "" : ": " + said) + " (expected ffmpeg to encode the frames)");
 }
 
-void FfmpegEncoder::AddFrame(const Image8& image) {
-  if (image.width != width_ || image.height != height_) throw Error(name_ + ": a frame of another size (internal)");
-  if (!child_->Write(std::string_view(reinterpret_cast<const char*>(image.rgb.data()), image.rgb.size()))) {
+void FfmpegEncoder::AddFrame(std::string_view rgb) {
+  if (rgb.size() != 3 * std::size_t(width_) * std::size_t(height_))
+    throw Error(name_ + ": a frame of another size (internal)");
+  if (!child_->Write(rgb)) {
     const int code = child_->Wait();
     Fail("ffmpeg stopped reading frames (exit " + std::to_string(code) + ")");
   }

@@ -10,15 +10,16 @@
 /// assume 709 for HD and would shift colours if the file were converted by BT.601 instead),
 /// H.264 at CRF 18 with the index at the front of the file (+faststart), or VP9 at CRF 30.
 /// H.264 4:2:0 needs even sizes, so an odd --size is refused for .mp4. The encoder runs with a
-/// fixed thread count, so its bytes depend on neither prt's --threads nor the machine's cores
-/// (they may change with ffmpeg's version: the PNG frames stay the reference).
+/// fixed thread count, not one taken from prt's --threads; an .mp4 made with --threads 1 and 2
+/// is the same file (tests/app/test_video_cli.cpp, on one machine). Other machines and ffmpeg
+/// versions were not compared: the PNG frames stay the reference.
 
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/child_process.h"
-#include "core/image.h"
 
 namespace prt {
 
@@ -48,8 +49,9 @@ class FfmpegEncoder {
   FfmpegEncoder(const FfmpegEncoder&) = delete;
   FfmpegEncoder& operator=(const FfmpegEncoder&) = delete;
 
-  /// Pipes the next frame (width x height). Throws Error with ffmpeg's last message if it stopped.
-  void AddFrame(const Image8& image);
+  /// Pipes the next frame: width x height 8-bit RGB, row by row. Throws Error with ffmpeg's last
+  /// message if it stopped.
+  void AddFrame(std::string_view rgb);
   /// Ends the input and waits for ffmpeg. Throws Error with its last message unless it exits 0.
   void Finish();
 

@@ -42,36 +42,32 @@ VideoWriter::VideoWriter(const VideoSpec& spec, const std::string& path, std::st
 
 VideoWriter::~VideoWriter() = default;
 
-void VideoWriter::Append(const Image8* image, const std::string* png) {
-  if (apng_) apng_->AddFrame(*png);
-  else ffmpeg_->AddFrame(*image);
+std::string_view VideoWriter::EncoderInput(const Image8& image, const std::string& png) const {
+  if (apng_) return png;
+  return {reinterpret_cast<const char*>(image.rgb.data()), image.rgb.size()};
+}
+
+void VideoWriter::Append(std::string_view input) {
+  if (apng_) apng_->AddFrame(input);
+  else ffmpeg_->AddFrame(input);
   ++next_;
 }
 
 void VideoWriter::AddFrame(int index, const Image8& image, const std::string& png) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (!failed_.empty()) throw Error(failed_);
-  if (index < next_ || waiting_png_.count(index) || waiting_image_.count(index))
-    throw Error(name_ + ": frame " + std::to_string(index) + " given twice (internal)");
+  if (index < next_ || waiting_.count(index)) throw Error(name_ + ": frame " + std::to_string(index) + " given twice (internal)");
   try {
     if (index != next_) {
-      // An earlier frame is still being encoded: keep only what this format needs.
-      if (apng_) waiting_png_.emplace(index, png);
-      else waiting_image_.emplace(index, image);
+      // An earlier frame is still being encoded.
+      waiting_.emplace(index, EncoderInput(image, png));
       return;
     }
-    Append(&image, &png);
+    Append(EncoderInput(image, png));
     // Then every waiting frame that now follows on.
-    while (true) {
-      if (auto p = waiting_png_.find(next_); p != waiting_png_.end()) {
-        Append(nullptr, &p->second);
-        waiting_png_.erase(p);
-      } else if (auto i = waiting_image_.find(next_); i != waiting_image_.end()) {
-        Append(&i->second, nullptr);
-        waiting_image_.erase(i);
-      } else {
-        break;
-      }
+    for (auto w = waiting_.find(next_); w != waiting_.end(); w = waiting_.find(next_)) {
+      Append(w->second);
+      waiting_.erase(w);
     }
   } catch (const Error& e) {
     failed_ = e.what();

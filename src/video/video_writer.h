@@ -6,14 +6,16 @@
 ///
 /// Frames are encoded on several threads and finish in any order; the writer takes each one as
 /// it finishes and appends them to the file strictly in frame order, holding a finished frame
-/// only until the frames before it have arrived (at most one per frame in flight). The file's
-/// bytes therefore depend on the frames alone, not on --threads.
+/// (only the bytes its encoder takes: the PNG file, or the raw RGB for ffmpeg) until the frames
+/// before it have arrived, so at most one per frame in flight. The file's bytes therefore
+/// depend on the frames alone, not on --threads.
 
 #include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "core/image.h"
 
@@ -60,7 +62,10 @@ class VideoWriter {
   const VideoSpec& spec() const { return spec_; }
 
  private:
-  void Append(const Image8* image, const std::string* png);
+  /// The bytes of `image` the encoder takes: its PNG file for an animated PNG, else raw RGB.
+  std::string_view EncoderInput(const Image8& image, const std::string& png) const;
+  /// Hands the next frame's encoder input to the encoder.
+  void Append(std::string_view input);
 
   VideoSpec spec_;
   std::string name_;
@@ -68,9 +73,8 @@ class VideoWriter {
   std::unique_ptr<FfmpegEncoder> ffmpeg_;
   std::mutex mutex_;
   int next_ = 0;  ///< the next frame to append
-  /// Finished frames waiting for an earlier one: the PNG (animated PNG) or the image (ffmpeg).
-  std::map<int, std::string> waiting_png_;
-  std::map<int, Image8> waiting_image_;
+  /// Finished frames waiting for an earlier one: their encoder input.
+  std::map<int, std::string> waiting_;
   std::string failed_;  ///< the first append's error, once one failed
 };
 

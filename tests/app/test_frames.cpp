@@ -14,7 +14,6 @@
 #include "io/png_io.h"
 #include "raster/image_diff.h"
 #include "raster/tonemap.h"
-#include "render/render_frames.h"
 #include "tests/env/env_test_util.h"
 #include "tests/test_support.h"
 
@@ -31,8 +30,6 @@ std::size_t CountGrey(const Image8& image, std::uint8_t value) {
   return n;
 }
 
-/// Frame i of a run of `count` frames in `dir`, named as render names it.
-std::string Frame(const std::string& dir, int i, int count) { return dir + "/" + FrameName(i, count); }
 
 /// Renders with `options` into a fresh folder named `name` and returns the folder.
 std::string Render(const std::string& name, const std::string& options) {
@@ -66,7 +63,7 @@ TEST_SUITE("app") {
     const std::string scene = test::QuickScene() +
                               " --albedo 0.25,0.25,0.25 --tonemap srgb --ssaa 1 --background black --frames 1 --size 48x48";
     for (int ev : {-1, 0, 1}) {
-      const Image8 image = ReadPng(Frame(Render("exposure", scene + " --exposure " + std::to_string(ev)), 0, 1));
+      const Image8 image = ReadPng(test::FramePath(Render("exposure", scene + " --exposure " + std::to_string(ev)), 0, 1));
       const std::uint8_t expected = EncodeSrgb8(0.25f * std::exp2(float(ev)));
       const std::uint8_t opposite = EncodeSrgb8(0.25f * std::exp2(float(-ev)));
       CAPTURE(ev);
@@ -83,14 +80,14 @@ TEST_SUITE("app") {
     const std::string eight = Render("frames8", scene + " --frames 8");
     for (int k = 0; k < 4; ++k) {
       CAPTURE(k);
-      const DiffMetrics same = CompareImages(ReadPng(Frame(four, k, 4)), ReadPng(Frame(eight, 2 * k, 8)));
+      const DiffMetrics same = CompareImages(ReadPng(test::FramePath(four, k, 4)), ReadPng(test::FramePath(eight, 2 * k, 8)));
       CHECK(same.differing_pixels == 0);
     }
     // Frame N-1 is a quarter turn short of the full turn (frame N would be frame 0 again).
-    CHECK(CompareImages(ReadPng(Frame(four, 3, 4)), ReadPng(Frame(four, 0, 4))).differing_pixels > 100);
+    CHECK(CompareImages(ReadPng(test::FramePath(four, 3, 4)), ReadPng(test::FramePath(four, 0, 4))).differing_pixels > 100);
     const std::string turned = Render("frames_quarter", scene + " --frames 4 --turns -1");
     // -pi/2 and 3 pi/2 differ in the last bits of their sines: a pixel may round the other way.
-    const DiffMetrics back = CompareImages(ReadPng(Frame(four, 3, 4)), ReadPng(Frame(turned, 1, 4)));
+    const DiffMetrics back = CompareImages(ReadPng(test::FramePath(four, 3, 4)), ReadPng(test::FramePath(turned, 1, 4)));
     CHECK(back.max_abs <= 1);
     CHECK(back.differing_pixels <= 4);
   }
@@ -104,7 +101,7 @@ TEST_SUITE("app") {
                               "--exposure 0 --ssaa 1 --background black --size 48x48 --frames 1 " +
                               "--eye -0.5,3,0.01 --target -0.5,0,0 --fov 20";
     for (const std::string mode : {"interreflection", "shadowed"}) {
-      const Image8 image = ReadPng(Frame(Render("bleeding_out", scene + " --transport " + mode), 0, 1));
+      const Image8 image = ReadPng(test::FramePath(Render("bleeding_out", scene + " --transport " + mode), 0, 1));
       std::size_t covered = 0, green_is_blue = 0;
       double red_excess = 0.0;
       for (std::size_t p = 0; p < image.rgb.size(); p += 3) {
@@ -137,7 +134,7 @@ TEST_SUITE("app") {
     const std::string out_a = Render("channels_out_a", "--mesh " + Q(a + "/scene.obj") + " --env " + Q(a + "/cube") + options);
     const std::string out_b = Render("channels_out_b", "--mesh " + Q(b + "/scene.obj") + " --env " + Q(b + "/cube") + options);
     for (int i = 0; i < 2; ++i) {
-      const Image8 image_a = ReadPng(Frame(out_a, i, 2)), image_b = ReadPng(Frame(out_b, i, 2));
+      const Image8 image_a = ReadPng(test::FramePath(out_a, i, 2)), image_b = ReadPng(test::FramePath(out_b, i, 2));
       REQUIRE(image_a.rgb.size() == image_b.rgb.size());
       std::size_t differing = 0, coloured = 0;
       for (std::size_t p = 0; p < image_a.rgb.size(); p += 3) {

@@ -6,15 +6,17 @@
 // refused before any work; a failing encoder fails the run without a partial video.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "core/atomic_file.h"
 #include "core/output_folder.h"
 #include "io/png_io.h"
-#include "render/render_frames.h"
+#include "raster/image_diff.h"
 #include "tests/test_support.h"
 #include "tests/video/apng_test_reader.h"
 #include "video/apng_writer.h"
@@ -54,24 +56,19 @@ std::string Probe(const std::string& file, const std::string& entry) {
   return out;
 }
 
-/// Every frame of `file` decoded by ffmpeg to 8-bit RGB, concatenated.
-std::string DecodeWithFfmpeg(const std::string& file) {
+/// Every frame of `file` decoded by ffmpeg to 8-bit RGB images of `width` x `height`.
+std::vector<Image8> DecodeWithFfmpeg(const std::string& file, int width, int height) {
   const auto r = test::RunCommand(Q(*test::Ffmpeg()) + " -v error -i " + Q(file) + " -f rawvideo -pix_fmt rgb24 -");
   REQUIRE(r.exit_code == 0);
-  return r.out;
+  const std::size_t size = 3 * std::size_t(width) * std::size_t(height);
+  REQUIRE(r.out.size() % size == 0);
+  std::vector<Image8> frames;
+  for (std::size_t at = 0; at < r.out.size(); at += size) {
+    Image8& frame = frames.emplace_back(width, height);
+    std::copy(r.out.begin() + std::ptrdiff_t(at), r.out.begin() + std::ptrdiff_t(at + size), frame.rgb.begin());
+  }
+  return frames;
 }
-
-/// Frame i's bytes in a concatenation of `n`-byte frames.
-std::string Slice(const std::string& frames, int i, std::size_t n) { return frames.substr(std::size_t(i) * n, n); }
-
-double MeanAbs(const std::string& a, const std::vector<std::uint8_t>& b) {
-  REQUIRE(a.size() == b.size());
-  double sum = 0;
-  for (std::size_t k = 0; k < b.size(); ++k) sum += std::abs(int(static_cast<unsigned char>(a[k])) - int(b[k]));
-  return sum / double(b.size());
-}
-
-std::string Frame(const std::string& dir, int i, int count) { return dir + "/" + FrameName(i, count); }
 
 }  // namespace
 
@@ -89,13 +86,13 @@ TEST_SUITE("app") {
       CAPTURE(i);
       CHECK(apng.frames[std::size_t(i)].delay_num == 1);
       CHECK(apng.frames[std::size_t(i)].delay_den == 12);
-      const Image8 png = ReadPng(Frame(dir + "/frames", i, n));
+      const Image8 png = ReadPng(test::FramePath(dir + "/frames", i, n));
       const Image8 decoded = DecodePng(test::FrameAsPng(apng, std::size_t(i)), "frame");
       CHECK(decoded.width == 64);
       CHECK(decoded.height == 48);
       CHECK(decoded.rgb == png.rgb);
     }
-    CHECK(ReadPng(Frame(dir + "/frames", 0, n)).rgb != ReadPng(Frame(dir + "/frames", 3, n)).rgb);  // frames differ
+    CHECK(ReadPng(test::FramePath(dir + "/frames", 0, n)).rgb != ReadPng(test::FramePath(dir + "/frames", 3, n)).rgb);  // frames differ
     // One thread: the same bytes.
     Render(kScene + "--frames 6 --fps 12 --threads 1 --out " + Q(dir + "/one") + " --video " + Q(dir + "/one.apng"));
     CHECK(ReadFile(dir + "/one.apng") == bytes);
@@ -111,13 +108,11 @@ TEST_SUITE("app") {
     CHECK(Probe(dir + "/turn.png", "stream=width") == "64");
     CHECK(Probe(dir + "/turn.png", "stream=height") == "48");
     CHECK(Probe(dir + "/turn.png", "stream=avg_frame_rate") == "25/1");
-    const std::string frames = DecodeWithFfmpeg(dir + "/turn.png");
-    const std::size_t size = 64 * 48 * 3;
-    REQUIRE(frames.size() == n * size);
+    const std::vector<Image8> frames = DecodeWithFfmpeg(dir + "/turn.png", 64, 48);
+    REQUIRE(frames.size() == n);
     for (int i = 0; i < n; ++i) {
       CAPTURE(i);
-      const Image8 png = ReadPng(Frame(dir, i, n));
-      CHECK(Slice(frames, i, size) == std::string(png.rgb.begin(), png.rgb.end()));
+      CHECK(frames[std::size_t(i)].rgb == ReadPng(test::FramePath(dir, i, n)).rgb);
     }
   }
 
@@ -133,12 +128,11 @@ TEST_SUITE("app") {
     CHECK(Probe(mp4, "stream=color_range") == "tv");
     CHECK(Probe(mp4, "stream=nb_read_frames") == "8");
     CHECK(Probe(mp4, "stream=avg_frame_rate") == "24/1");
-    const std::string frames = DecodeWithFfmpeg(mp4);
-    const std::size_t size = 64 * 48 * 3;
-    REQUIRE(frames.size() == n * size);
+    const std::vector<Image8> frames = DecodeWithFfmpeg(mp4, 64, 48);
+    REQUIRE(frames.size() == n);
     for (int i = 0; i < n; ++i) {
       CAPTURE(i);
-      CHECK(MeanAbs(Slice(frames, i, size), ReadPng(Frame(dir, i, n)).rgb) < kLossyMeanAbs);
+      CHECK(CompareImages(frames[std::size_t(i)], ReadPng(test::FramePath(dir, i, n))).mean_abs < kLossyMeanAbs);
     }
     // The encoder's bytes do not follow prt's threads.
     Render(kScene + "--frames 8 --fps 24 --threads 1 --out " + Q(dir + "/one") + " --video " + Q(dir + "/one/turn.mp4"));
@@ -155,13 +149,12 @@ TEST_SUITE("app") {
       CAPTURE(ext);
       Render(flat + " --video " + Q(dir + "/flat." + ext));
       const Image8 png = ReadPng(dir + "/frame_0000.png");
-      const std::string frames = DecodeWithFfmpeg(dir + "/flat." + ext);
-      REQUIRE(frames.size() == 2 * png.rgb.size());
+      const std::vector<Image8> frames = DecodeWithFfmpeg(dir + "/flat." + ext, 32, 32);
+      REQUIRE(frames.size() == 2);
+      const glm::ivec3 back = test::PixelAt(frames[0], 16, 16), expected = test::PixelAt(png, 16, 16);
       for (int c = 0; c < 3; ++c) {
         CAPTURE(c);
-        const int centre = 3 * (16 * 32 + 16) + c;
-        CHECK(std::abs(int(static_cast<unsigned char>(frames[std::size_t(centre)])) - int(png.rgb[std::size_t(centre)])) <=
-              kFlatColourAbs);
+        CHECK(std::abs(back[c] - expected[c]) <= kFlatColourAbs);
       }
     }
     CHECK(Probe(dir + "/flat.webm", "stream=codec_name") == "vp9");

@@ -1,6 +1,7 @@
-// Drawing textured meshes: perspective-correct texture coordinates against ray casting, mip
-// filtering of a distant checker, the checker under the furnace reproduced exactly through the
-// command line, the bounce's albedo read from the texture, the cache key, and goldens.
+// Drawing textured meshes: perspective-correct texture coordinates against ray casting (also on
+// triangles the near plane cuts), mip filtering of a distant checker, the checker under the
+// furnace reproduced exactly through the command line, the bounce's albedo read from the texture,
+// the cache key, and goldens.
 #include <doctest/doctest.h>
 
 #include <cmath>
@@ -74,21 +75,23 @@ std::shared_ptr<const Texture> Checker(int n, int square, const glm::vec3& a, co
 
 }  // namespace
 
-TEST_CASE("textured raster: texture coordinates are perspective-correct (against a ray cast per pixel)") {
-  const Mesh m = TexturedFloor(Ramp(64));
-  Camera camera;
-  camera.eye = {0.f, 0.6f, 2.2f}, camera.target = {0.f, 0.f, 0.f}, camera.fov_deg = 60.f;
-  camera.near_plane = 0.1f, camera.far_plane = 10.f;
-  const int size = 64;
-  const RasterImage frame = DrawFloor(m, camera, size);
+/// Pixels of `frame` (drawn by `camera`) whose texture coordinates differ from a ray cast to
+/// the floor by more than kPerspectiveTolerance; `compared` counts the pixels checked: those
+/// showing the floor beyond the near plane, away from the coordinates' wrap.
+int WrongTexturePixels(const RasterImage& frame, const Camera& camera, int size, int& compared) {
   const ViewRays rays = MakeViewRays(camera, 1.f);
-  int compared = 0, wrong = 0;
+  const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
+  int wrong = 0;
+  compared = 0;
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) {
       const float s = static_cast<float>(size);
       const glm::vec3 d = rays.Direction((float(x) + 0.5f) / s * 2 - 1, 1 - (float(y) + 0.5f) / s * 2);
       if (d.y >= 0.f) continue;
       const glm::vec3 p = camera.eye + (-camera.eye.y / d.y) * d;
+      if (std::fabs(p.x) > 1.f || std::fabs(p.z) > 1.f) continue;  // beside the floor
+      // Clipped away (in front of the near plane), or at its edge, where pixel centres straddle it.
+      if (glm::dot(p - camera.eye, forward) < 1.05f * camera.near_plane) continue;
       const glm::vec2 uv((p.x + 1) / 2, (1 - p.z) / 2);
       // Away from the wrap: coordinates repeat, so the coarse levels blend the ramp's two ends.
       if (uv.x < 0.15f || uv.x > 0.85f || uv.y < 0.15f || uv.y > 0.85f) continue;
@@ -96,8 +99,31 @@ TEST_CASE("textured raster: texture coordinates are perspective-correct (against
       const glm::vec3 c = frame.image.at(x, y);
       wrong += std::fabs(c.x - uv.x) > kPerspectiveTolerance || std::fabs(c.y - uv.y) > kPerspectiveTolerance;
     }
+  return wrong;
+}
+
+TEST_CASE("textured raster: texture coordinates are perspective-correct (against a ray cast per pixel)") {
+  const Mesh m = TexturedFloor(Ramp(64));
+  Camera camera;
+  camera.eye = {0.f, 0.6f, 2.2f}, camera.target = {0.f, 0.f, 0.f}, camera.fov_deg = 60.f;
+  camera.near_plane = 0.1f, camera.far_plane = 10.f;
+  const int size = 64;
+  int compared = 0;
+  CHECK(WrongTexturePixels(DrawFloor(m, camera, size), camera, size, compared) == 0);
   CHECK(compared > 300);
-  CHECK(wrong == 0);
+}
+
+TEST_CASE("textured raster: triangles cut by the near plane keep their texture coordinates") {
+  // The eye stands low over the floor looking along it: the floor's triangles reach behind the
+  // near plane, so every drawn pixel comes from a clipped polygon.
+  const Mesh m = TexturedFloor(Ramp(64));
+  Camera camera;
+  camera.eye = {0.f, 0.3f, 0.6f}, camera.target = {0.f, 0.f, -1.f}, camera.fov_deg = 60.f;
+  camera.near_plane = 0.6f, camera.far_plane = 10.f;
+  const int size = 64;
+  int compared = 0;
+  CHECK(WrongTexturePixels(DrawFloor(m, camera, size), camera, size, compared) == 0);
+  CHECK(compared > 300);
 }
 
 TEST_CASE("textured raster: a distant fine checker is filtered to its mean (mip levels), not aliased") {
