@@ -31,9 +31,9 @@ void Print(const std::string& key, const std::string& value);
 /// The processor's model name (/proc/cpuinfo), "unknown" where it cannot be read.
 std::string CpuModel();
 
-/// Prints what the numbers below depend on: the CPU model, the widest instruction set it runs,
-/// the instruction set of each family of kernels as chosen for it at run time, and `threads`
-/// (0: all cores).
+/// Prints what the numbers below depend on: the CPU model, the instruction-set level the
+/// kernels use (the widest the CPU runs, or PRT_CPU_LEVEL's cap, which the line then names),
+/// the BVH traversal's instruction set, and `threads` (0: all cores).
 void PrintMachine(int threads);
 
 int BenchLight(Args& args);

@@ -59,9 +59,12 @@ std::string CpuModel() {
 
 void PrintMachine(int threads) {
   Print("cpu_model", CpuModel());
-  Print("cpu_vector_level", VectorLevelName(CpuVectorLevel()));
+  // The level every kernel choice uses (light projection, cube-map rows, tone mapping, the BVH).
+  std::string level = VectorLevelName(CpuVectorLevel());
+  if (CpuLevelCapped())
+    level += std::string(" (capped by PRT_CPU_LEVEL; this CPU runs ") + VectorLevelName(CpuMaxVectorLevel()) + ")";
+  Print("cpu_vector_level", level);
   Print("isa_bvh", IsaName(ActiveKernels().isa));
-  Print("isa_vectorized_loops", VectorizedLoopsName());
   SetThreadCount(threads);
   Print("threads", double(ThreadCount()));
 }

@@ -6,13 +6,18 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 what=${1:-demo}
 build=${PRT_BUILD_DIR:-build}
+case "$what" in
+  demo|test) ;;
+  *) echo "usage: bash scripts/quickstart.sh demo|test" >&2; exit 2 ;;
+esac
 
 bash scripts/install-deps.sh "$what"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" --parallel "$(nproc)"
 
+# Only what the command runs: the demo needs the program, the tests need everything.
 case "$what" in
-  demo) "$build/prt" demo ;;
-  test) ctest --test-dir "$build" --output-on-failure --no-tests=error --parallel "$(nproc)" ;;
-  *) echo "usage: bash scripts/quickstart.sh demo|test" >&2; exit 2 ;;
+  demo) cmake --build "$build" --parallel "$(nproc)" --target prt
+        "$build/prt" demo ;;
+  test) cmake --build "$build" --parallel "$(nproc)"
+        ctest --test-dir "$build" --output-on-failure --no-tests=error --parallel "$(nproc)" ;;
 esac

@@ -109,18 +109,23 @@ int StartLongRender(const std::string& out, const std::string& size, const std::
   return pid;
 }
 
-bool KillWhenFileAppears(int pid, const std::string& path) {
+int SignalWhenFileAppears(int pid, const std::string& path, int sig) {
   bool appeared = false;
   for (int tries = 0; tries < 60000 && !appeared; ++tries) {
     appeared = fs::exists(path);
     int status = 0;
-    if (!appeared && ::waitpid(pid, &status, WNOHANG) == pid) return false;  // exited (and reaped)
+    if (!appeared && ::waitpid(pid, &status, WNOHANG) == pid) return -1;  // exited (and reaped)
     if (!appeared) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
-  ::kill(pid, SIGKILL);
+  ::kill(pid, sig);
   int status = 0;
   ::waitpid(pid, &status, 0);
-  return appeared && WIFSIGNALED(status);
+  return appeared ? status : -1;
+}
+
+bool KillWhenFileAppears(int pid, const std::string& path) {
+  const int status = SignalWhenFileAppears(pid, path, SIGKILL);
+  return status != -1 && WIFSIGNALED(status);
 }
 
 std::string FramePath(const std::string& dir, int i, int count) { return dir + "/" + FrameName(i, count); }

@@ -88,6 +88,10 @@ int StartLongRender(const std::string& out, const std::string& size, const std::
 /// it is not a time limit on prt.
 bool KillWhenFileAppears(int pid, const std::string& path);
 
+/// The same with the signal `sig` (SIGTERM, SIGINT: prt cleans up, then ends by the signal).
+/// Returns the child's wait status, or -1 if it exited before the file appeared.
+int SignalWhenFileAppears(int pid, const std::string& path, int sig);
+
 /// Runs a shell command line, capturing its stdout and stderr.
 RunResult RunCommand(const std::string& command);
 

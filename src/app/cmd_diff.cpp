@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "app/commands.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/output_folder.h"
 #include "io/png_io.h"
@@ -27,8 +28,8 @@ CommandSpec DiffSpec() {
              {"--min-psnr", "P", "smallest allowed PSNR in dB", "none"},
              {"--out", "DIFF.png",
               "also write an amplified difference image (identical pixels black, every difference at least 64/255 "
-              "bright, the largest at 255), a .png; its folder is created if missing; the result line is printed "
-              "first, even if this write fails",
+              "bright, the largest at 255), a .png, not A or B; its folder is created if missing; the result line is "
+              "printed first, even if this write fails",
               "none"},
              QuietOption()}}}};
 }
@@ -65,7 +66,13 @@ int Diff(const std::vector<std::string>& tokens) {
   const auto files = args.TakePositionals();
   args.Finish();
   if (files.size() != 2) args.Fail("expected two images, A.png B.png (got " + std::to_string(files.size()) + ")");
-  if (out) args.RequirePngName("--out", *out);
+  if (out) {
+    args.RequirePngName("--out", *out);
+    for (const std::string& input : files)
+      if (ResolvedPath(*out) == ResolvedPath(input))
+        args.Fail("--out: '" + *out + "' is one of the images compared (expected another name: the difference "
+                  "image would replace " + input + ")");
+  }
 
   const Image8 a = ReadPng(files[0]);
   const Image8 b = ReadPng(files[1]);
@@ -77,8 +84,11 @@ int Diff(const std::vector<std::string>& tokens) {
   std::printf("%s\n", FormatDiffMetrics(metrics).c_str());
   std::fflush(stdout);
   if (out) {
-    CreateParentFolder(*out);
+    CreatedFolders created;  // removed again if the write fails
+    created.CreateParentOf(*out);
+    AtomicFile::RemoveStale(*out);  // what a killed run left while writing it
     WritePng(*out, AmplifiedDifference(a, b));
+    created.Keep();
   }
   const std::string exceeded = Exceeded(metrics, limits);
   if (!exceeded.empty() && !quiet) {

@@ -34,10 +34,11 @@ Transport LuminanceMix(const Transport& t) {
 CommandSpec PrecomputeSpec() {
   RenderOptions no_out;
   no_out.out.clear();  // its help then says "required"
-  OptionGroup output = RenderOptionGroup(no_out, {"--out", "--cache"}, "output options");
+  OptionGroup output = RenderOptionGroup(no_out, {"--out", "--replace", "--cache"}, "output options");
   output.options.push_back(QuietOption());
-  output.options[0].help = "output folder, created if missing; one run at a time, and after a successful run it "
-                           "holds exactly that run's files";
+  output.options[0].help = "output folder, created if missing; one run at a time; after a successful run it holds "
+                           "this run's files, and what an earlier precompute wrote there and this one did not is "
+                           "removed (other commands' outputs and files prt did not write are never touched)";
   OptionGroup scene = SceneOptionGroup(SceneOptions{}, AllSceneOptionNames());
   for (auto& o : scene.options)
     if (o.name == "--max-edge")
@@ -66,6 +67,7 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
   const SceneOptions options = ReadSceneOptions(args);
   const auto out = args.String("--out");
   const std::string cache_option = args.String("--cache", "");
+  const bool replace = args.Flag("--replace");
   args.Finish();
   if (!out) args.Fail("--out DIR is required");
   if (options.max_edge > 0.0)
@@ -76,12 +78,18 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
          std::to_string(CoeffCount(options.lmax)) +
          " numbers per row, but the course's WebGL viewer reads exactly 9 (lmax 2) and draws garbage, without an "
          "error, from any other count");
-  OutputFolder folder(*out);
+  // A glossy material is exported as transfer matrices (any view).
+  const bool glossy = options.material.glossy;
+  OutputPlan plan{"precompute", {"light.txt", "transport.txt"}, replace};
+  if (glossy) plan.names.push_back("transfer_matrices.bin");
+  OutputFolder folder(*out, plan);
   const CachePlan cache = PlanCache(cache_option, &folder);
 
   const Mesh mesh = LoadSceneMesh(options, &folder);
-  // A glossy material is exported as transfer matrices (any view): memory checked first.
-  const bool glossy = options.material.glossy;
+  // Coloured interreflection writes one file per channel: known once the albedo is.
+  if (TransportChannels(mesh, TransportModeFromName(options.transport)) == 3)
+    folder.Plan({"transport_r.txt", "transport_g.txt", "transport_b.txt"});
+  // The memory of the transfer matrices is checked before the light is loaded.
   if (glossy) CheckMatrixMemory(mesh, options);
   const auto env = LoadSceneEnvironment(options, &folder);
   const ShRgb light = ComputeLight(*env, options);

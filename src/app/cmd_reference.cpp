@@ -16,7 +16,7 @@ namespace {
 
 const std::vector<std::string> kSceneNames = {"--mesh",    "--env",  "--transport", "--bounces",        "--albedo",
                                               "--material", "--seed", "--threads",   "--games202-faces", "--max-edge"};
-const std::vector<std::string> kPictureNames = {"--out", "--size", "--background", "--tonemap", "--exposure",
+const std::vector<std::string> kPictureNames = {"--out", "--replace", "--size", "--background", "--tonemap", "--exposure",
                                                 "--ssaa", "--eye", "--target", "--up", "--fov"};
 
 RenderOptions PictureDefaults() {
@@ -51,7 +51,7 @@ int RunReference(const std::vector<std::string>& tokens) {
   const RenderOptions render = CompleteRenderOptions(args, ReadRenderOptions(args, PictureDefaults()), scene);
   args.Finish();
   if (render.out.empty()) args.Fail("--out DIR is required");
-  OutputFolder folder(render.out);
+  OutputFolder folder(render.out, {"reference", {"reference.txt", "reference.png"}, render.replace});
 
   const Mesh mesh = LoadSceneMesh(scene, &folder);
   const Camera camera = SceneCamera(mesh, render);

@@ -35,7 +35,7 @@ CommandSpec ReportSpec() {
                        "run the stiff and extreme cases instead: DIR/stability.csv and DIR/report.md, pass/fail on "
                        "stderr; exit 1 if any fails",
                        ""},
-                      QuietOption()}};
+                      ReplaceOption(), QuietOption()}};
   OptionGroup scene = SceneOptionGroup(SceneOptions{}, {"--mesh", "--env", "--bounces", "--albedo", "--material",
                                                          "--seed", "--threads", "--games202-faces", "--max-edge"});
   scene.options[0].default_text = "a small torus knot on a 12 x 12 plane, about 2,700 vertices";
@@ -59,11 +59,16 @@ int RunReport(const std::vector<std::string>& tokens) {
   const auto out = args.String("--out");
   const bool quick = args.Flag("--quick");
   const bool stability = args.Flag("--stability");
+  const bool replace = args.Flag("--replace");
   const int max_samples = args.Int("--max-samples", quick ? 256 : 16384, 16, 1 << 20);
   const int max_lmax = args.Int("--max-lmax", quick ? 4 : 8, 1, 32);
   args.Finish();
   if (!out) args.Fail("--out DIR is required");
-  OutputFolder folder(*out);
+  OutputPlan plan{"report", {"report.md"}, replace};
+  if (stability) plan.names.push_back("stability.csv");
+  else plan.names.insert(plan.names.end(), {"report.csv", "error_vs_time.png"});
+  if (!stability && scene.material.glossy) plan.names.push_back("glossy_error_vs_lmax.png");
+  OutputFolder folder(*out, plan);
 
   if (stability) {
     const std::vector<StabilityCase> cases = RunStabilityCases();

@@ -35,20 +35,23 @@ CommandSpec SampleFilesSpec() {
           "equirectangular Radiance HDR), DIR/sky_cubemap/ (the same sky as six 128x128 .hdr faces posx ... negz, "
           "standard layout) and DIR/scene.obj with DIR/scene.mtl (a red torus knot, 7,680 triangles, standing on a "
           "grey ground that is one 8 x 8 quad).",
-          {{"options", {{"--out", "DIR", "output folder, created if missing", "out/samples"}, QuietOption()}}}};
+          {{"options", {{"--out", "DIR", "output folder, created if missing", "out/samples"}, ReplaceOption(), QuietOption()}}}};
 }
 
 int RunSampleFiles(const std::vector<std::string>& tokens) {
   Args args("sample-files", tokens, SampleFilesSpec());
   const std::string out = args.String("--out", "out/samples");
+  const bool replace = args.Flag("--replace");
   SetQuiet(args.Flag("--quiet"));
   args.Finish();
-  OutputFolder folder(out);
+  OutputFolder folder(out, {"sample-files", {"sky.hdr", "scene.obj", "scene.mtl"}, replace});
   const auto sky = MakeSky(SkyParams{});
   const auto radiance = [&sky](const glm::dvec3& d) { return sky->Radiance(d); };
   WriteFileAtomic(folder.Output("sky.hdr"), EncodeHdr(EquirectImage(radiance, 1024, 512)));
   {
-    OutputFolder cube(out + "/sky_cubemap");
+    std::vector<std::string> faces_names;
+    for (const char* face : kFaceNames) faces_names.push_back(std::string(face) + ".hdr");
+    OutputFolder cube(out + "/sky_cubemap", {"sample-files", faces_names, replace});
     const auto faces = CubemapFaceImages(radiance, 128);
     for (int f = 0; f < 6; ++f) WriteFileAtomic(cube.Output(std::string(kFaceNames[f]) + ".hdr"), EncodeHdr(faces[f]));
     FinishOutputs(cube);

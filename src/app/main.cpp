@@ -1,7 +1,9 @@
 /// \file
 /// Entry point: finds the command, prints its help for `--help` or `-h`, runs it, and turns
-/// every error into one line on stderr and an exit code (0 success, 1 failure, 2 usage).
-/// Nothing below app/ prints usage or exits.
+/// every error into one line on stderr and an exit code (0 success, 1 failure, 2 usage, 75 an
+/// output folder in use by another run: try again). Nothing below app/ prints usage or exits.
+/// First of all, SIGINT, SIGTERM and SIGHUP are handed to the cleanup of temporary files
+/// (core/signal_cleanup.h).
 
 #include <cstdio>
 #include <exception>
@@ -11,9 +13,13 @@
 
 #include "app/commands.h"
 #include "core/error.h"
+#include "core/output_folder.h"  // FolderBusy
+#include "core/signal_cleanup.h"
+#include "core/simd.h"  // CheckCpuLevelRequest
 
 int main(int argc, char** argv) {
   using namespace prt;
+  InstallSignalCleanup();  // before any thread starts
   const std::vector<std::string> all(argv + 1, argv + argc);
   if (all.empty()) {
     std::fprintf(stderr, "prt: error: no command given (see prt help)\n");
@@ -40,11 +46,15 @@ int main(int argc, char** argv) {
     return 0;
   }
   try {
+    CheckCpuLevelRequest();  // PRT_CPU_LEVEL: refused before any work when unknown or unrunnable
     return command->run(tokens);
   } catch (const UsageError& e) {
     const std::string about = e.command().empty() ? name : e.command();
     std::fprintf(stderr, "prt: error: %s (see prt help%s)\n", e.what(), about == "help" ? "" : (" " + about).c_str());
     return 2;
+  } catch (const FolderBusy& e) {
+    std::fprintf(stderr, "prt: error: %s\n", e.what());
+    return kExitFolderBusy;
   } catch (const Error& e) {
     std::fprintf(stderr, "prt: error: %s\n", e.what());
     return 1;

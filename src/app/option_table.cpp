@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <sstream>
 
 #include "core/text.h"
@@ -119,6 +120,30 @@ std::string NearestName(const std::string& given, const std::vector<std::string>
   return best_distance <= limit ? best : std::string();
 }
 
+std::string NearestPath(const std::string& given) {
+  namespace fs = std::filesystem;
+  constexpr std::size_t kMaxEntries = 10000;  // a folder larger than this is not searched
+  std::error_code ec;
+  fs::path path;  // the corrected path so far, as the user spelled it
+  for (const fs::path& part : fs::path(given)) {
+    fs::path next = path / part;
+    if (!fs::exists(next, ec) && !part.empty() && part != "." && part != "..") {
+      const fs::path folder = path.empty() ? fs::path(".") : path;
+      if (!fs::is_directory(folder, ec)) return "";
+      std::vector<std::string> names;
+      for (const auto& entry : fs::directory_iterator(folder, ec)) {
+        if (names.size() >= kMaxEntries) return "";
+        names.push_back(entry.path().filename().string());
+      }
+      const std::string near = NearestName(part.string(), names);
+      if (near.empty()) return "";
+      next = path / near;
+    }
+    path = next;
+  }
+  return path != fs::path(given) && fs::exists(path, ec) ? path.string() : "";
+}
+
 std::string UnknownMessage(const std::string& given, const std::string& what,
                            const std::vector<std::string>& candidates) {
   const std::string near = NearestName(given, candidates);
@@ -134,6 +159,13 @@ OptionGroup PickOptions(const std::map<std::string, OptionSpec>& specs, const st
 
 std::string VecText(const glm::dvec3& v) {
   return Formatted("%g", v.x) + "," + Formatted("%g", v.y) + "," + Formatted("%g", v.z);
+}
+
+OptionSpec ReplaceOption() {
+  return {"--replace", "",
+          "replace files in the output folder that prt did not write and that this run writes, keeping each as "
+          "NAME.orig (without it such a file stops the run before any work)",
+          ""};
 }
 
 OptionSpec QuietOption() { return {"--quiet", "", "no progress, warnings or run summary on stderr (errors are still printed)", ""}; }

@@ -53,6 +53,11 @@ std::string FormatHelp(const CommandSpec& spec);
 /// a third of the length, and never more than 3.
 std::string NearestName(const std::string& given, const std::vector<std::string>& candidates);
 
+/// For a path that does not exist, the existing path nearest to it: each missing part replaced
+/// by the nearest name in its folder (NearestName: a typo, another case), as long as the result
+/// exists; "" when there is none (`.../cubemap/Gracecathedral` -> `.../cubemap/GraceCathedral`).
+std::string NearestPath(const std::string& given);
+
 /// "--x: unknown option" with " (did you mean --y?)" when a near name exists.
 std::string UnknownMessage(const std::string& given, const std::string& what,
                            const std::vector<std::string>& candidates);
@@ -66,5 +71,7 @@ std::string VecText(const glm::dvec3& v);
 
 /// The `--quiet` option every command accepts.
 OptionSpec QuietOption();
+/// `--replace`: the output folder's files that prt did not write may be replaced (kept as NAME.orig).
+OptionSpec ReplaceOption();
 
 }  // namespace prt

@@ -143,12 +143,14 @@ CachePlan PlanCache(const std::string& option, OutputFolder* folder) {
   if (!fs::exists(dir, ec)) return skip("folder '" + dir.string() + "' does not exist");
   if (!fs::is_directory(dir, ec)) return skip("'" + dir.string() + "' is a file, not a folder");
   // What is there already is replaced only when it is prt's: a cache (however damaged) at any
-  // path, anything at the output folder's own cache name; an empty file. Never a device, pipe
-  // or socket, never another file given as --cache (a typo must not cost the user a file).
+  // path, anything prt listed at the output folder's own cache name; an empty file. Never a
+  // device, pipe or socket, never another file (a typo must not cost the user a file).
   const fs::file_status link = fs::symlink_status(path, ec);
   if (fs::exists(link)) {
     if (!fs::is_regular_file(fs::status(path, ec))) return skip("is not a regular file: left alone");
-    if (given && fs::file_size(path, ec) > 0 && !StartsLikeTransportCache(path))
+    // In the output folder, a file prt listed as its own may be replaced whatever it holds.
+    const bool listed = !given && !folder->IsForeign("transport.cache");
+    if (!listed && fs::file_size(path, ec) > 0 && !StartsLikeTransportCache(path))
       return skip("exists and is not a prt transport cache: left as it is");
     if (fs::is_symlink(link)) {
       Warn(what + "is a symbolic link: the cache is read if it matches, but never replaced");
@@ -237,11 +239,18 @@ void CheckMatrixMemory(const Mesh& mesh, const SceneOptions& options) {
 }
 
 void FinishOutputs(OutputFolder& folder) {
-  const std::vector<std::string> removed = folder.Finish();
-  if (removed.empty()) return;
-  Summary("outputs: removed " + std::to_string(removed.size()) + " file" + (removed.size() > 1 ? "s" : "") +
-          " an earlier run wrote in " + folder.dir() + " and this one did not (" + removed.front() +
-          (removed.size() > 1 ? " ... " + removed.back() : "") + ")");
+  const OutputFolder::Finished f = folder.Finish();
+  const auto names = [](const std::vector<std::string>& v) {
+    return v.front() + (v.size() > 2 ? " ... " + v.back() : v.size() == 2 ? ", " + v.back() : "");
+  };
+  if (!f.kept_as_orig.empty())
+    Summary("outputs: replaced " + std::to_string(f.kept_as_orig.size()) + " file" +
+            (f.kept_as_orig.size() > 1 ? "s" : "") + " prt did not write in " + folder.dir() +
+            " (--replace), kept as " + names(f.kept_as_orig));
+  if (!f.removed.empty())
+    Summary("outputs: removed " + std::to_string(f.removed.size()) + " file" + (f.removed.size() > 1 ? "s" : "") +
+            " an earlier run of this command wrote in " + folder.dir() + " and this one did not (" +
+            f.removed.front() + (f.removed.size() > 1 ? " ... " + f.removed.back() : "") + ")");
 }
 
 }  // namespace prt

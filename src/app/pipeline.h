@@ -82,7 +82,8 @@ Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, c
 void CheckMatrixMemory(const Mesh& mesh, const SceneOptions& options);
 
 /// Ends a successful run's use of `folder` (OutputFolder::Finish): removes what an earlier run
-/// wrote there and this one did not, and says so on the run summary.
+/// of the same command wrote there and this one did not, keeps the files prt did not write that
+/// --replace replaced as NAME.orig, and says so on the run summary.
 void FinishOutputs(OutputFolder& folder);
 
 /// The whole main job: the output folder (render.out), mesh, camera, light, transport, frames,

@@ -30,9 +30,11 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
        std::to_string(d.frames)});
   add({"--size", "WxH", "frame size in pixels, each 1..16384", std::to_string(d.width) + "x" + std::to_string(d.height)});
   add({"--out", "DIR",
-       "output folder, created if missing; one run at a time, and after a successful run it holds exactly that "
-       "run's outputs (older prt outputs it did not rewrite are removed, other files are never touched)",
+       "output folder, created if missing; one run at a time; after a successful run it holds this run's outputs, "
+       "and what earlier runs of this command wrote and this one did not is removed (other commands' outputs and "
+       "files prt did not write are never touched)",
        d.out.empty() ? "required" : d.out});
+  add(ReplaceOption());
   add({"--axis", "X,Y,Z", "rotation axis of the light", VecText(d.axis) + ", world up"});
   add({"--turns", "T", "full turns of the light over all frames, -1e6..1e6", Formatted("%g", double(d.turns))});
   add({"--background", "B", "env | black | R,G,B (linear, each >= 0): env draws the environment, turning with the light",
@@ -85,11 +87,11 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
   return s;
 }
 
-/// WxH, each from 1 to 16384.
+/// WxH, each from 1 to 16384 (640x480 or 640X480).
 void ReadSize(Args& args, RenderOptions& o) {
   const auto size = args.String("--size");
   if (!size) return;
-  const auto x = size->find('x');
+  const auto x = size->find_first_of("xX");
   const auto w = ParseNumber(size->substr(0, x)), h = x == std::string::npos ? std::nullopt : ParseNumber(size->substr(x + 1));
   if (!w || !h || std::floor(*w) != *w || std::floor(*h) != *h)
     args.Fail("--size: '" + *size + "' is not a size (expected WxH, each from 1 to 16384)");
@@ -154,7 +156,7 @@ void ReadCamera(Args& args, RenderOptions& o) {
 
 const std::vector<std::string>& AllRenderOptionNames() {
   static const std::vector<std::string> names = {
-      "--frames", "--size",     "--out",  "--axis", "--turns",  "--background", "--tonemap", "--exposure",
+      "--frames", "--size",     "--out",  "--replace", "--axis", "--turns",  "--background", "--tonemap", "--exposure",
       "--ssaa",   "--view",     "--eye",  "--target", "--up",   "--fov",        "--orbit",
       "--vertex-radiance", "--video", "--fps", "--cache"};
   return names;
@@ -171,6 +173,7 @@ RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
   if (has("--frames")) o.frames = args.Int("--frames", d.frames, 1, 100000);
   if (has("--size")) ReadSize(args, o);
   if (has("--out")) o.out = args.String("--out", d.out);
+  if (has("--replace")) o.replace = args.Flag("--replace");
   if (has("--axis")) {
     if (const auto axis = args.Vec3("--axis")) {
       if (glm::length(*axis) < 1e-12)
@@ -227,6 +230,13 @@ RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
 }
 
 RenderOptions CompleteRenderOptions(Args& args, RenderOptions o, const SceneOptions& scene) {
+  // A file the run writes must not be one it reads.
+  const std::pair<const char*, const std::string*> written[] = {{"--video", &o.video}, {"--vertex-radiance", &o.vertex_radiance}};
+  for (const auto& [option, file] : written)
+    for (const std::string& input : {scene.mesh, scene.texture, scene.env})
+      if (!file->empty() && !input.empty() && ResolvedPath(*file) == ResolvedPath(input))
+        args.Fail(std::string(option) + ": '" + *file + "' is an input of this run (expected another name: the run would "
+                  "replace " + input + ")");
   if (o.view == "transport" && o.transport_index >= CoeffCount(scene.lmax))
     args.Fail("--view: transport:" + std::to_string(o.transport_index) + " is out of range (expected 0 to " +
               std::to_string(CoeffCount(scene.lmax) - 1) + " for lmax " + std::to_string(scene.lmax) + ")");

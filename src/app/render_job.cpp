@@ -10,6 +10,7 @@
 #include "core/text.h"
 #include "precompute/shade.h"
 #include "precompute_io/transport_txt.h"
+#include "render/render_frames.h"
 
 namespace prt {
 namespace {
@@ -36,12 +37,26 @@ void NoteForeignFrames(OutputFolder& folder) {
             (n > 1 ? "them)" : "it)"));
 }
 
+/// What a render writes into its folder, known before any work: the frames, and the video and
+/// --vertex-radiance file when they lie in it.
+OutputPlan RenderPlan(const RenderOptions& r) {
+  OutputPlan plan{"render", {}, r.replace};
+  for (int i = 0; i < r.frames; ++i) plan.names.push_back(FrameName(i, r.frames));
+  for (const std::string& file : {r.video, r.vertex_radiance})
+    if (!file.empty() && LiesIn(file, r.out)) plan.names.push_back(std::filesystem::path(file).filename().string());
+  return plan;
+}
+
 /// Frame 0's per-vertex radiance toward the camera (its light not turned), as RenderFrames
-/// shades it, to `path` (precompute_io/transport_txt.h).
+/// shades it, to the --vertex-radiance file `path`: one of the folder's outputs when it lies
+/// there, else written beside it under a temporary name (precompute_io/transport_txt.h).
 void WriteVertexRadiance(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Camera& camera,
-                         const std::string& path) {
+                         const std::string& path, OutputFolder& folder) {
   const glm::dvec3 eye(camera.eye);
-  WriteFileAtomic(path, FormatVertexRadianceTxt(mesh, ShadeVertices(mesh, transport, FirstBands(light, transport.lmax), true, &eye)));
+  const bool inside = LiesIn(path, folder.dir());
+  if (!inside) AtomicFile::RemoveStale(path);  // what a killed run left while writing it
+  const std::string write = inside ? folder.Output(std::filesystem::path(path).filename().string()) : path;
+  WriteFileAtomic(write, FormatVertexRadianceTxt(mesh, ShadeVertices(mesh, transport, FirstBands(light, transport.lmax), true, &eye)));
   Summary("vertex radiance: frame 0's linear RGB radiance of " + std::to_string(mesh.vertex_count()) +
           " vertices toward the camera, three rows per face, in " + path);
 }
@@ -49,7 +64,7 @@ void WriteVertexRadiance(const Mesh& mesh, const Transport& transport, const ShR
 }  // namespace
 
 void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
-  OutputFolder folder(render.out);
+  OutputFolder folder(render.out, RenderPlan(render));
   const CachePlan cache = PlanCache(render.cache, &folder);
 
   // Mesh and camera first: a camera that cannot see is refused before any light is loaded.
@@ -66,7 +81,7 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
   const auto env = LoadSceneEnvironment(scene, &folder);
   const ShRgb light = ComputeLight(*env, scene);
   const Transport transport = ComputeSceneTransport(mesh, scene, cache, &camera, matrices);
-  if (!render.vertex_radiance.empty()) WriteVertexRadiance(mesh, transport, light, camera, render.vertex_radiance);
+  if (!render.vertex_radiance.empty()) WriteVertexRadiance(mesh, transport, light, camera, render.vertex_radiance, folder);
   const AxisRotation rotation(render.axis, transport.lmax);
   Summary("rotation: " + rotation.Describe() + "; only the " + std::to_string(CoeffCount(transport.lmax)) +
           " coefficients the transport has are turned");

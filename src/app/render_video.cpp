@@ -14,21 +14,12 @@ namespace prt {
 namespace fs = std::filesystem;
 namespace {
 
-/// The resolved folder the file `path` lies in (the file itself is not resolved: a link named
-/// there is written there).
-fs::path FolderOf(const std::string& path) {
-  return ResolvedPath((fs::path(path).parent_path() / "x").string()).parent_path();
-}
-
-/// True if the file `path` lies directly in the folder `dir` (neither need exist yet).
-bool InsideFolder(const std::string& path, const std::string& dir) { return FolderOf(path) == FolderOf(dir + "/x"); }
-
 /// True if `file` names an output the run writes itself: a frame or a file of prt's own in the
 /// output folder, the transport cache, the --vertex-radiance file.
 bool IsRunOutputName(const std::string& file, const RenderOptions& o) {
   const std::string name = fs::path(file).filename().string();
   static const std::regex frame("frame_[0-9]+\\.png", std::regex::icase);
-  if (InsideFolder(file, o.out) && (std::regex_match(name, frame) || name.rfind(".prt", 0) == 0)) return true;
+  if (LiesIn(file, o.out) && (std::regex_match(name, frame) || name.rfind(".prt", 0) == 0)) return true;
   const std::string cache = o.cache.empty() ? o.out + "/transport.cache" : o.cache;
   return (o.cache != "none" && ResolvedPath(file) == ResolvedPath(cache)) ||
          (!o.vertex_radiance.empty() && ResolvedPath(file) == ResolvedPath(o.vertex_radiance));
@@ -70,10 +61,11 @@ RenderVideo::RenderVideo(const RenderOptions& o, OutputFolder& folder) : path_(o
   spec.width = o.width, spec.height = o.height, spec.frames = o.frames, spec.fps = o.fps;
   spec.ffmpeg = o.ffmpeg;
   std::string write_path;
-  if (InsideFolder(o.video, folder.dir())) {
+  if (LiesIn(o.video, folder.dir())) {
     write_path = folder.Output(fs::path(o.video).filename().string());
   } else {
-    CreateParentFolder(o.video);
+    created_.CreateParentOf(o.video);
+    AtomicFile::RemoveStale(o.video);  // what a killed run left while writing it
     outside_ = std::make_unique<AtomicFile>(o.video);
     write_path = outside_->temp_path();
   }
@@ -87,6 +79,7 @@ std::string RenderVideo::Finish() {
   const auto t0 = std::chrono::steady_clock::now();
   writer_->Finish();
   if (outside_) outside_->Commit();
+  created_.Keep();
   const VideoSpec& s = writer_->spec();
   const double seconds = SecondsSince(t0);
   return Formatted("video: %s, %s of %d frames of %dx%d at %g fps (%.2f s%s) [%.3f s after the last frame]",

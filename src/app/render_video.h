@@ -41,6 +41,7 @@ class RenderVideo {
 
  private:
   std::string path_;                    ///< the user's name
+  CreatedFolders created_;              ///< the video's folders this run made (removed if it fails)
   std::unique_ptr<AtomicFile> outside_;  ///< the temporary file of a video outside the folder
   std::unique_ptr<VideoWriter> writer_;
 };

@@ -83,6 +83,12 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
   return s;
 }
 
+/// "did you mean PATH? " for the existing path nearest to `path` (NearestPath), or "".
+std::string DidYouMean(const std::string& path) {
+  const std::string near = NearestPath(path);
+  return near.empty() ? "" : "did you mean " + near + "? ";
+}
+
 /// Refuses --mesh and --env values that name nothing or cannot be read, before any of them is
 /// loaded: the mesh file exists; a cubemap folder has its six faces, square and of one size (from
 /// their headers); a built-in's parameters parse. A path that does not exist is a failure (exit
@@ -91,12 +97,14 @@ void CheckInputs(Args& args, const SceneOptions& o) {
   namespace fs = std::filesystem;
   std::error_code ec;
   if (!o.mesh.empty()) {
-    if (!fs::exists(o.mesh, ec)) throw Error(o.mesh + ": no such file (expected an OBJ mesh for --mesh)");
+    if (!fs::exists(o.mesh, ec)) throw Error(o.mesh + ": no such file (" + DidYouMean(o.mesh) + "expected an OBJ mesh for --mesh)");
     if (fs::is_directory(o.mesh, ec)) throw Error(o.mesh + ": is a directory (expected an OBJ file for --mesh)");
   }
   if (!o.texture.empty()) {
     if (o.mesh.empty()) args.Fail("--texture: needs --mesh (an OBJ with texture coordinates; the demo scene has none)");
     if (o.albedo) args.Fail("--texture and --albedo both set the albedo (expected one of them)");
+    if (!fs::exists(o.texture, ec))
+      throw Error(o.texture + ": no such file (" + DidYouMean(o.texture) + "expected an image for --texture)");
     int width = 0, height = 0;
     ImageSize(o.texture, width, height);  // exists, is an image, and of a size prt accepts
   }
@@ -110,8 +118,8 @@ void CheckInputs(Args& args, const SceneOptions& o) {
   if (std::find(builtins.begin(), builtins.end(), name) == builtins.end()) {
     const std::string near = NearestName(name, builtins);
     if (o.env.find_first_of("/.") != std::string::npos || near.empty())
-      throw Error(o.env + ": no such file, folder or built-in environment (expected a cubemap folder, an "
-                          "equirectangular .hdr/.exr/.png/.jpg file, or one of furnace, sky)");
+      throw Error(o.env + ": no such file, folder or built-in environment (" + DidYouMean(o.env) +
+                  "expected a cubemap folder, an equirectangular .hdr/.exr/.png/.jpg file, or one of furnace, sky)");
     args.Fail("--env: '" + o.env + "': no such file, folder or built-in environment (did you mean " + near + "?)");
   }
   try {

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include "core/error.h"
@@ -23,6 +24,7 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   const std::string name = "." + p.filename().string() + ".tmp" + std::to_string(::getpid()) +
                            "_" + std::to_string(counter++);
   temp_ = (p.parent_path() / name).string();
+  cleanup_ = CleanupOnSignal(temp_, CleanupKind::kFile);  // before anything creates the file
 }
 
 bool AtomicFile::IsTemporaryName(const std::string& name, long* pid) {
@@ -33,6 +35,30 @@ bool AtomicFile::IsTemporaryName(const std::string& name, long* pid) {
   return true;
 }
 
+bool AtomicFile::ProcessGone(long pid) {
+  return pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
+}
+
+int AtomicFile::RemoveStale(const std::string& path) {
+  const fs::path p(path);
+  const std::string prefix = "." + p.filename().string() + ".tmp";
+  fs::path folder = p.parent_path();
+  if (folder.empty()) folder = ".";
+  int removed = 0;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    long maker = 0;
+    if (name.compare(0, prefix.size(), prefix) != 0 || !IsTemporaryName(name, &maker)) continue;
+    // The rest after the prefix must be exactly <pid>_<n>: `.a.png.tmp1_0` is not a.png.tmp's.
+    if (name.find('_', prefix.size()) == std::string::npos ||
+        name.substr(prefix.size(), name.find('_', prefix.size()) - prefix.size()) != std::to_string(maker))
+      continue;
+    if (ProcessGone(maker) && fs::remove(entry.path(), ec)) ++removed;
+  }
+  return removed;
+}
+
 AtomicFile::~AtomicFile() {
   if (!committed_) std::remove(temp_.c_str());
 }
@@ -40,6 +66,7 @@ AtomicFile::~AtomicFile() {
 void AtomicFile::Commit() {
   if (std::rename(temp_.c_str(), path_.c_str()) != 0) throw Error(path_ + ": cannot write (" + WriteProblem(path_, errno) + ")");
   committed_ = true;
+  cleanup_.Release();
 }
 
 std::string WriteProblem(const std::string& path, int error) {

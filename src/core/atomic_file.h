@@ -8,9 +8,12 @@
 #include <string_view>
 #include <vector>
 
+#include "core/signal_cleanup.h"
+
 namespace prt {
 
-/// A temporary file beside `path`, renamed to `path` by Commit() and removed if never committed.
+/// A temporary file beside `path`, renamed to `path` by Commit() and removed if never committed
+/// (also when SIGINT, SIGTERM or SIGHUP stops the run: core/signal_cleanup.h).
 class AtomicFile {
  public:
   explicit AtomicFile(std::string path);
@@ -24,12 +27,18 @@ class AtomicFile {
   /// True if `name` (a file name without folder) is one of these temporary files,
   /// `.<name>.tmp<pid>_<n>`; `pid` then receives the process that made it.
   static bool IsTemporaryName(const std::string& name, long* pid = nullptr);
+  /// Removes the temporary files of `path` (`.<name>.tmp<pid>_<n>` beside it) whose process is
+  /// gone: what a run killed by SIGKILL left while writing `path`. Returns how many.
+  static int RemoveStale(const std::string& path);
+  /// True if process `pid` no longer exists (and is not this one).
+  static bool ProcessGone(long pid);
   /// Renames the temporary file over the destination. Throws Error on failure.
   void Commit();
 
  private:
   std::string path_;
   std::string temp_;
+  CleanupOnSignal cleanup_;  ///< the temporary file, removed if a signal stops the run
   bool committed_ = false;
 };
 

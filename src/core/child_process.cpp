@@ -37,6 +37,24 @@ int ExitCode(int status) {
   return -1;
 }
 
+/// The child starts with the signal mask the process had before prt blocked SIGINT, SIGTERM
+/// and SIGHUP for its cleanup thread (core/signal_cleanup.h), so Ctrl-C reaches it too.
+class SpawnAttributes {
+ public:
+  SpawnAttributes() {
+    posix_spawnattr_init(&attr_);
+    sigset_t mask;
+    ChildSignalMask(&mask);
+    posix_spawnattr_setsigmask(&attr_, &mask);
+    posix_spawnattr_setflags(&attr_, POSIX_SPAWN_SETSIGMASK);
+  }
+  ~SpawnAttributes() { posix_spawnattr_destroy(&attr_); }
+  const posix_spawnattr_t* get() const { return &attr_; }
+
+ private:
+  posix_spawnattr_t attr_;
+};
+
 int Reap(pid_t pid) {
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0)
@@ -93,7 +111,8 @@ ProgramResult RunProgram(const std::vector<std::string>& argv) {
   posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
   pid_t pid = -1;
   auto args = ArgvPointers(argv);
-  const int failed = posix_spawn(&pid, argv[0].c_str(), &actions, nullptr, args.data(), environ);
+  SpawnAttributes attributes;
+  const int failed = posix_spawn(&pid, argv[0].c_str(), &actions, attributes.get(), args.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   ::close(out[1]);
   if (failed == 0) {
@@ -119,7 +138,14 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
   posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
   posix_spawn_file_actions_adddup2(&actions, 1, 2);
   auto args = ArgvPointers(argv);
-  const int failed = posix_spawn(&pid_, argv[0].c_str(), &actions, nullptr, args.data(), environ);
+  SpawnAttributes attributes;
+  // Started and registered in one step: a signal kills and reaps the child before the cleanup
+  // removes the file it writes.
+  int failed = 0;
+  cleanup_ = CleanupOnSignal::Spawn([&] {
+    failed = posix_spawn(&pid_, argv[0].c_str(), &actions, attributes.get(), args.data(), environ);
+    return failed == 0 ? pid_ : pid_t(-1);
+  });
   posix_spawn_file_actions_destroy(&actions);
   ::close(in[0]);
   if (failed != 0) {
@@ -135,6 +161,7 @@ ChildProcess::~ChildProcess() {
   ::kill(pid_, SIGKILL);
   if (input_ >= 0) ::close(input_);
   Reap(pid_);
+  cleanup_.Release();
 }
 
 bool ChildProcess::Write(std::string_view bytes) {
@@ -148,6 +175,7 @@ int ChildProcess::Wait() {
   if (input_ >= 0) ::close(input_);
   input_ = -1;
   const int code = Reap(pid_);
+  cleanup_.Release();
   pid_ = -1;
   return code;
 }

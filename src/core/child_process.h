@@ -16,6 +16,8 @@
 
 #include <sys/types.h>
 
+#include "core/signal_cleanup.h"
+
 namespace prt {
 
 /// The executable file `name` would run as, searched along $PATH as a shell does; empty when
@@ -50,6 +52,7 @@ class ChildProcess {
  private:
   pid_t pid_ = -1;
   int input_ = -1;  ///< the write end of the child's standard input
+  CleanupOnSignal cleanup_;  ///< a signal that stops prt kills the child first
 };
 
 /// The last non-empty line of the text file `path` (at most `limit` characters of it), or "" if

@@ -1,17 +1,16 @@
 #include "core/output_folder.h"
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
 
 #include <fcntl.h>
-#include <csignal>
 #include <sys/file.h>
 #include <unistd.h>
 
 #include "core/atomic_file.h"
-#include "core/error.h"
 
 namespace prt {
 namespace fs = std::filesystem;
@@ -37,8 +36,63 @@ void CreateParentFolder(const std::string& path) {
   if (!parent.empty()) CreateFolder(parent.string());
 }
 
-OutputFolder::OutputFolder(std::string dir) : dir_(std::move(dir)) {
-  CreateFolder(dir_);
+CreatedFolders::~CreatedFolders() {
+  for (auto it = made_.rbegin(); it != made_.rend(); ++it) ::rmdir(it->c_str());  // only if empty
+}
+
+void CreatedFolders::Create(const std::string& dir) {
+  std::error_code ec;
+  if (dir.empty() || fs::is_directory(dir, ec)) return;
+  // The missing folders, outermost first, registered before they exist.
+  std::vector<std::string> missing;
+  for (fs::path p = fs::path(dir).lexically_normal(); !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+    if (p.filename().empty()) continue;  // a trailing separator
+    missing.insert(missing.begin(), p.string());
+  }
+  for (const std::string& m : missing) cleanup_.emplace_back(m, CleanupKind::kEmptyFolder);
+  try {
+    CreateFolder(dir);
+  } catch (const Error&) {
+    for (auto it = missing.rbegin(); it != missing.rend(); ++it) ::rmdir(it->c_str());
+    cleanup_.clear();
+    throw;
+  }
+  made_.insert(made_.end(), missing.begin(), missing.end());
+}
+
+void CreatedFolders::CreateParentOf(const std::string& path) {
+  const fs::path parent = fs::path(path).parent_path();
+  if (!parent.empty()) Create(parent.string());
+}
+
+void CreatedFolders::Keep() {
+  made_.clear();
+  cleanup_.clear();
+}
+
+namespace {
+
+/// The list's lines: `command<TAB>name`; a line without a tab (a prt older than the commands'
+/// names in the list) is a file prt wrote for no known command, which no run removes.
+std::map<std::string, std::string> ReadList(const std::string& path) {
+  std::map<std::string, std::string> entries;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return entries;
+  std::istringstream list(ReadFile(path));
+  for (std::string line; std::getline(list, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    const auto tab = line.find('\t');
+    const std::string command = tab == std::string::npos ? "" : line.substr(0, tab);
+    const std::string name = tab == std::string::npos ? line : line.substr(tab + 1);
+    if (!name.empty() && name.find('/') == std::string::npos) entries[name] = command;
+  }
+  return entries;
+}
+
+}  // namespace
+
+OutputFolder::OutputFolder(std::string dir, OutputPlan plan) : dir_(std::move(dir)), plan_(std::move(plan)) {
+  created_.Create(dir_);
   const std::string lock = dir_ + "/" + kLockName;
   lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
   if (lock_fd_ < 0) throw Error(dir_ + ": cannot use the output folder (" + WriteProblem(lock, errno) + ")");
@@ -47,35 +101,49 @@ OutputFolder::OutputFolder(std::string dir) : dir_(std::move(dir)) {
     const ssize_t n = ::pread(lock_fd_, holder, sizeof holder - 1, 0);
     ::close(lock_fd_);
     lock_fd_ = -1;
-    throw Error(dir_ + ": in use by another prt run" + (n > 0 ? " (process " + std::string(holder) + ")" : "") +
-                " (expected one run per output folder: wait for it to finish, or choose another --out)");
+    throw FolderBusy(dir_ + ": in use by another prt run" + (n > 0 ? " (process " + std::string(holder) + ")" : "") +
+                     " (expected one run per output folder: wait for it to finish, or choose another --out; exit "
+                     "code 75 means try again)");
   }
+  lock_cleanup_ = CleanupOnSignal(lock, CleanupKind::kFile);
   const std::string pid = std::to_string(::getpid());
   if (::ftruncate(lock_fd_, 0) == 0 && ::pwrite(lock_fd_, pid.data(), pid.size(), 0) < 0) {
     // The holder's pid only improves the message of a refused run; nothing depends on it.
   }
-  std::error_code ec;
-  if (fs::exists(dir_ + "/" + kListName, ec)) {
-    std::istringstream list(ReadFile(dir_ + "/" + kListName));
-    for (std::string line; std::getline(list, line);)
-      if (!line.empty() && line[0] != '#' && line.find('/') == std::string::npos) earlier_.insert(line);
+  try {
+    earlier_ = ReadList(dir_ + "/" + kListName);
+    Plan(plan_.names);
+    // A staging folder here is a killed run's (this run holds the lock): its files never counted.
+    std::error_code ec;
+    staging_cleanup_ = CleanupOnSignal(staging(), CleanupKind::kTree);
+    fs::remove_all(staging(), ec);
+    if (!fs::create_directory(staging(), ec) && !fs::is_directory(staging()))
+      throw Error(dir_ + ": cannot use the output folder (" +
+                  WriteProblem(staging() + "/x", ec.value() ? ec.value() : EIO) + ")");
+  } catch (...) {
+    Abandon();
+    throw;
   }
-  // A staging folder here is a killed run's (this run holds the lock): its files never counted.
-  fs::remove_all(staging(), ec);
-  if (!fs::create_directory(staging(), ec) && !fs::is_directory(staging()))
-    throw Error(dir_ + ": cannot use the output folder (" +
-                WriteProblem(staging() + "/x", ec.value() ? ec.value() : EIO) + ")");
 }
 
-OutputFolder::~OutputFolder() {
+OutputFolder::~OutputFolder() { Abandon(); }
+
+void OutputFolder::Abandon() {
   if (lock_fd_ < 0) return;
   std::error_code ec;
   fs::remove_all(staging(), ec);  // a failed run's staged outputs, never moved into place
+  staging_cleanup_.Release();
   if (!finished_) {
-    std::set<std::string> all = earlier_;
-    all.insert(in_place_.begin(), in_place_.end());
+    // Files written in place are valid on their own: listed, so that the next run knows them.
+    std::map<std::string, std::string> all = earlier_;
+    bool added = false;
+    for (const std::string& name : in_place_) {
+      if (earlier_.count(name) || !fs::exists(fs::symlink_status(fs::path(dir_) / name, ec))) continue;
+      all[name] = plan_.command;
+      added = true;
+    }
     try {
-      WriteList(all);
+      if (added) WriteList(all);
     } catch (const std::exception&) {
       // The run is failing already; its error is the one to report.
     }
@@ -83,13 +151,50 @@ OutputFolder::~OutputFolder() {
   // Unlinked before it is released: a run that opened the old file meanwhile finds it locked
   // and is refused; one that starts later creates a fresh lock.
   ::unlink((dir_ + "/" + kLockName).c_str());
+  lock_cleanup_.Release();
   ::close(lock_fd_);
+  lock_fd_ = -1;
+  // created_ removes the folders this run made, if it left them empty (a failed run).
 }
 
 std::string OutputFolder::staging() const { return dir_ + "/" + kStagingName; }
 
+bool OutputFolder::IsForeignLocked(const std::string& name) const {
+  // A staged output is not in the folder yet: what is there under its name is still foreign.
+  std::error_code ec;
+  if (earlier_.count(name) || in_place_.count(name)) return false;
+  return fs::exists(fs::symlink_status(fs::path(dir_) / name, ec));
+}
+
+bool OutputFolder::IsForeign(const std::string& name) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return IsForeignLocked(name);
+}
+
+void OutputFolder::CheckLocked(const std::string& name) {
+  if (replaced_.count(name) || !IsForeignLocked(name)) return;
+  const std::string path = dir_ + "/" + name;
+  const std::string orig = name + kOrigSuffix;
+  if (!plan_.replace)
+    throw Error(path + ": exists and prt did not write it: this run would replace it (expected another --out, or "
+                "--replace to replace it and keep the old file as " + orig + ")");
+  std::error_code ec;
+  if (fs::exists(fs::symlink_status(fs::path(dir_) / orig, ec)))
+    throw Error(path + ": --replace would keep it as " + orig + ", which exists already (expected " + orig +
+                " moved away first)");
+  if (fs::is_directory(fs::symlink_status(path, ec)))
+    throw Error(path + ": is a folder, and an output of this run has its name (expected another --out)");
+  replaced_.insert(name);
+}
+
+void OutputFolder::Plan(const std::vector<std::string>& names) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  for (const std::string& name : names) CheckLocked(name);
+}
+
 std::string OutputFolder::Output(const std::string& name) {
   std::lock_guard<std::mutex> lock(mutex_);
+  CheckLocked(name);
   staged_.insert(name);
   return staging() + "/" + name;
 }
@@ -111,6 +216,13 @@ fs::path ResolvedPath(const std::string& path) {
   return p.lexically_normal();
 }
 
+bool LiesIn(const std::string& path, const std::string& dir) {
+  const auto folder_of = [](const std::string& file) {
+    return ResolvedPath((fs::path(file).parent_path() / "x").string()).parent_path();
+  };
+  return folder_of(path) == folder_of(dir + "/x");
+}
+
 void OutputFolder::KeepInput(const std::string& path) {
   std::lock_guard<std::mutex> lock(mutex_);
   inputs_.push_back(ResolvedPath(path).string());
@@ -124,22 +236,44 @@ bool OutputFolder::IsInput(const std::string& name) const {
   return false;
 }
 
-std::vector<std::string> OutputFolder::Finish() {
+OutputFolder::Finished OutputFolder::Finish() {
   std::lock_guard<std::mutex> lock(mutex_);
+  Finished result;
+  std::error_code ec;
+  // Every staged output checked before any is moved: a file that appeared during the run and
+  // that prt did not write stops the run here, with nothing replaced.
+  std::vector<std::string> to_move;
+  for (const auto& name : staged_) {
+    if (!fs::exists(fs::symlink_status(staging() + "/" + name, ec))) continue;  // named, then never written
+    CheckLocked(name);
+    to_move.push_back(name);
+  }
+  // The files prt did not write that this run replaces (--replace): kept as NAME.orig.
+  for (const auto& name : to_move) {
+    if (!replaced_.count(name) || !IsForeignLocked(name)) continue;
+    const std::string from = dir_ + "/" + name, to = from + kOrigSuffix;
+    if (std::rename(from.c_str(), to.c_str()) != 0) throw Error(to + ": cannot write (" + WriteProblem(to, errno) + ")");
+    result.kept_as_orig.push_back(name + kOrigSuffix);
+  }
   // This run's outputs into place. Each one moved is listed from then on, even if a later one
   // fails (the destructor writes the list).
-  std::error_code ec;
-  for (const auto& name : staged_) {
+  for (const auto& name : to_move) {
     const std::string from = staging() + "/" + name, to = dir_ + "/" + name;
-    if (!fs::exists(fs::symlink_status(from, ec))) continue;  // named, then never written
     if (std::rename(from.c_str(), to.c_str()) != 0) throw Error(to + ": cannot write (" + WriteProblem(to, errno) + ")");
     in_place_.insert(name);
   }
-  std::vector<std::string> removed;
-  for (const auto& name : earlier_) {
-    if (in_place_.count(name) || IsInput(name)) continue;
+  // What earlier runs wrote: this command's leftovers are removed, the other commands' kept.
+  std::map<std::string, std::string> list;
+  for (const auto& [name, command] : earlier_) {
+    if (in_place_.count(name)) continue;
     const fs::path p = fs::path(dir_) / name;
-    if (fs::is_regular_file(fs::symlink_status(p, ec)) && fs::remove(p, ec)) removed.push_back(name);
+    if (!fs::exists(fs::symlink_status(p, ec))) continue;  // gone: no longer listed
+    if (command != plan_.command) {
+      list[name] = command;  // another command's deliverable (or an unknown command's): kept
+      continue;
+    }
+    if (IsInput(name)) continue;  // read by this run: kept, and no longer listed as prt's
+    if (fs::is_regular_file(fs::symlink_status(p, ec)) && fs::remove(p, ec)) result.removed.push_back(name);
   }
   // Temporary files of prt runs that were killed mid-write (core/atomic_file.h names them
   // `.<name>.tmp<pid>_<n>`): removed once their process is gone. This run holds the folder, so
@@ -148,18 +282,21 @@ std::vector<std::string> OutputFolder::Finish() {
     long maker = 0;
     const std::string name = entry.path().filename().string();
     if (!AtomicFile::IsTemporaryName(name, &maker)) continue;
-    const auto pid = static_cast<pid_t>(maker);
-    const bool gone = pid != ::getpid() && ::kill(pid, 0) != 0 && errno == ESRCH;
-    if (gone && fs::remove(entry.path(), ec)) removed.push_back(name);
+    if (AtomicFile::ProcessGone(maker) && fs::remove(entry.path(), ec)) result.removed.push_back(name);
   }
-  WriteList(in_place_);
+  for (const auto& name : in_place_)
+    if (fs::exists(fs::symlink_status(fs::path(dir_) / name, ec))) list[name] = plan_.command;
+  WriteList(list);
   finished_ = true;
-  return removed;
+  created_.Keep();
+  return result;
 }
 
-void OutputFolder::WriteList(const std::set<std::string>& names) const {
-  std::string text = "# files the last prt runs wrote in this folder; the next run removes those it does not rewrite\n";
-  for (const auto& n : names) text += n + "\n";
+void OutputFolder::WriteList(const std::map<std::string, std::string>& entries) const {
+  std::string text =
+      "# files prt wrote in this folder: the command that wrote it, a tab, the file name. A run removes what its\n"
+      "# command wrote earlier and did not write again; files of other commands, and files not listed, stay.\n";
+  for (const auto& [name, command] : entries) text += command + "\t" + name + "\n";
   WriteFileAtomic(dir_ + "/" + kListName, text);
 }
 

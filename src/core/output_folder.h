@@ -1,11 +1,12 @@
 #pragma once
 /// \file
-/// An output folder that never mixes two runs (docs/CLI.md, "Conventions": Outputs, and Output
-/// folders serve one run at a time):
+/// An output folder that never mixes two runs and never loses a file prt did not make
+/// (docs/CLI.md, "Conventions": Outputs, and Output folders):
 ///
 /// - One run at a time. The folder's lock file `.prt-lock` is held with flock(2) for the whole
-///   run; a second run into the same folder is refused at once. The kernel releases the lock
-///   when its process ends however it ends, so a crashed or killed run leaves nothing stuck.
+///   run; a second run into the same folder is refused at once (FolderBusy, exit 75). The
+///   kernel releases the lock when its process ends however it ends, so a crashed or killed run
+///   leaves nothing stuck.
 /// - All of a run's outputs or none. Output() names a file in the hidden staging folder
 ///   `.prt-staging/`; Finish() moves them all into place (a rename each, on one file system)
 ///   once the run has succeeded. A failed run discards its staged files, so the folder keeps the
@@ -13,26 +14,67 @@
 ///   which the next run removes. (Files that are valid on their own whatever the run does, the
 ///   transport cache, are written in place through OutputInPlace().) A re-run therefore needs
 ///   room for both its outputs and the earlier ones until it finishes.
-/// - Exactly this run's outputs. `.prt-outputs` lists the files prt wrote there. After a
-///   successful run, the files an earlier run listed and this run did not write are removed and
-///   the list is replaced by this run's; files prt did not write are never touched, nor is any
-///   file or folder this run read (KeepInput: a mesh, a material library or a sky that an
-///   earlier prt run wrote into the folder).
+/// - No trace of a failed run. A run that fails, or that SIGINT, SIGTERM or SIGHUP stops
+///   (core/signal_cleanup.h), removes its staging folder and lock file, writes the list only if
+///   it wrote a file in place, and removes the folders it created if they are empty again.
+/// - Never a file prt did not make. `.prt-outputs` lists the files prt wrote there, each with
+///   the command that wrote it. An output name that exists in the folder and is not listed is
+///   someone else's file: the run is refused before any work, unless the plan
+///   allows replacing, and then Finish() keeps the old file as `NAME.orig`.
+/// - Only its own command's leftovers. After a successful run, the files an earlier run of the
+///   same command listed and this run did not write are removed (fewer frames than last time);
+///   files other commands wrote (precompute's light.txt beside render's frames) are kept and stay
+///   listed; no file or folder this run reads is ever removed (KeepInput).
 ///
 /// The commands name every file they write through Output() or OutputInPlace() before writing
-/// it.
+/// it, and name them all in the plan beforehand where they know them, so that a refusal comes
+/// before any work.
 
 #include <filesystem>
+#include <map>
 #include <mutex>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "core/error.h"
+#include "core/signal_cleanup.h"
+
 namespace prt {
+
+/// The output folder is held by another run of prt: try again later (exit code 75, sysexits'
+/// EX_TEMPFAIL, so that a CI wrapper can retry).
+class FolderBusy : public Error {
+ public:
+  using Error::Error;
+};
+constexpr int kExitFolderBusy = 75;
 
 /// Creates `dir` and its missing parents. Throws Error naming `dir` and the cause (a file in
 /// the way, permission denied, ...) when it cannot.
 void CreateFolder(const std::string& dir);
+
+/// The folders a run created for its outputs: made by Create(), removed again (deepest first,
+/// and only while empty) when the object is destroyed before Keep(), or when a signal stops
+/// the run. So a run that fails leaves no empty folders behind.
+class CreatedFolders {
+ public:
+  CreatedFolders() = default;
+  ~CreatedFolders();
+  CreatedFolders(const CreatedFolders&) = delete;
+  CreatedFolders& operator=(const CreatedFolders&) = delete;
+
+  /// CreateFolder(dir), remembering each folder it had to make.
+  void Create(const std::string& dir);
+  /// The folders of `path`, a file to be written (see Create).
+  void CreateParentOf(const std::string& path);
+  /// The run succeeded: the folders stay.
+  void Keep();
+
+ private:
+  std::vector<std::string> made_;  ///< outermost first
+  std::vector<CleanupOnSignal> cleanup_;
+};
 
 /// `path` made absolute, its symbolic links resolved as far as it exists, normalised: two paths
 /// name the same file exactly when their resolved paths are equal (neither need exist yet).
@@ -41,56 +83,98 @@ std::filesystem::path ResolvedPath(const std::string& path);
 /// Creates the folder a file `path` is to be written into, if missing (see CreateFolder).
 void CreateParentFolder(const std::string& path);
 
+/// True if the file `path` lies directly in the folder `dir` (neither need exist yet; the
+/// folders are resolved, the file itself is not: a link named there is written there).
+bool LiesIn(const std::string& path, const std::string& dir);
+
+/// What a run is about to write into its folder.
+struct OutputPlan {
+  /// The command whose outputs these are (`render` for render and demo): a run removes only
+  /// what earlier runs of its command wrote.
+  std::string command;
+  /// The files it will write, as far as known before any work (Plan() adds more later).
+  std::vector<std::string> names;
+  /// --replace: a file prt did not write is replaced, and kept as NAME.orig, instead of
+  /// refusing the run.
+  bool replace = false;
+};
+
 class OutputFolder {
  public:
-  /// Creates `dir` if missing, takes its lock and makes an empty staging folder (removing one
-  /// a killed run left). Throws Error if the folders cannot be made or another run holds it.
-  explicit OutputFolder(std::string dir);
-  /// Releases the lock; without Finish(), discards the staged files, removes nothing else and
-  /// adds the files written in place to the list.
+  /// Creates `dir` if missing, takes its lock, reads the list, checks the plan's names (Plan())
+  /// and makes an empty staging folder (removing one a killed run left). Throws FolderBusy if
+  /// another run holds it, Error if a planned name is someone else's file (see Plan()) or
+  /// if the folders cannot be made; the folder is then left as it was.
+  OutputFolder(std::string dir, OutputPlan plan);
+  /// Releases the lock; without Finish(), discards the staged files, removes nothing else, adds
+  /// the files written in place to the list, and removes the folders it created if empty.
   ~OutputFolder();
   OutputFolder(const OutputFolder&) = delete;
   OutputFolder& operator=(const OutputFolder&) = delete;
 
   const std::string& dir() const { return dir_; }
 
+  /// Checks `names` before they are written: each one that exists in the folder and that prt
+  /// did not write is refused (Error naming the file and the ways out) unless the plan allows
+  /// replacing it, and then its NAME.orig must not exist yet.
+  void Plan(const std::vector<std::string>& names);
+
   /// Where to write the output file `name` (a plain file name): in the staging folder until
-  /// Finish() moves it into place. Recorded as an output of this run.
+  /// Finish() moves it into place. Recorded as an output of this run; checked as Plan() does.
   std::string Output(const std::string& name);
 
   /// Where to write the output file `name` directly in the folder, for a file that is valid on
-  /// its own however the run ends (a checked cache). Recorded as an output of this run.
+  /// its own however the run ends (a checked cache). Recorded as an output of this run. Not
+  /// checked: the caller replaces only a file it recognises as its own (the cache's header).
   std::string OutputInPlace(const std::string& name);
 
   /// True if this run named `name` as an output.
   bool Wrote(const std::string& name);
 
+  /// True if `name` exists in the folder and prt has no record of writing it (a staged output
+  /// of this run does not count until Finish() moves it there).
+  bool IsForeign(const std::string& name);
+
   /// Records that this run reads `path` (a file, or a folder and everything in it): Finish()
   /// never removes it, even when an earlier prt run wrote it into this folder.
   void KeepInput(const std::string& path);
 
-  /// After a successful run: moves the staged outputs into place, removes the files an earlier
-  /// prt run wrote that this run did not (but no input of this run) and the temporary files of
-  /// killed runs (core/atomic_file.h), and records this run's outputs. Returns the names
-  /// removed. Throws Error if a staged file cannot be moved into place (the files moved before
-  /// it stay: they are this run's, complete, and listed).
-  std::vector<std::string> Finish();
+  struct Finished {
+    std::vector<std::string> removed;  ///< earlier outputs of this command that this run did not write
+    std::vector<std::string> kept_as_orig;  ///< files prt did not write, now NAME.orig (--replace)
+  };
+  /// After a successful run: keeps the files prt did not write that the outputs replace as
+  /// NAME.orig, moves the staged outputs into place, removes the files an earlier run of this
+  /// command wrote that this run did not (but no input of this run) and the temporary files of
+  /// killed runs (core/atomic_file.h), and records this run's outputs beside the other commands'.
+  /// Throws Error if a staged file cannot be moved into place (the files moved before it stay:
+  /// they are this run's, complete, and listed).
+  Finished Finish();
 
   /// Names of the lock and list files and of the staging folder (hidden, owned by prt).
   static constexpr const char* kLockName = ".prt-lock";
   static constexpr const char* kListName = ".prt-outputs";
   static constexpr const char* kStagingName = ".prt-staging";
+  /// What a replaced file prt did not write is renamed to: NAME + kOrigSuffix.
+  static constexpr const char* kOrigSuffix = ".orig";
 
  private:
-  void WriteList(const std::set<std::string>& names) const;
+  void CheckLocked(const std::string& name);
+  void WriteList(const std::map<std::string, std::string>& entries) const;
+  bool IsForeignLocked(const std::string& name) const;
   bool IsInput(const std::string& name) const;
+  void Abandon();
   std::string staging() const;
 
   std::string dir_;
+  OutputPlan plan_;
+  CreatedFolders created_;
   int lock_fd_ = -1;
-  std::set<std::string> earlier_;   ///< what the list said when the run started
+  CleanupOnSignal lock_cleanup_, staging_cleanup_;
+  std::map<std::string, std::string> earlier_;  ///< name -> command, as the list said when the run started
   std::set<std::string> staged_;    ///< this run's outputs written to the staging folder
   std::set<std::string> in_place_;  ///< this run's outputs written directly
+  std::set<std::string> replaced_;  ///< names whose file prt did not write (to keep as NAME.orig)
   std::vector<std::string> inputs_;  ///< absolute, normalised paths this run reads
   bool finished_ = false;
   mutable std::mutex mutex_;

@@ -1,19 +1,21 @@
 #pragma once
 /// \file
-/// Compiling hot loops for several x86-64 instruction sets. Because the project compiles with
-/// -ffp-contract=off (no fusing of a * b + c, CMakeLists.txt), every version rounds the same
-/// way: outputs do not depend on the machine's vector width.
-///
-/// PRT_VECTORIZED: compiles a loop twice, for AVX2 and for the baseline x86-64, and picks one at
-/// run time (GCC function multiversioning). Sanitized builds compile one version only: the
-/// run-time choice is an ifunc resolver that the dynamic loader calls before a sanitizer's
-/// runtime is initialised, which crashes ThreadSanitizer at start-up and hides the function from
-/// AddressSanitizer's interception.
+/// Compiling hot loops for several x86-64 instruction sets, and the choice among them at run
+/// time. Because the project compiles with -ffp-contract=off (no fusing of a * b + c,
+/// CMakeLists.txt), every version rounds the same way: outputs do not depend on the machine's
+/// vector width (tests/render/test_cpu_levels.cpp renders the same bytes at every level).
 ///
 /// PRT_TARGET_AVX2 and PRT_TARGET_X86_64_V4 (defined on x86-64 with GCC only): compile one
 /// function for AVX2 or for x86-64-v4 (AVX-512 F/BW/CD/DQ/VL), for a kernel written per
-/// instruction set with the vector types below. The caller picks one by hand from
-/// CpuVectorLevel(), without an ifunc, so sanitized builds keep them.
+/// instruction set (with the vector types below, or a loop the compiler vectorises). The caller
+/// picks one by hand from CpuVectorLevel(), without an ifunc: GCC's target_clones resolve in
+/// the dynamic loader, before a sanitizer's runtime is initialised (ThreadSanitizer crashes
+/// there) and beyond the reach of PRT_CPU_LEVEL.
+///
+/// PRT_CPU_LEVEL=baseline|avx2|avx512 in the environment caps every such choice (these kernels
+/// and the BVH's, geometry/bvh_kernels.h) at that level, so a machine can produce what a
+/// smaller one would: main refuses an unknown level or one this CPU cannot run
+/// (CheckCpuLevelRequest) before any work.
 ///
 /// V2, V4, V8: vectors of 2, 4 and 8 doubles (GCC/Clang vector types). Use each only where it is
 /// one register: V2 anywhere (SSE2, NEON), V4 under PRT_TARGET_AVX2, V8 under
@@ -30,14 +32,6 @@
 #include <immintrin.h>  // declares the instruction-set builtins used below
 #endif
 
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && \
-    !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
-#define PRT_VECTORIZED __attribute__((target_clones("avx2", "default")))
-#define PRT_VECTORIZED_CLONES 1
-#else
-#define PRT_VECTORIZED
-#endif
-
 #define PRT_SIMD_INLINE inline __attribute__((always_inline))
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
@@ -47,37 +41,37 @@
 
 namespace prt {
 
-enum class VectorLevel { kBaseline, kAvx2, kX86_64V4 };
+/// The kernel levels, in order: each runs on every CPU that runs the next one.
+enum class VectorLevel {
+  kBaseline,  ///< x86-64 (SSE2), or any other architecture
+  kAvx2,      ///< x86-64-v3: AVX2, FMA, BMI1/2 (PRT_TARGET_AVX2 needs only AVX2)
+  kX86_64V4,  ///< x86-64-v4: AVX-512 F/BW/CD/DQ/VL
+};
 
-/// The widest level this CPU runs that the build has PRT_TARGET_ kernels for (kBaseline where
-/// it has none).
-inline VectorLevel CpuVectorLevel() {
-#ifdef PRT_TARGET_X86_64_V4
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("x86-64-v4")) return VectorLevel::kX86_64V4;
-  if (__builtin_cpu_supports("avx2")) return VectorLevel::kAvx2;
-#endif
-  return VectorLevel::kBaseline;
-}
+/// The widest level this CPU runs, whatever PRT_CPU_LEVEL says (kBaseline off x86-64).
+VectorLevel CpuMaxVectorLevel();
 
-/// "x86-64-v4", "avx2" or "baseline".
-inline const char* VectorLevelName(VectorLevel level) {
-  switch (level) {
-    case VectorLevel::kX86_64V4: return "x86-64-v4";
-    case VectorLevel::kAvx2: return "avx2";
-    default: return "baseline";
-  }
-}
+/// The level every run-time choice of kernel uses: CpuMaxVectorLevel(), capped at
+/// $PRT_CPU_LEVEL when that names a level (read once). Never above what the CPU runs: a level
+/// the CPU lacks gives CpuMaxVectorLevel(), an unknown name kBaseline (main refuses both first,
+/// CheckCpuLevelRequest). A kernel with no version for this level takes the next one below.
+VectorLevel CpuVectorLevel();
 
-/// The version of the PRT_VECTORIZED functions this CPU runs: "avx2" or "baseline" (the only
-/// version of a sanitized or non-x86 build).
-inline const char* VectorizedLoopsName() {
-#ifdef PRT_VECTORIZED_CLONES
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx2")) return "avx2";
-#endif
-  return "baseline";
-}
+/// True when PRT_CPU_LEVEL holds CpuVectorLevel() below CpuMaxVectorLevel().
+bool CpuLevelCapped();
+
+/// Throws Error if $PRT_CPU_LEVEL is set, not empty, and is not a level this CPU runs:
+/// `PRT_CPU_LEVEL=sse9: unknown level (expected baseline, avx2 or avx512)`, or
+/// `PRT_CPU_LEVEL=avx512: this CPU cannot run it (expected one of: baseline, avx2)`.
+/// main calls it before any work.
+void CheckCpuLevelRequest();
+
+/// The level a PRT_CPU_LEVEL value `request` asks for on a CPU whose widest level is `cpu_max`
+/// (null or empty: `cpu_max`), or Error as CheckCpuLevelRequest throws it (tests).
+VectorLevel RequestedVectorLevel(const char* request, VectorLevel cpu_max);
+
+/// "avx512", "avx2" or "baseline": PRT_CPU_LEVEL's names.
+const char* VectorLevelName(VectorLevel level);
 
 namespace simd {
 

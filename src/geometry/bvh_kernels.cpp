@@ -25,6 +25,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/simd.h"
 #include "geometry/box_test.h"
 #include "geometry/bvh_packet_traverse.h"
 #include "geometry/bvh_wide_traverse.h"
@@ -178,30 +179,13 @@ std::atomic<const BvhKernels*>& Active() {
 
 }  // namespace
 
-#ifdef PRT_HAS_WIDE_KERNELS
-// Whether this CPU runs code compiled for x86-64-v3 (`v4` false) or x86-64-v4 (`v4` true). GCC
-// names the levels; clang 14 (the fuzzing builds) does not, nor LZCNT, MOVBE or F16C, so there
-// the level is its other features: every CPU with AVX2, FMA and BMI1/2 has those three too.
-bool CpuRunsLevel(bool v4) {
-  __builtin_cpu_init();
-#ifdef __clang__
-  const bool v3 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi") &&
-                  __builtin_cpu_supports("bmi2") && __builtin_cpu_supports("popcnt") &&
-                  __builtin_cpu_supports("sse4.2");
-  if (!v4) return v3;
-  return v3 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
-         __builtin_cpu_supports("avx512cd") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl");
-#else
-  return v4 ? __builtin_cpu_supports("x86-64-v4") : __builtin_cpu_supports("x86-64-v3");
-#endif
-}
-#endif
-
+// The sets up to CpuVectorLevel(): what this CPU runs, capped by PRT_CPU_LEVEL (core/simd.h).
 std::vector<Isa> SupportedIsas() {
   std::vector<Isa> isas;
 #ifdef PRT_HAS_WIDE_KERNELS
-  if (CpuRunsLevel(true)) isas.push_back(Isa::kAvx512);
-  if (CpuRunsLevel(false)) isas.push_back(Isa::kAvx2);
+  const VectorLevel level = CpuVectorLevel();
+  if (level >= VectorLevel::kX86_64V4) isas.push_back(Isa::kAvx512);
+  if (level >= VectorLevel::kAvx2) isas.push_back(Isa::kAvx2);
 #endif
   isas.push_back(Isa::kBaseline);
   return isas;

@@ -7,9 +7,10 @@
 /// 8-lane movemask to be fast (lanes.h), and those exist only from AVX2 on. Each kernel is a
 /// small function compiled with a `target` attribute around the same always-inlined template
 /// code, so every helper it inlines takes that instruction set, and nothing is compiled with
-/// wider instructions outside it. The choice is made once, from the CPU's features, without
-/// an ifunc resolver (which sanitizers do not survive, core/simd.h). All kernels return the
-/// same answers, bit for bit: the tests run each one the CPU supports against brute force.
+/// wider instructions outside it. The choice is made once, from the CPU's features capped by
+/// PRT_CPU_LEVEL (CpuVectorLevel, core/simd.h), without an ifunc resolver (which sanitizers do
+/// not survive). All kernels return the same answers, bit for bit: the tests run each one the
+/// CPU supports against brute force.
 
 #include <cstdint>
 #include <optional>
@@ -38,14 +39,15 @@ struct BvhKernels {
   bool (*trace)(const WideBvh& bvh, const Ray& ray, bool closest, Hit& best);
 };
 
-/// The instruction sets this CPU runs, best first (the baseline always last).
+/// The instruction sets this CPU runs up to CpuVectorLevel() (PRT_CPU_LEVEL's cap), best first
+/// (the baseline always last).
 std::vector<lanes::Isa> SupportedIsas();
 
 /// The kernels in use: the best set this CPU runs, unless chosen by UseIsa.
 const BvhKernels& ActiveKernels();
 
 /// Makes traversal use `isa` from now on (tests and benchmarks compare the sets); false, and
-/// nothing changes, if this CPU cannot run it. Not to be called while rays are traced.
+/// nothing changes, if it is not one of SupportedIsas(). Not to be called while rays are traced.
 bool UseIsa(lanes::Isa isa);
 
 /// "avx512", "avx2" or "baseline".

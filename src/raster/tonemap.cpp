@@ -101,14 +101,34 @@ inline __attribute__((always_inline)) bool Prepare(const float* in, int n, float
   return bad != 0;
 }
 
-PRT_VECTORIZED bool PrepareSrgb(const float* in, int n, float scale, float* v) {
-  return Prepare<ToneCurve::kSrgb>(in, n, scale, v);
+using PrepareFn = bool (*)(const float* in, int n, float scale, float* v);
+
+// One version per instruction set, chosen once by CpuVectorLevel() (core/simd.h): the AVX2 one
+// at avx2 and above (-ffp-contract=off: the same bits as the baseline's).
+template <ToneCurve kCurve>
+bool PrepareBaseline(const float* in, int n, float scale, float* v) {
+  return Prepare<kCurve>(in, n, scale, v);
 }
-PRT_VECTORIZED bool PrepareReinhard(const float* in, int n, float scale, float* v) {
-  return Prepare<ToneCurve::kReinhard>(in, n, scale, v);
+#ifdef PRT_TARGET_AVX2
+template <ToneCurve kCurve>
+PRT_TARGET_AVX2 bool PrepareAvx2(const float* in, int n, float scale, float* v) {
+  return Prepare<kCurve>(in, n, scale, v);
 }
-PRT_VECTORIZED bool PrepareAces(const float* in, int n, float scale, float* v) {
-  return Prepare<ToneCurve::kAces>(in, n, scale, v);
+#endif
+
+template <ToneCurve kCurve>
+PrepareFn ChoosePrepare() {
+#ifdef PRT_TARGET_AVX2
+  if (CpuVectorLevel() >= VectorLevel::kAvx2) return PrepareAvx2<kCurve>;
+#endif
+  return PrepareBaseline<kCurve>;
+}
+
+PrepareFn PrepareFor(ToneCurve curve) {
+  static const PrepareFn srgb = ChoosePrepare<ToneCurve::kSrgb>();
+  static const PrepareFn reinhard = ChoosePrepare<ToneCurve::kReinhard>();
+  static const PrepareFn aces = ChoosePrepare<ToneCurve::kAces>();
+  return curve == ToneCurve::kSrgb ? srgb : curve == ToneCurve::kReinhard ? reinhard : aces;
 }
 
 // Pixels of in[0 .. n) (n a multiple of 3) with a negative or a NaN channel.
@@ -129,14 +149,13 @@ void CountBad(const float* in, int n, float scale, std::size_t& negative, std::s
 void MapRow(ToneCurve curve, const glm::vec3* row, int width, float scale, std::uint8_t* out,
             std::size_t& negative, std::size_t& nan) {
   const SrgbTable& table = Table();
+  const PrepareFn prepare = PrepareFor(curve);
   static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "pixels are three packed floats");
   const float* in = reinterpret_cast<const float*>(row);
   float v[kBlock];
   for (int first = 0; first < 3 * width; first += kBlock) {
     const int n = std::min(kBlock, 3 * width - first);
-    const bool bad = curve == ToneCurve::kSrgb       ? PrepareSrgb(in + first, n, scale, v)
-                     : curve == ToneCurve::kReinhard ? PrepareReinhard(in + first, n, scale, v)
-                                                     : PrepareAces(in + first, n, scale, v);
+    const bool bad = prepare(in + first, n, scale, v);
     if (bad) CountBad(in + first, n, scale, negative, nan);
     for (int i = 0; i < n; ++i) out[first + i] = EncodeUnit(table, v[i]);
   }

@@ -17,6 +17,8 @@ struct RenderOptions {
   int frames = 120;
   int width = 640, height = 480;
   std::string out = "out/render";
+  /// --replace: files in `out` that prt did not write may be replaced (kept as NAME.orig).
+  bool replace = false;
   glm::dvec3 axis{0.0, 1.0, 0.0};  ///< rotation axis of the light (world up)
   double turns = 1.0;              ///< full turns over all frames
   bool env_background = true;      ///< the environment behind the mesh, else background_color

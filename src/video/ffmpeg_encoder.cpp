@@ -44,6 +44,7 @@ std::string FindFfmpeg(FfmpegCodec codec, const std::string& what) {
 std::vector<std::string> FfmpegArguments(const std::string& program, FfmpegCodec codec, int width, int height,
                                          double fps, const std::string& path) {
   std::vector<std::string> a = {program, "-hide_banner", "-nostats", "-loglevel", "error", "-y",
+
                                 // input: raw 8-bit sRGB frames on standard input
                                 "-f", "rawvideo", "-pix_fmt", "rgb24",
                                 "-video_size", std::to_string(width) + "x" + std::to_string(height),
@@ -60,6 +61,9 @@ std::vector<std::string> FfmpegArguments(const std::string& program, FfmpegCodec
                           "-row-mt", "1", "-f", "webm"})
       a.emplace_back(s);
   }
+  // The same bytes from the same frames: no encoder version string, no random container IDs
+  // (WebM's segment UID), no creation time.
+  for (const char* s : {"-fflags", "+bitexact", "-flags:v", "+bitexact", "-map_metadata", "-1"}) a.emplace_back(s);
   a.push_back(path);
   return a;
 }
@@ -67,6 +71,7 @@ std::vector<std::string> FfmpegArguments(const std::string& program, FfmpegCodec
 FfmpegEncoder::FfmpegEncoder(const std::string& program, FfmpegCodec codec, const std::string& path, std::string name,
                              int width, int height, double fps)
     : name_(std::move(name)), log_(MakeLogFile()), width_(width), height_(height) {
+  if (log_ != "/dev/null") log_cleanup_ = CleanupOnSignal(log_, CleanupKind::kFile);
   child_ = std::make_unique<ChildProcess>(FfmpegArguments(program, codec, width, height, fps, path), log_);
 }
 

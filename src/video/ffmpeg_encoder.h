@@ -59,6 +59,7 @@ class FfmpegEncoder {
   [[noreturn]] void Fail(const std::string& what) const;
 
   std::string name_, log_;
+  CleanupOnSignal log_cleanup_;  ///< the log file, removed if a signal stops the run
   int width_, height_;
   std::unique_ptr<ChildProcess> child_;
 };

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -40,15 +41,19 @@ std::string MarkerPng(unsigned char level) {
 
 bool IsTemp(const std::string& name) { return name[0] == '.' && name.find(".tmp") != std::string::npos; }
 
-/// Writes frame_0000.png .. frame_{n-1}.png as markers; returns their bytes by name.
-std::map<std::string, std::string> FillWithMarkers(const std::string& dir, int n) {
+/// Writes frame_0000.png .. frame_{n-1}.png as markers; returns their bytes by name. `by_prt`:
+/// as an earlier prt render would (listed as its outputs), else as someone else's files.
+std::map<std::string, std::string> FillWithMarkers(const std::string& dir, int n, bool by_prt) {
   std::map<std::string, std::string> old;
+  std::optional<OutputFolder> folder;
+  if (by_prt) folder.emplace(dir, OutputPlan{"render", {}});
   for (int i = 0; i < n; ++i) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04d.png", i);
     old[name] = MarkerPng(static_cast<unsigned char>(i % 200));
-    WriteFileAtomic(dir + "/" + name, old[name]);
+    WriteFileAtomic(folder ? folder->Output(name) : dir + "/" + name, old[name]);
   }
+  if (folder) folder->Finish();
   return old;
 }
 
@@ -58,7 +63,7 @@ TEST_SUITE("app") {
   TEST_CASE("no data lost: a render killed mid-run leaves every earlier frame as it was") {
     const std::string dir = test::ScratchDir("no_data_loss_kill");
     constexpr int kMarkers = 400;
-    const auto old = FillWithMarkers(dir, kMarkers);
+    const auto old = FillWithMarkers(dir, kMarkers, true);
 
     // Many small frames (four-digit names, like the markers): the run would take a while; it is
     // killed once 20 frames are written (into the staging folder, until the run succeeds).
@@ -72,7 +77,7 @@ TEST_SUITE("app") {
     int kept = 0;
     for (const auto& entry : fs::directory_iterator(dir)) {
       const std::string name = entry.path().filename().string();
-      if (name == "transport.cache" || name.rfind(".prt-", 0) == 0) continue;  // the cache; lock, staging
+      if (name == "transport.cache" || name.rfind(".prt-", 0) == 0) continue;  // the cache; lock, staging, list
       CAPTURE(name);
       REQUIRE(old.count(name) == 1);
       CHECK(ReadFile(entry.path().string()) == old.at(name));
@@ -103,25 +108,39 @@ TEST_SUITE("app") {
     CHECK(later.exit_code == 0);
     CHECK_FALSE(fs::exists(staging));
     for (const auto& entry : fs::directory_iterator(dir)) CHECK_FALSE(IsTemp(entry.path().filename().string()));
-    CHECK(ReadFile(dir + "/frame_0001.png") == old.at("frame_0001.png"));  // not prt's: never removed
+    // The markers stand for an earlier render's frames: this render of one frame removes the rest.
+    CHECK_FALSE(fs::exists(dir + "/frame_0001.png"));
   }
 
   TEST_CASE("no data lost: frames prt did not write are never removed, failed runs keep old outputs") {
     const std::string dir = test::ScratchDir("no_data_loss_fewer");
-    const auto old = FillWithMarkers(dir, 10);
+    const auto old = FillWithMarkers(dir, 10, false);
     const std::string run = "render --env furnace --transport unshadowed --frames 3 --size 16x16 --mesh " +
                             Q(test::Fixture("obj/quad.obj")) + " --out " + Q(dir);
-    const auto r = test::RunPrt(run);
+    // Frames 0..2 would replace files prt did not write: refused before any work, naming one.
+    const auto refused = test::RunPrt(run);
+    CHECK(refused.exit_code == 1);
+    CHECK(refused.err.find(dir + "/frame_0000.png: exists and prt did not write it") != std::string::npos);
+    CHECK_FALSE(fs::exists(dir + "/transport.cache"));  // no precompute happened
+    for (const auto& [name, bytes] : old) CHECK(ReadFile(dir + "/" + name) == bytes);
+    // --replace replaces them, keeping each as NAME.orig.
+    const auto r = test::RunPrt(run + " --replace");
     CAPTURE(r.err);
     CHECK(r.exit_code == 0);
     // The markers were not written by prt: frames 3..9 are left, and the run says so.
     CHECK(r.err.find("note: 7 frame files in " + dir + " not written by this run were left untouched") !=
           std::string::npos);
+    CHECK(r.err.find("outputs: replaced 3 files prt did not write in " + dir +
+                     " (--replace), kept as frame_0000.png.orig ... frame_0002.png.orig") != std::string::npos);
     for (const auto& [name, bytes] : old) {
       CAPTURE(name);
       REQUIRE(fs::exists(dir + "/" + name));
-      if (name >= "frame_0003.png") CHECK(ReadFile(dir + "/" + name) == bytes);  // untouched
-      else CHECK(ReadFile(dir + "/" + name) != bytes);                           // replaced
+      if (name >= "frame_0003.png") {
+        CHECK(ReadFile(dir + "/" + name) == bytes);  // untouched
+      } else {
+        CHECK(ReadFile(dir + "/" + name) != bytes);  // replaced, and kept
+        CHECK(ReadFile(dir + "/" + name + ".orig") == bytes);
+      }
     }
 
     // A run that fails (bad mesh) leaves the earlier frames, cache and text files as they were.

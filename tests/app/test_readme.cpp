@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/atomic_file.h"
 #include "tests/test_support.h"
 
 namespace prt {
@@ -41,8 +42,13 @@ std::vector<std::string> ReadmeCommands(const std::string& path) {
   return commands;
 }
 
-/// The course's framework layout (assets/mary, assets/cubemap/<Name>/faces) over the shared
-/// data: real folders holding links to the files, so outputs written there stay in `root`.
+/// What the course's framework ships as each cubemap's light.txt and transport.txt (stand-ins:
+/// the README's course command must keep them as *.orig).
+std::string ShippedFile(const std::string& name) { return "the framework's own " + name + "\n"; }
+
+/// The course's framework layout (assets/mary, assets/cubemap/<Name>/faces, with the framework's
+/// own light.txt and transport.txt) over the shared data: real folders holding links to the
+/// files, so outputs written there stay in `root`.
 void LayOutCourseFramework(const std::string& data, const std::string& root) {
   fs::create_directories(root + "/assets");
   fs::create_directory_symlink(data + "/games202/mary", root + "/assets/mary");
@@ -51,6 +57,7 @@ void LayOutCourseFramework(const std::string& data, const std::string& root) {
     fs::create_directories(folder);
     for (const auto& face : fs::directory_iterator(cubemap.path()))
       fs::create_symlink(face.path(), folder + "/" + face.path().filename().string());
+    for (const char* name : {"light.txt", "transport.txt"}) std::ofstream(folder + "/" + name) << ShippedFile(name);
   }
 }
 
@@ -97,7 +104,12 @@ TEST_SUITE("readme") {
   TEST_CASE("readme: the course commands run against the course's framework" * test::NeedsSharedData()) {
     const std::string clone = MakeClone("readme_course");
     CHECK(RunReadmeCommands(clone, true) >= 2);
-    CHECK(fs::exists(clone + "/games202/assets/cubemap/GraceCathedral/transport.txt"));
+    const std::string grace = clone + "/games202/assets/cubemap/GraceCathedral";
+    CHECK(fs::exists(grace + "/transport.txt"));
+    CHECK(ReadFile(grace + "/transport.txt") != ShippedFile("transport.txt"));
+    // The README says the framework's own files are kept as *.orig.
+    CHECK(ReadFile(grace + "/light.txt.orig") == ShippedFile("light.txt"));
+    CHECK(ReadFile(grace + "/transport.txt.orig") == ShippedFile("transport.txt"));
   }
 }
 
