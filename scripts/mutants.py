@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Mutation check of the test suite: does every deliberate bug make some test fail?
 
-    python3 scripts/mutants.py [NAME_FILTER]     all mutants of tests/mutants.txt, or those whose
-                                                  name contains NAME_FILTER
+    python3 scripts/mutants.py [NAME_FILTER ...]  all mutants of tests/mutants.txt, or those whose
+                                                  name contains one of the NAME_FILTERs
 
 Each mutant of tests/mutants.txt replaces one exact piece of a source file. The script copies
 the project to build-mutants/src (never touching the checkout), builds it once, then for each
@@ -75,8 +75,8 @@ def run(cmd, **kw):
 
 
 def main():
-    wanted = sys.argv[1] if len(sys.argv) > 1 else ""
-    mutants = [m for m in parse(os.path.join(ROOT, "tests", "mutants.txt")) if wanted in m[0]]
+    wanted = sys.argv[1:] or [""]
+    mutants = [m for m in parse(os.path.join(ROOT, "tests", "mutants.txt")) if any(w in m[0] for w in wanted)]
     os.makedirs(WORK, exist_ok=True)
     sync(ROOT, COPY)
     jobs = str(os.cpu_count() or 2)

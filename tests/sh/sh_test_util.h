@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/rng.h"
@@ -33,6 +34,25 @@ inline double LowestOver(const ShRgb& c, const std::vector<glm::dvec3>& directio
     lowest = std::min({lowest, v.x, v.y, v.z});
   }
   return lowest;
+}
+
+/// sum_k c_k Y_k(d): the band-limited function the coefficients c stand for.
+inline glm::dvec3 EvaluateSh(const ShRgb& c, const glm::dvec3& d) {
+  std::vector<double> y(c.size());
+  EvalBasis(LmaxOfCount(c.size()), glm::normalize(d), y.data());
+  glm::dvec3 sum(0.0);
+  for (std::size_t k = 0; k < c.size(); ++k) sum += y[k] * c[k];
+  return sum;
+}
+
+/// A light of bands 0..lmax with coefficients of its own per channel and no symmetry, its mean
+/// well above the rest, as a light has.
+inline ShRgb RandomLight(int lmax, std::uint64_t seed) {
+  Pcg32 rng(seed, 3);
+  ShRgb c(CoeffCount(lmax));
+  for (auto& v : c) v = {rng.NextDouble() - 0.5, rng.NextDouble() - 0.5, rng.NextDouble() - 0.5};
+  c[0] += glm::dvec3(8.0, 7.0, 6.0);
+  return c;
 }
 
 }  // namespace prt::test
