@@ -1,4 +1,5 @@
 #include "app/commands.h"
+#include "core/atomic_file.h"
 #include "core/log.h"
 #include "core/output_folder.h"
 #include "io/png_io.h"
@@ -28,8 +29,11 @@ int RunBasis(const std::vector<std::string>& tokens) {
   args.Finish();
   if (!out) args.Fail("--out FILE.png is required");
   args.RequirePngName("--out", *out);
-  CreateParentFolder(*out);
+  CreatedFolders created;  // removed again if the write fails
+  created.CreateParentOf(*out);
+  AtomicFile::RemoveStale(*out);  // what a killed run left while writing it
   WritePng(*out, DrawBasisChart(lmax, cell));
+  created.Keep();
   Summary("wrote " + *out);
   return 0;
 }

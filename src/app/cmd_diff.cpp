@@ -69,7 +69,7 @@ int Diff(const std::vector<std::string>& tokens) {
   if (out) {
     args.RequirePngName("--out", *out);
     for (const std::string& input : files)
-      if (ResolvedPath(*out) == ResolvedPath(input))
+      if (SameFile(*out, input))
         args.Fail("--out: '" + *out + "' is one of the images compared (expected another name: the difference "
                   "image would replace " + input + ")");
   }

@@ -44,21 +44,21 @@ int RunSampleFiles(const std::vector<std::string>& tokens) {
   const bool replace = args.Flag("--replace");
   SetQuiet(args.Flag("--quiet"));
   args.Finish();
+  // Both folders and all their names are checked before any work; both are finished once all
+  // is written.
   OutputFolder folder(out, {"sample-files", {"sky.hdr", "scene.obj", "scene.mtl"}, replace});
+  std::vector<std::string> faces_names;
+  for (const char* face : kFaceNames) faces_names.push_back(std::string(face) + ".hdr");
+  OutputFolder cube(out + "/sky_cubemap", {"sample-files", faces_names, replace});
   const auto sky = MakeSky(SkyParams{});
   const auto radiance = [&sky](const glm::dvec3& d) { return sky->Radiance(d); };
   WriteFileAtomic(folder.Output("sky.hdr"), EncodeHdr(EquirectImage(radiance, 1024, 512)));
-  {
-    std::vector<std::string> faces_names;
-    for (const char* face : kFaceNames) faces_names.push_back(std::string(face) + ".hdr");
-    OutputFolder cube(out + "/sky_cubemap", {"sample-files", faces_names, replace});
-    const auto faces = CubemapFaceImages(radiance, 128);
-    for (int f = 0; f < 6; ++f) WriteFileAtomic(cube.Output(std::string(kFaceNames[f]) + ".hdr"), EncodeHdr(faces[f]));
-    FinishOutputs(cube);
-  }
+  const auto faces = CubemapFaceImages(radiance, 128);
+  for (int f = 0; f < 6; ++f) WriteFileAtomic(cube.Output(faces_names[f]), EncodeHdr(faces[f]));
   const auto parts = SampleScene();
   WriteFileAtomic(folder.Output("scene.obj"), FormatObj(parts, "scene.mtl"));
   WriteFileAtomic(folder.Output("scene.mtl"), FormatMtl(parts));
+  FinishOutputs(cube);
   FinishOutputs(folder);
   Summary("wrote " + out + "/sky.hdr, " + out + "/sky_cubemap/ (posx ... negz .hdr) and " + out +
           "/scene.obj with scene.mtl");

@@ -131,9 +131,9 @@ std::string NearestPath(const std::string& given) {
       const fs::path folder = path.empty() ? fs::path(".") : path;
       if (!fs::is_directory(folder, ec)) return "";
       std::vector<std::string> names;
-      for (const auto& entry : fs::directory_iterator(folder, ec)) {
+      for (auto it = fs::directory_iterator(folder, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
         if (names.size() >= kMaxEntries) return "";
-        names.push_back(entry.path().filename().string());
+        names.push_back(it->path().filename().string());
       }
       const std::string near = NearestName(part.string(), names);
       if (near.empty()) return "";

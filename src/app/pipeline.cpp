@@ -143,14 +143,15 @@ CachePlan PlanCache(const std::string& option, OutputFolder* folder) {
   if (!fs::exists(dir, ec)) return skip("folder '" + dir.string() + "' does not exist");
   if (!fs::is_directory(dir, ec)) return skip("'" + dir.string() + "' is a file, not a folder");
   // What is there already is replaced only when it is prt's: a cache (however damaged) at any
-  // path, anything prt listed at the output folder's own cache name; an empty file. Never a
-  // device, pipe or socket, never another file (a typo must not cost the user a file).
+  // path, anything prt listed at the output folder's own cache name; an empty --cache file.
+  // Never a device, pipe or socket, never another file (a typo must not cost the user a file).
   const fs::file_status link = fs::symlink_status(path, ec);
   if (fs::exists(link)) {
     if (!fs::is_regular_file(fs::status(path, ec))) return skip("is not a regular file: left alone");
-    // In the output folder, a file prt listed as its own may be replaced whatever it holds.
+    // In the output folder, a file prt listed as its own may be replaced whatever it holds, an
+    // unlisted one only if it is a cache; a --cache file if it is a cache or empty.
     const bool listed = !given && !folder->IsForeign("transport.cache");
-    if (!listed && fs::file_size(path, ec) > 0 && !StartsLikeTransportCache(path))
+    if (!listed && (!given || fs::file_size(path, ec) > 0) && !StartsLikeTransportCache(path))
       return skip("exists and is not a prt transport cache: left as it is");
     if (fs::is_symlink(link)) {
       Warn(what + "is a symbolic link: the cache is read if it matches, but never replaced");

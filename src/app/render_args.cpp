@@ -214,6 +214,11 @@ RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
     const std::string& file = o.vertex_radiance;
     const std::string expected = " (expected a file name in a writable folder for --vertex-radiance)";
     if (file.empty()) args.Fail("--vertex-radiance: an empty name" + expected);
+    if (HasControlCharacter(file))
+      args.Fail("--vertex-radiance: the name has a control character (a newline, a tab)" + expected);
+    if (IsFolderOwnName(file, o))
+      args.Fail("--vertex-radiance: '" + file + "' is the name of one of the run's own files (a frame, the transport "
+                "cache or prt's own .prt-* files; expected another name, such as radiance.txt)");
     if (fs::is_directory(file, ec)) throw Error(file + ": is a folder" + expected);
     fs::path dir = fs::path(file).parent_path();
     if (dir.empty()) dir = ".";
@@ -234,7 +239,7 @@ RenderOptions CompleteRenderOptions(Args& args, RenderOptions o, const SceneOpti
   const std::pair<const char*, const std::string*> written[] = {{"--video", &o.video}, {"--vertex-radiance", &o.vertex_radiance}};
   for (const auto& [option, file] : written)
     for (const std::string& input : {scene.mesh, scene.texture, scene.env})
-      if (!file->empty() && !input.empty() && ResolvedPath(*file) == ResolvedPath(input))
+      if (!file->empty() && !input.empty() && std::filesystem::exists(input) && SameFile(*file, input))
         args.Fail(std::string(option) + ": '" + *file + "' is an input of this run (expected another name: the run would "
                   "replace " + input + ")");
   if (o.view == "transport" && o.transport_index >= CoeffCount(scene.lmax))

@@ -1,6 +1,7 @@
 // RenderJob (pipeline.h): the main job of `render` and `demo`, stage by stage.
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <regex>
 
 #include "app/pipeline.h"
@@ -48,17 +49,24 @@ OutputPlan RenderPlan(const RenderOptions& r) {
 }
 
 /// Frame 0's per-vertex radiance toward the camera (its light not turned), as RenderFrames
-/// shades it, to the --vertex-radiance file `path`: one of the folder's outputs when it lies
-/// there, else written beside it under a temporary name (precompute_io/transport_txt.h).
-void WriteVertexRadiance(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Camera& camera,
-                         const std::string& path, OutputFolder& folder) {
+/// shades it, to the --vertex-radiance file `path` (precompute_io/transport_txt.h): one of the
+/// folder's outputs when it lies there; else written beside it under a temporary name, returned
+/// to be renamed into place when the run has succeeded.
+std::unique_ptr<AtomicFile> WriteVertexRadiance(const Mesh& mesh, const Transport& transport, const ShRgb& light,
+                                                const Camera& camera, const std::string& path, OutputFolder& folder) {
   const glm::dvec3 eye(camera.eye);
-  const bool inside = LiesIn(path, folder.dir());
-  if (!inside) AtomicFile::RemoveStale(path);  // what a killed run left while writing it
-  const std::string write = inside ? folder.Output(std::filesystem::path(path).filename().string()) : path;
-  WriteFileAtomic(write, FormatVertexRadianceTxt(mesh, ShadeVertices(mesh, transport, FirstBands(light, transport.lmax), true, &eye)));
+  const std::string text =
+      FormatVertexRadianceTxt(mesh, ShadeVertices(mesh, transport, FirstBands(light, transport.lmax), true, &eye));
   Summary("vertex radiance: frame 0's linear RGB radiance of " + std::to_string(mesh.vertex_count()) +
           " vertices toward the camera, three rows per face, in " + path);
+  if (LiesIn(path, folder.dir())) {
+    WriteFileAtomic(folder.Output(std::filesystem::path(path).filename().string()), text);
+    return nullptr;
+  }
+  AtomicFile::RemoveStale(path);  // what a killed run left while writing it
+  auto outside = std::make_unique<AtomicFile>(path);
+  WriteFileAtomic(outside->temp_path(), text);
+  return outside;
 }
 
 }  // namespace
@@ -81,7 +89,9 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
   const auto env = LoadSceneEnvironment(scene, &folder);
   const ShRgb light = ComputeLight(*env, scene);
   const Transport transport = ComputeSceneTransport(mesh, scene, cache, &camera, matrices);
-  if (!render.vertex_radiance.empty()) WriteVertexRadiance(mesh, transport, light, camera, render.vertex_radiance, folder);
+  std::unique_ptr<AtomicFile> radiance_outside;
+  if (!render.vertex_radiance.empty())
+    radiance_outside = WriteVertexRadiance(mesh, transport, light, camera, render.vertex_radiance, folder);
   const AxisRotation rotation(render.axis, transport.lmax);
   Summary("rotation: " + rotation.Describe() + "; only the " + std::to_string(CoeffCount(transport.lmax)) +
           " coefficients the transport has are turned");
@@ -101,6 +111,9 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
   if (stats.nan_pixels > 0) Summary("warning: " + std::to_string(stats.nan_pixels) + " NaN pixels set to 0");
   if (const std::string line = video.Finish(); !line.empty()) Summary(line);
   FinishOutputs(folder);
+  // The files outside the folder last: a run that failed before here left the earlier ones.
+  video.Commit();
+  if (radiance_outside) radiance_outside->Commit();
   NoteForeignFrames(folder);
 }
 

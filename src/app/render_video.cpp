@@ -12,16 +12,26 @@
 
 namespace prt {
 namespace fs = std::filesystem;
+bool IsFolderOwnName(const std::string& file, const RenderOptions& o) {
+  const std::string name = fs::path(file).filename().string();
+  static const std::regex frame("frame_[0-9]+\\.png", std::regex::icase);
+  if (LiesIn(file, o.out) && (std::regex_match(name, frame) || name.rfind(".prt", 0) == 0)) return true;
+  const std::string cache = o.cache.empty() ? o.out + "/transport.cache" : o.cache;
+  return o.cache != "none" && ResolvedPath(file) == ResolvedPath(cache);
+}
+
+bool HasControlCharacter(const std::string& file) {
+  for (unsigned char c : file)
+    if (c < 0x20 || c == 0x7f) return true;
+  return false;
+}
+
 namespace {
 
 /// True if `file` names an output the run writes itself: a frame or a file of prt's own in the
 /// output folder, the transport cache, the --vertex-radiance file.
 bool IsRunOutputName(const std::string& file, const RenderOptions& o) {
-  const std::string name = fs::path(file).filename().string();
-  static const std::regex frame("frame_[0-9]+\\.png", std::regex::icase);
-  if (LiesIn(file, o.out) && (std::regex_match(name, frame) || name.rfind(".prt", 0) == 0)) return true;
-  const std::string cache = o.cache.empty() ? o.out + "/transport.cache" : o.cache;
-  return (o.cache != "none" && ResolvedPath(file) == ResolvedPath(cache)) ||
+  return IsFolderOwnName(file, o) ||
          (!o.vertex_radiance.empty() && ResolvedPath(file) == ResolvedPath(o.vertex_radiance));
 }
 
@@ -34,6 +44,8 @@ void ReadVideoOptions(Args& args, RenderOptions& o, const RenderOptions& d) {
   if (!has_video) return;
   o.video = args.String("--video", d.video);
   const std::string& v = o.video;
+  if (HasControlCharacter(v))
+    args.Fail("--video: the name has a control character (a newline, a tab) (expected a plain file name)");
   const auto format = VideoFormatOf(v);
   if (!format)
     args.Fail("--video: '" + v + "' has no video extension (expected .png or .apng for an animated PNG, .mp4 or .webm "
@@ -74,12 +86,15 @@ RenderVideo::RenderVideo(const RenderOptions& o, OutputFolder& folder) : path_(o
 
 RenderVideo::~RenderVideo() = default;
 
+void RenderVideo::Commit() {
+  if (outside_) outside_->Commit();
+  created_.Keep();
+}
+
 std::string RenderVideo::Finish() {
   if (!writer_) return "";
   const auto t0 = std::chrono::steady_clock::now();
   writer_->Finish();
-  if (outside_) outside_->Commit();
-  created_.Keep();
   const VideoSpec& s = writer_->spec();
   const double seconds = SecondsSince(t0);
   return Formatted("video: %s, %s of %d frames of %dx%d at %g fps (%.2f s%s) [%.3f s after the last frame]",

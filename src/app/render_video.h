@@ -19,6 +19,13 @@
 
 namespace prt {
 
+/// True if `file` names a file of the output folder that the run writes or owns itself (a frame,
+/// `.prt-*`, the transport cache): no other output may take that name.
+bool IsFolderOwnName(const std::string& file, const RenderOptions& o);
+
+/// True if `file` has a control character (a newline would break the folder's list of outputs).
+bool HasControlCharacter(const std::string& file);
+
 /// Reads --video and --fps into `o` (after --size and --out): the extension names a format, the
 /// rate suits it, the size suits H.264, the name is not one of the run's other outputs, and
 /// ffmpeg with its encoder is installed for .mp4 and .webm. Throws UsageError (through `args`)
@@ -35,9 +42,11 @@ class RenderVideo {
   /// The writer the frame loop hands each frame to, or null without --video.
   VideoWriter* writer() { return writer_.get(); }
 
-  /// After every frame: completes the video and, outside the output folder, renames it into
-  /// place. Returns the run summary's line ("" without --video).
+  /// After every frame: completes the video. Returns the run summary's line ("" without --video).
   std::string Finish();
+  /// Once the output folder is finished: outside it, renames the video into place (inside it,
+  /// the folder's Finish moved it). Until then a failure leaves the earlier video as it was.
+  void Commit();
 
  private:
   std::string path_;                    ///< the user's name

@@ -21,14 +21,14 @@ namespace fs = std::filesystem;
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   static std::atomic<unsigned> counter{0};
   const fs::path p(path_);
-  const std::string name = "." + p.filename().string() + ".tmp" + std::to_string(::getpid()) +
-                           "_" + std::to_string(counter++);
+  const std::string name = "." + p.filename().string() + kTemporaryTag + std::to_string(::getpid()) + "_" +
+                           std::to_string(counter++);
   temp_ = (p.parent_path() / name).string();
   cleanup_ = CleanupOnSignal(temp_, CleanupKind::kFile);  // before anything creates the file
 }
 
 bool AtomicFile::IsTemporaryName(const std::string& name, long* pid) {
-  static const std::regex pattern("\\..+\\.tmp([0-9]{1,9})_[0-9]+");
+  static const std::regex pattern("\\..+\\.prt-tmp([0-9]{1,9})_[0-9]+");
   std::smatch m;
   if (!std::regex_match(name, m, pattern)) return false;
   if (pid) *pid = std::stol(m[1].str());
@@ -41,12 +41,13 @@ bool AtomicFile::ProcessGone(long pid) {
 
 int AtomicFile::RemoveStale(const std::string& path) {
   const fs::path p(path);
-  const std::string prefix = "." + p.filename().string() + ".tmp";
+  const std::string prefix = "." + p.filename().string() + kTemporaryTag;
   fs::path folder = p.parent_path();
   if (folder.empty()) folder = ".";
   int removed = 0;
   std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+  for (auto it = fs::directory_iterator(folder, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+    const fs::directory_entry& entry = *it;
     const std::string name = entry.path().filename().string();
     long maker = 0;
     if (name.compare(0, prefix.size(), prefix) != 0 || !IsTemporaryName(name, &maker)) continue;

@@ -24,10 +24,13 @@ class AtomicFile {
   /// Where to write the content before Commit().
   const std::string& temp_path() const { return temp_; }
 
+  /// The mark of prt's temporary names, `.<name>.prt-tmp<pid>_<n>`: distinct enough that no
+  /// one else's file is taken for one.
+  static constexpr const char* kTemporaryTag = ".prt-tmp";
   /// True if `name` (a file name without folder) is one of these temporary files,
-  /// `.<name>.tmp<pid>_<n>`; `pid` then receives the process that made it.
+  /// `.<name>.prt-tmp<pid>_<n>`; `pid` then receives the process that made it.
   static bool IsTemporaryName(const std::string& name, long* pid = nullptr);
-  /// Removes the temporary files of `path` (`.<name>.tmp<pid>_<n>` beside it) whose process is
+  /// Removes the temporary files of `path` (`.<name>.prt-tmp<pid>_<n>` beside it) whose process is
   /// gone: what a run killed by SIGKILL left while writing `path`. Returns how many.
   static int RemoveStale(const std::string& path);
   /// True if process `pid` no longer exists (and is not this one).

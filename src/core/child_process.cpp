@@ -156,12 +156,25 @@ ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::stri
   input_ = in[1];
 }
 
+namespace {
+
+/// Waits for the child to exit without reaping it, withdraws it from the signal cleanup, then
+/// reaps it: its pid is never free for another process while the cleanup might still kill it.
+int ReapRegistered(pid_t pid, CleanupOnSignal& cleanup) {
+  siginfo_t info{};
+  while (::waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOWAIT) < 0)
+    if (errno != EINTR) break;
+  cleanup.Release();
+  return Reap(pid);
+}
+
+}  // namespace
+
 ChildProcess::~ChildProcess() {
   if (pid_ < 0) return;
   ::kill(pid_, SIGKILL);
   if (input_ >= 0) ::close(input_);
-  Reap(pid_);
-  cleanup_.Release();
+  ReapRegistered(pid_, cleanup_);
 }
 
 bool ChildProcess::Write(std::string_view bytes) {
@@ -174,8 +187,7 @@ int ChildProcess::Wait() {
   if (pid_ < 0) return -1;
   if (input_ >= 0) ::close(input_);
   input_ = -1;
-  const int code = Reap(pid_);
-  cleanup_.Release();
+  const int code = ReapRegistered(pid_, cleanup_);
   pid_ = -1;
   return code;
 }

@@ -8,6 +8,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "core/atomic_file.h"
@@ -49,12 +50,13 @@ void CreatedFolders::Create(const std::string& dir) {
     if (p.filename().empty()) continue;  // a trailing separator
     missing.insert(missing.begin(), p.string());
   }
+  const std::size_t registered = cleanup_.size();
   for (const std::string& m : missing) cleanup_.emplace_back(m, CleanupKind::kEmptyFolder);
   try {
     CreateFolder(dir);
   } catch (const Error&) {
     for (auto it = missing.rbegin(); it != missing.rend(); ++it) ::rmdir(it->c_str());
-    cleanup_.clear();
+    cleanup_.resize(registered);  // this call's registrations only
     throw;
   }
   made_.insert(made_.end(), missing.begin(), missing.end());
@@ -71,6 +73,15 @@ void CreatedFolders::Keep() {
 }
 
 namespace {
+
+/// What tells whether a file was written since: its inode, size and modification time ("" when
+/// there is no such file). A rename over it gives another inode.
+std::string FileSignature(const std::string& path) {
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) != 0) return "";
+  return std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino) + ":" + std::to_string(st.st_size) + ":" +
+         std::to_string(st.st_mtim.tv_sec) + "." + std::to_string(st.st_mtim.tv_nsec);
+}
 
 /// The list's lines: `command<TAB>name`; a line without a tab (a prt older than the commands'
 /// names in the list) is a file prt wrote for no known command, which no run removes.
@@ -94,16 +105,28 @@ std::map<std::string, std::string> ReadList(const std::string& path) {
 OutputFolder::OutputFolder(std::string dir, OutputPlan plan) : dir_(std::move(dir)), plan_(std::move(plan)) {
   created_.Create(dir_);
   const std::string lock = dir_ + "/" + kLockName;
-  lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (lock_fd_ < 0) throw Error(dir_ + ": cannot use the output folder (" + WriteProblem(lock, errno) + ")");
-  if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
-    char holder[32] = {0};
-    const ssize_t n = ::pread(lock_fd_, holder, sizeof holder - 1, 0);
+  // The lock is the file that has the name now: a run that opened a lock file its holder then
+  // unlinked (at its end) holds a lock on nothing and tries again with the fresh one.
+  for (;;) {
+    lock_fd_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (lock_fd_ < 0 && errno == ELOOP)
+      throw Error(lock + ": is a symbolic link (expected prt's lock file, or none: remove it)");
+    if (lock_fd_ < 0) throw Error(dir_ + ": cannot use the output folder (" + WriteProblem(lock, errno) + ")");
+    if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+      char holder[32] = {0};
+      const ssize_t n = ::pread(lock_fd_, holder, sizeof holder - 1, 0);
+      ::close(lock_fd_);
+      lock_fd_ = -1;
+      throw FolderBusy(dir_ + ": in use by another prt run" + (n > 0 ? " (process " + std::string(holder) + ")" : "") +
+                       " (expected one run per output folder: wait for it to finish, or choose another --out; exit "
+                       "code 75 means try again)");
+    }
+    struct stat held {}, named {};
+    if (::fstat(lock_fd_, &held) == 0 && ::stat(lock.c_str(), &named) == 0 && held.st_dev == named.st_dev &&
+        held.st_ino == named.st_ino)
+      break;
     ::close(lock_fd_);
     lock_fd_ = -1;
-    throw FolderBusy(dir_ + ": in use by another prt run" + (n > 0 ? " (process " + std::string(holder) + ")" : "") +
-                     " (expected one run per output folder: wait for it to finish, or choose another --out; exit "
-                     "code 75 means try again)");
   }
   lock_cleanup_ = CleanupOnSignal(lock, CleanupKind::kFile);
   const std::string pid = std::to_string(::getpid());
@@ -138,7 +161,7 @@ void OutputFolder::Abandon() {
     std::map<std::string, std::string> all = earlier_;
     bool added = false;
     for (const std::string& name : in_place_) {
-      if (earlier_.count(name) || !fs::exists(fs::symlink_status(fs::path(dir_) / name, ec))) continue;
+      if (!WroteInPlace(name) || (earlier_.count(name) && earlier_.at(name) == plan_.command)) continue;
       all[name] = plan_.command;
       added = true;
     }
@@ -202,7 +225,15 @@ std::string OutputFolder::Output(const std::string& name) {
 std::string OutputFolder::OutputInPlace(const std::string& name) {
   std::lock_guard<std::mutex> lock(mutex_);
   in_place_.insert(name);
+  before_.emplace(name, FileSignature(dir_ + "/" + name));
   return dir_ + "/" + name;
+}
+
+bool OutputFolder::WroteInPlace(const std::string& name) const {
+  if (!in_place_.count(name)) return false;
+  const std::string now = FileSignature(dir_ + "/" + name);
+  const auto it = before_.find(name);
+  return !now.empty() && (it == before_.end() || it->second != now);
 }
 
 bool OutputFolder::Wrote(const std::string& name) {
@@ -214,6 +245,12 @@ fs::path ResolvedPath(const std::string& path) {
   std::error_code ec;
   const fs::path p = fs::weakly_canonical(fs::absolute(path, ec), ec);
   return p.lexically_normal();
+}
+
+bool SameFile(const std::string& a, const std::string& b) {
+  if (ResolvedPath(a) == ResolvedPath(b)) return true;
+  std::error_code ec;
+  return fs::exists(a, ec) && fs::exists(b, ec) && fs::equivalent(a, b, ec);
 }
 
 bool LiesIn(const std::string& path, const std::string& dir) {
@@ -237,6 +274,8 @@ bool OutputFolder::IsInput(const std::string& name) const {
 }
 
 OutputFolder::Finished OutputFolder::Finish() {
+  // Not cut in half by a signal: its cleanup waits until the outputs are in place and listed.
+  const SignalCleanupHold hold;
   std::lock_guard<std::mutex> lock(mutex_);
   Finished result;
   std::error_code ec;
@@ -248,47 +287,57 @@ OutputFolder::Finished OutputFolder::Finish() {
     CheckLocked(name);
     to_move.push_back(name);
   }
-  // The files prt did not write that this run replaces (--replace): kept as NAME.orig.
+  // This run's outputs into place. A file prt did not write that one replaces (--replace) first
+  // becomes NAME.orig, never over an existing file, and comes back if the move fails. Each
+  // output moved is listed from then on, even if a later one fails (the destructor lists it).
   for (const auto& name : to_move) {
-    if (!replaced_.count(name) || !IsForeignLocked(name)) continue;
-    const std::string from = dir_ + "/" + name, to = from + kOrigSuffix;
-    if (std::rename(from.c_str(), to.c_str()) != 0) throw Error(to + ": cannot write (" + WriteProblem(to, errno) + ")");
-    result.kept_as_orig.push_back(name + kOrigSuffix);
-  }
-  // This run's outputs into place. Each one moved is listed from then on, even if a later one
-  // fails (the destructor writes the list).
-  for (const auto& name : to_move) {
-    const std::string from = staging() + "/" + name, to = dir_ + "/" + name;
-    if (std::rename(from.c_str(), to.c_str()) != 0) throw Error(to + ": cannot write (" + WriteProblem(to, errno) + ")");
+    const std::string from = staging() + "/" + name, to = dir_ + "/" + name, orig = to + kOrigSuffix;
+    const bool keep = replaced_.count(name) && IsForeignLocked(name);
+    if (keep && ::renameat2(AT_FDCWD, to.c_str(), AT_FDCWD, orig.c_str(), RENAME_NOREPLACE) != 0)
+      throw Error(to + ": cannot keep it as " + name + kOrigSuffix + " (" +
+                  (errno == EEXIST ? std::string("which exists already") : WriteProblem(orig, errno)) + ")");
+    if (std::rename(from.c_str(), to.c_str()) != 0) {
+      const int error = errno;
+      if (keep) std::rename(orig.c_str(), to.c_str());
+      throw Error(to + ": cannot write (" + WriteProblem(to, error) + ")");
+    }
+    if (keep) result.kept_as_orig.push_back(name + kOrigSuffix);
     in_place_.insert(name);
   }
-  // What earlier runs wrote: this command's leftovers are removed, the other commands' kept.
+  // The new list: this run's outputs, the other commands' files, and a file this run named but
+  // did not rewrite (a reused cache) under the command that wrote it. This command's earlier
+  // outputs that it did not write again are removed, but only once the list no longer names them.
   std::map<std::string, std::string> list;
+  std::vector<std::string> leftovers;
   for (const auto& [name, command] : earlier_) {
-    if (in_place_.count(name)) continue;
-    const fs::path p = fs::path(dir_) / name;
-    if (!fs::exists(fs::symlink_status(p, ec))) continue;  // gone: no longer listed
-    if (command != plan_.command) {
-      list[name] = command;  // another command's deliverable (or an unknown command's): kept
+    const bool exists = fs::exists(fs::symlink_status(fs::path(dir_) / name, ec));
+    if (!exists || WroteInPlace(name)) continue;  // gone, or listed below as this run's
+    if (in_place_.count(name) || command != plan_.command) {
+      list[name] = command;  // not rewritten, or another command's (an unknown command's) deliverable: kept
       continue;
     }
     if (IsInput(name)) continue;  // read by this run: kept, and no longer listed as prt's
-    if (fs::is_regular_file(fs::symlink_status(p, ec)) && fs::remove(p, ec)) result.removed.push_back(name);
-  }
-  // Temporary files of prt runs that were killed mid-write (core/atomic_file.h names them
-  // `.<name>.tmp<pid>_<n>`): removed once their process is gone. This run holds the folder, so
-  // no live run of prt can be writing them here.
-  for (const auto& entry : fs::directory_iterator(dir_, ec)) {
-    long maker = 0;
-    const std::string name = entry.path().filename().string();
-    if (!AtomicFile::IsTemporaryName(name, &maker)) continue;
-    if (AtomicFile::ProcessGone(maker) && fs::remove(entry.path(), ec)) result.removed.push_back(name);
+    leftovers.push_back(name);
   }
   for (const auto& name : in_place_)
-    if (fs::exists(fs::symlink_status(fs::path(dir_) / name, ec))) list[name] = plan_.command;
+    if (WroteInPlace(name)) list[name] = plan_.command;
   WriteList(list);
   finished_ = true;
   created_.Keep();
+  for (const auto& name : leftovers) {
+    const fs::path p = fs::path(dir_) / name;
+    if (fs::is_regular_file(fs::symlink_status(p, ec)) && fs::remove(p, ec)) result.removed.push_back(name);
+  }
+  // Temporary files of prt runs that were killed mid-write (core/atomic_file.h names them
+  // `.<name>.prt-tmp<pid>_<n>`): removed once their process is gone. This run holds the folder,
+  // so no live run of prt can be writing them here.
+  for (auto it = fs::directory_iterator(dir_, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
+    long maker = 0;
+    const std::string name = it->path().filename().string();
+    if (!AtomicFile::IsTemporaryName(name, &maker)) continue;
+    std::error_code removing;
+    if (AtomicFile::ProcessGone(maker) && fs::remove(it->path(), removing)) result.removed.push_back(name);
+  }
   return result;
 }
 

@@ -83,6 +83,10 @@ std::filesystem::path ResolvedPath(const std::string& path);
 /// Creates the folder a file `path` is to be written into, if missing (see CreateFolder).
 void CreateParentFolder(const std::string& path);
 
+/// True if `a` and `b` name the same file: the same resolved path, or (both existing) the same
+/// file by device and inode (another spelling on a case-insensitive mount, a hard link).
+bool SameFile(const std::string& a, const std::string& b);
+
 /// True if the file `path` lies directly in the folder `dir` (neither need exist yet; the
 /// folders are resolved, the file itself is not: a link named there is written there).
 bool LiesIn(const std::string& path, const std::string& dir);
@@ -124,8 +128,9 @@ class OutputFolder {
   std::string Output(const std::string& name);
 
   /// Where to write the output file `name` directly in the folder, for a file that is valid on
-  /// its own however the run ends (a checked cache). Recorded as an output of this run. Not
-  /// checked: the caller replaces only a file it recognises as its own (the cache's header).
+  /// its own however the run ends (a checked cache). Listed as this run's output only if the run
+  /// writes it (a cache reused as it is stays its writer's). Not checked: the caller replaces
+  /// only a file it recognises as its own (the cache's header).
   std::string OutputInPlace(const std::string& name);
 
   /// True if this run named `name` as an output.
@@ -160,6 +165,8 @@ class OutputFolder {
 
  private:
   void CheckLocked(const std::string& name);
+  /// True if this run named `name` in place and the file there is new or was rewritten since.
+  bool WroteInPlace(const std::string& name) const;
   void WriteList(const std::map<std::string, std::string>& entries) const;
   bool IsForeignLocked(const std::string& name) const;
   bool IsInput(const std::string& name) const;
@@ -174,6 +181,7 @@ class OutputFolder {
   std::map<std::string, std::string> earlier_;  ///< name -> command, as the list said when the run started
   std::set<std::string> staged_;    ///< this run's outputs written to the staging folder
   std::set<std::string> in_place_;  ///< this run's outputs written directly
+  std::map<std::string, std::string> before_;  ///< in-place names: the file's signature when named
   std::set<std::string> replaced_;  ///< names whose file prt did not write (to keep as NAME.orig)
   std::vector<std::string> inputs_;  ///< absolute, normalised paths this run reads
   bool finished_ = false;

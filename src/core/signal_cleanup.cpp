@@ -1,6 +1,7 @@
 #include "core/signal_cleanup.h"
 
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <map>
@@ -20,7 +21,7 @@ struct Entry {
 };
 
 struct Registry {
-  std::mutex mutex;
+  std::recursive_mutex mutex;  ///< recursive: a SignalCleanupHold's thread registers meanwhile
   std::map<std::uint64_t, Entry> entries;  ///< by registration order: ids only grow
   std::uint64_t next = 1;
 };
@@ -29,6 +30,9 @@ Registry& TheRegistry() {
   static Registry* registry = new Registry;  // never destroyed: the watcher may outlive main's statics
   return *registry;
 }
+
+/// How long the watcher waits before its second pass over the files.
+constexpr std::chrono::milliseconds kSecondPassDelay{50};
 
 sigset_t& OriginalMask() {
   static sigset_t mask;
@@ -44,11 +48,12 @@ sigset_t Watched() {
   return set;
 }
 
-/// Kills and reaps the children, then removes the files and folders, newest first (a folder
-/// is registered before what is made in it). Called with the registry locked, never unlocked.
-void CleanUp(const std::map<std::uint64_t, Entry>& entries) {
+/// Kills and reaps the children (`children`), then removes the files and folders, newest first
+/// (a folder is registered before what is made in it). Called with the registry locked, never
+/// unlocked.
+void CleanUp(const std::map<std::uint64_t, Entry>& entries, bool children) {
   for (const auto& [id, e] : entries) {
-    if (e.child <= 0) continue;
+    if (e.child <= 0 || !children) continue;
     ::kill(e.child, SIGKILL);
     int status = 0;
     while (::waitpid(e.child, &status, 0) < 0 && errno == EINTR) {
@@ -76,7 +81,11 @@ void Watch(sigset_t set) {
   }
   Registry& r = TheRegistry();
   r.mutex.lock();  // held until the process ends: nothing registers, so nothing new is created
-  CleanUp(r.entries);
+  CleanUp(r.entries, true);
+  // A thread that registered a name just before may create the file just after the first pass:
+  // a second pass, once such a thread has had time to (creating a file takes microseconds).
+  std::this_thread::sleep_for(kSecondPassDelay);
+  CleanUp(r.entries, false);
   // End by the same signal, with its default action.
   std::signal(sig, SIG_DFL);
   sigset_t one;
@@ -89,7 +98,7 @@ void Watch(sigset_t set) {
 
 std::uint64_t Add(Entry e) {
   Registry& r = TheRegistry();
-  std::lock_guard<std::mutex> lock(r.mutex);
+  std::lock_guard<std::recursive_mutex> lock(r.mutex);
   const std::uint64_t id = r.next++;
   r.entries.emplace(id, std::move(e));
   return id;
@@ -109,7 +118,7 @@ CleanupOnSignal::CleanupOnSignal(std::string path, CleanupKind kind) : id_(Add({
 
 std::uint64_t CleanupOnSignal::LockAndAdd(const std::function<pid_t()>& make_child) {
   Registry& r = TheRegistry();
-  std::lock_guard<std::mutex> lock(r.mutex);
+  std::lock_guard<std::recursive_mutex> lock(r.mutex);
   const pid_t child = make_child();
   if (child <= 0) return 0;
   const std::uint64_t id = r.next++;
@@ -129,14 +138,17 @@ CleanupOnSignal& CleanupOnSignal::operator=(CleanupOnSignal&& other) noexcept {
 void CleanupOnSignal::Release() {
   if (id_ == 0) return;
   Registry& r = TheRegistry();
-  std::lock_guard<std::mutex> lock(r.mutex);
+  std::lock_guard<std::recursive_mutex> lock(r.mutex);
   r.entries.erase(id_);
   id_ = 0;
 }
 
+SignalCleanupHold::SignalCleanupHold() { TheRegistry().mutex.lock(); }
+SignalCleanupHold::~SignalCleanupHold() { TheRegistry().mutex.unlock(); }
+
 std::size_t RegisteredCleanups() {
   Registry& r = TheRegistry();
-  std::lock_guard<std::mutex> lock(r.mutex);
+  std::lock_guard<std::recursive_mutex> lock(r.mutex);
   return r.entries.size();
 }
 

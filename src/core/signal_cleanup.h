@@ -14,9 +14,11 @@
 /// first, then ends the process by the same signal with its default action (exit status
 /// 128 + signal, as the shell expects).
 ///
-/// Registration takes the same lock before the file is created (AtomicFile registers its name
-/// before it opens it), so a thread cannot create a registered file once the cleanup has run.
-/// A SIGKILL cannot be caught: the next run of prt sweeps what it left (OutputFolder::Finish for
+/// A name is registered before the file is created (AtomicFile registers its name before it
+/// opens it), and the watcher never lets go of the registry, so no file is registered after the
+/// cleanup began; one registered just before and created during the first pass is removed by a
+/// second pass 50 ms later. SignalCleanupHold defers the cleanup over a step that must not be
+/// cut in half (OutputFolder::Finish moving the outputs into place). A SIGKILL cannot be caught: the next run of prt sweeps what it left (OutputFolder::Finish for
 /// the output folder, AtomicFile::RemoveStale beside single-file outputs).
 ///
 /// Without InstallSignalCleanup (the tests' own processes) the registry is kept and never used.
@@ -73,6 +75,16 @@ class CleanupOnSignal {
   static std::uint64_t LockAndAdd(const std::function<pid_t()>& make_child);
 
   std::uint64_t id_ = 0;
+};
+
+/// While one lives, a signal's cleanup waits (then runs on what is registered once it ends): for a
+/// step that must not be cut in half. Its own thread may register and release meanwhile.
+class SignalCleanupHold {
+ public:
+  SignalCleanupHold();
+  ~SignalCleanupHold();
+  SignalCleanupHold(const SignalCleanupHold&) = delete;
+  SignalCleanupHold& operator=(const SignalCleanupHold&) = delete;
 };
 
 /// How many registrations are live (for tests).

@@ -1,8 +1,10 @@
 #include "video/ffmpeg_encoder.h"
 
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include "core/error.h"
@@ -14,14 +16,12 @@ namespace {
 /// The encoder's threads: fixed, so that prt's --threads does not reach the file (see the header).
 constexpr const char* kEncoderThreads = "4";
 
-/// A new empty file for ffmpeg's messages, in $TMPDIR or /tmp.
-std::string MakeLogFile() {
+/// A name for a new file of ffmpeg's messages, in $TMPDIR or /tmp: this process's own.
+std::string LogName() {
+  static std::atomic<unsigned> counter{0};
   const char* tmp = std::getenv("TMPDIR");
-  std::string path = std::string(tmp && *tmp ? tmp : "/tmp") + "/prt-ffmpeg-XXXXXX";
-  const int fd = ::mkstemp(path.data());
-  if (fd < 0) return "/dev/null";
-  ::close(fd);
-  return path;
+  return std::string(tmp && *tmp ? tmp : "/tmp") + "/prt-ffmpeg-" + std::to_string(::getpid()) + "-" +
+         std::to_string(counter++) + ".log";
 }
 
 }  // namespace
@@ -70,9 +70,22 @@ std::vector<std::string> FfmpegArguments(const std::string& program, FfmpegCodec
 
 FfmpegEncoder::FfmpegEncoder(const std::string& program, FfmpegCodec codec, const std::string& path, std::string name,
                              int width, int height, double fps)
-    : name_(std::move(name)), log_(MakeLogFile()), width_(width), height_(height) {
-  if (log_ != "/dev/null") log_cleanup_ = CleanupOnSignal(log_, CleanupKind::kFile);
-  child_ = std::make_unique<ChildProcess>(FfmpegArguments(program, codec, width, height, fps, path), log_);
+    : name_(std::move(name)), log_(LogName()), width_(width), height_(height) {
+  // Registered for the signal cleanup before it exists; without a place for it, no log.
+  log_cleanup_ = CleanupOnSignal(log_, CleanupKind::kFile);
+  const int fd = ::open(log_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
+  if (fd < 0) {
+    log_cleanup_.Release();
+    log_ = "/dev/null";
+  } else {
+    ::close(fd);
+  }
+  try {
+    child_ = std::make_unique<ChildProcess>(FfmpegArguments(program, codec, width, height, fps, path), log_);
+  } catch (...) {
+    if (log_ != "/dev/null") std::remove(log_.c_str());  // the destructor does not run
+    throw;
+  }
 }
 
 FfmpegEncoder::~FfmpegEncoder() {

@@ -156,6 +156,11 @@ TEST_SUITE("app") {
     CHECK(render.err.find("transport: taken from the cache") != std::string::npos);  // precompute's, reused
     CHECK(ReadFile(dir + "/light.txt") == light);
     CHECK(ReadFile(dir + "/transport.txt") == transport);
+    // The cache the render reused as it was stays the precompute's: a render without a cache
+    // does not remove it.
+    CHECK(ReadFile(dir + "/" + OutputFolder::kListName).find("precompute\ttransport.cache\n") != std::string::npos);
+    CHECK(test::RunPrt(Render(dir, 3) + " --cache none --quiet").exit_code == 0);
+    CHECK(fs::exists(dir + "/transport.cache"));
     // A precompute keeps the frames; a render of fewer frames removes only its own extra ones.
     REQUIRE(test::RunPrt(Precompute(dir) + " --albedo 0.5,0.5,0.5 --quiet").exit_code == 0);
     CHECK(fs::exists(dir + "/frame_0002.png"));
@@ -165,10 +170,36 @@ TEST_SUITE("app") {
     CHECK(fs::exists(dir + "/light.txt"));
     CHECK(fs::exists(dir + "/transport.txt"));
     CHECK_FALSE(fs::exists(dir + "/frame_0001.png"));
-    // The list says which command wrote what.
+    // The list says which command wrote what (the cache: the render, whose other albedo rewrote it).
     const std::string list = ReadFile(dir + "/" + OutputFolder::kListName);
     CHECK(list.find("precompute\tlight.txt\n") != std::string::npos);
     CHECK(list.find("render\tframe_0000.png\n") != std::string::npos);
+    CHECK(list.find("render\ttransport.cache\n") != std::string::npos);
+  }
+
+  TEST_CASE("files kept: a NAME.orig that appears during the run is never overwritten, nor NAME lost") {
+    const std::string dir = test::ScratchDir("kept_orig_late");
+    std::ofstream(dir + "/a.txt") << "the user's a\n";
+    {
+      OutputFolder folder(dir, {"test", {"a.txt"}, true});
+      WriteFileAtomic(folder.Output("a.txt"), "prt's a\n");
+      std::ofstream(dir + "/a.txt.orig") << "the user's own backup\n";  // made while the run went on
+      CHECK_THROWS_WITH_AS(folder.Finish(), doctest::Contains("which exists already"), Error);
+    }
+    CHECK(ReadFile(dir + "/a.txt") == "the user's a\n");
+    CHECK(ReadFile(dir + "/a.txt.orig") == "the user's own backup\n");
+  }
+
+  TEST_CASE("files kept: output names with control characters or naming the folder's own files are refused") {
+    const std::string dir = test::ScratchDir("kept_names");
+    for (const std::string& option : {"--video " + Q(dir + "/a\nb.png"), "--vertex-radiance " + Q(dir + "/out/a\nlight.txt"),
+                                      "--vertex-radiance " + Q(dir + "/out/frame_0000.png"),
+                                      "--vertex-radiance " + Q(dir + "/out/.prt-lock")}) {
+      CAPTURE(option);
+      const auto r = test::RunPrt(Render(dir + "/out", 1) + " " + option);
+      CHECK(r.exit_code == 2);
+      CHECK_FALSE(fs::exists(dir + "/out"));
+    }
   }
 
   TEST_CASE("files kept: prt diff refuses an --out that is one of its inputs (exit 2)") {
@@ -230,10 +261,15 @@ TEST_SUITE("app") {
                                           "case \"$*\" in *-encoders*) echo ' V....D libx264  H.264'; exit 0;; esac\n"
                                           "exit 3\n";
     fs::permissions(dir + "/bin/ffmpeg", fs::perms::owner_all);
+    // The --vertex-radiance file outside the folder, written early, is renamed into place only
+    // when the run succeeds.
     const auto video = test::RunCommand("PATH=" + Q(dir + "/bin") + ":\"$PATH\" " + Q(test::PrtBinary()) + " " +
-                                        Render(dir + "/v", 12, "64x48") + " --video " + Q(dir + "/videos/deep/turn.mp4"));
+                                        Render(dir + "/v", 12, "64x48") + " --video " + Q(dir + "/videos/deep/turn.mp4") +
+                                        " --vertex-radiance " + Q(dir + "/radiance.txt"));
     CHECK(video.exit_code == 1);
     CHECK_FALSE(fs::exists(dir + "/videos"));
+    CHECK_FALSE(fs::exists(dir + "/radiance.txt"));
+    CHECK(Temporaries(dir).empty());
   }
 
   TEST_CASE("files kept: SIGTERM and SIGINT leave no temporary file, staging folder or lock (animated PNG)") {
@@ -252,19 +288,22 @@ TEST_SUITE("app") {
   TEST_CASE("files kept: a later run sweeps the temporaries SIGKILL left beside its single-file outputs") {
     const std::string dir = test::ScratchDir("kept_sigkill_sweep");
     const std::string gone = std::to_string(GonePid());
-    const std::set<std::string> stale = {".turn.png.tmp" + gone + "_0", ".radiance.txt.tmp" + gone + "_3",
-                                         ".diff.png.tmp" + gone + "_1"};
+    const std::string tag = AtomicFile::kTemporaryTag;
+    const std::set<std::string> stale = {".turn.png" + tag + gone + "_0", ".radiance.txt" + tag + gone + "_3",
+                                         ".diff.png" + tag + gone + "_1"};
     for (const std::string& name : stale) std::ofstream(dir + "/" + name) << "partial";
     // Someone else's temporary-looking files, and a live process's, are not prt's to remove.
-    const std::string live = ".turn.png.tmp" + std::to_string(::getpid()) + "_0";
+    const std::string live = ".turn.png" + tag + std::to_string(::getpid()) + "_0";
     std::ofstream(dir + "/" + live) << "being written";
-    std::ofstream(dir + "/.other.png.tmp" + gone + "_0") << "not an output of this run";
+    std::ofstream(dir + "/.other.png" + tag + gone + "_0") << "not an output of this run";
+    std::ofstream(dir + "/.turn.png.tmp" + gone + "_0") << "someone else's, named like an older prt's";
     const auto r = test::RunPrt(Render(dir + "/out", 2) + " --quiet --video " + Q(dir + "/turn.png") +
                                 " --vertex-radiance " + Q(dir + "/radiance.txt"));
     CHECK(r.exit_code == 0);
     REQUIRE(test::RunPrt("diff " + Q(test::FramePath(dir + "/out", 0, 2)) + " " + Q(test::FramePath(dir + "/out", 1, 2)) +
                          " --max-abs 255 --out " + Q(dir + "/diff.png")).exit_code == 0);
-    CHECK(Temporaries(dir) == std::set<std::string>{live, ".other.png.tmp" + gone + "_0"});
+    CHECK(Temporaries(dir) == std::set<std::string>{live, ".other.png" + tag + gone + "_0"});
+    CHECK(fs::exists(dir + "/.turn.png.tmp" + gone + "_0"));
   }
 
   TEST_CASE("files kept: the same run twice gives the same bytes: frames, .png, .mp4 and .webm videos" *

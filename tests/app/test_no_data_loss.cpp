@@ -3,7 +3,7 @@
 // every frame either the old complete file or a new complete one, never a truncated file.
 //
 // What SIGKILL can leave: the one temporary file being written at the kill (named
-// `.frame_NNNN.png.tmp<pid>_<n>`: a dot file, ignored by every reader, never counted as a
+// `.frame_NNNN.png.prt-tmp<pid>_<n>`: a dot file, ignored by every reader, never counted as a
 // frame), and the folder's lock file, which is held by no process once the run is dead. A later
 // successful run into the folder removes the temporary file (its writer's pid, in its name, is
 // gone) and reuses the lock (core/output_folder.h).
@@ -39,7 +39,7 @@ std::string MarkerPng(unsigned char level) {
   return EncodePng(image);
 }
 
-bool IsTemp(const std::string& name) { return name[0] == '.' && name.find(".tmp") != std::string::npos; }
+bool IsTemp(const std::string& name) { return AtomicFile::IsTemporaryName(name); }
 
 /// Writes frame_0000.png .. frame_{n-1}.png as markers; returns their bytes by name. `by_prt`:
 /// as an earlier prt render would (listed as its outputs), else as someone else's files.
