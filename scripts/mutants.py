@@ -71,7 +71,8 @@ def sync(source, target):
 
 
 def run(cmd, **kw):
-    return subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, **kw)
+    # A failing check may print raw bytes (two files compared byte for byte): never a crash here.
+    return subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, encoding="utf-8", errors="replace", **kw)
 
 
 def main():

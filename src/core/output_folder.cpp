@@ -172,7 +172,8 @@ void OutputFolder::Abandon() {
     }
   }
   // Unlinked before it is released: a run that opened the old file meanwhile finds it locked
-  // and is refused; one that starts later creates a fresh lock.
+  // and is refused, or, locking it once released, sees that it is no longer the folder's lock
+  // and takes a fresh one; one that starts later creates a fresh lock.
   ::unlink((dir_ + "/" + kLockName).c_str());
   lock_cleanup_.Release();
   ::close(lock_fd_);
