@@ -130,6 +130,10 @@ bool KillWhenFileAppears(int pid, const std::string& path) {
 
 std::string FramePath(const std::string& dir, int i, int count) { return dir + "/" + FrameName(i, count); }
 
+std::string QuickRender(const std::string& out, int frames, const std::string& size) {
+  return "render " + QuickScene() + " --size " + size + " --frames " + std::to_string(frames) + " --out " + Q(out);
+}
+
 RunResult RunPrt(const std::string& arguments) { return RunCommand(ShellQuote(PrtBinary()) + " " + arguments); }
 
 RunResult RunCommand(const std::string& command) {

@@ -60,6 +60,9 @@ inline std::string Q(const std::string& text) { return ShellQuote(text); }
 /// furnace, closed-form transport.
 std::string QuickScene();
 
+/// `render` of QuickScene(), `frames` frames of `size`, into `out`: the arguments for RunPrt.
+std::string QuickRender(const std::string& out, int frames, const std::string& size = "16x12");
+
 /// Writes dir/scene.obj and dir/scene.mtl: a floor (side 2 at y = 0, 8 x 8 quads, first in the
 /// file) of colour `floor_kd`, and beside it a wall (a box x in [-1.25, -1.05], 1.5 high) of
 /// colour `wall_kd`. The floor sees only the wall, so its bounce light is the wall's colour. The

@@ -1,5 +1,4 @@
 #include "app/commands.h"
-#include "core/atomic_file.h"
 #include "core/log.h"
 #include "core/output_folder.h"
 #include "io/png_io.h"
@@ -29,11 +28,9 @@ int RunBasis(const std::vector<std::string>& tokens) {
   args.Finish();
   if (!out) args.Fail("--out FILE.png is required");
   args.RequirePngName("--out", *out);
-  CreatedFolders created;  // removed again if the write fails
-  created.CreateParentOf(*out);
-  AtomicFile::RemoveStale(*out);  // what a killed run left while writing it
-  WritePng(*out, DrawBasisChart(lmax, cell));
-  created.Keep();
+  SingleFileOutput file(*out);
+  file.Write(EncodePng(DrawBasisChart(lmax, cell)));
+  file.Commit();
   Summary("wrote " + *out);
   return 0;
 }

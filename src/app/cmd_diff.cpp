@@ -6,7 +6,6 @@
 #include <limits>
 
 #include "app/commands.h"
-#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/output_folder.h"
 #include "io/png_io.h"
@@ -84,11 +83,9 @@ int Diff(const std::vector<std::string>& tokens) {
   std::printf("%s\n", FormatDiffMetrics(metrics).c_str());
   std::fflush(stdout);
   if (out) {
-    CreatedFolders created;  // removed again if the write fails
-    created.CreateParentOf(*out);
-    AtomicFile::RemoveStale(*out);  // what a killed run left while writing it
-    WritePng(*out, AmplifiedDifference(a, b));
-    created.Keep();
+    SingleFileOutput file(*out);
+    file.Write(EncodePng(AmplifiedDifference(a, b)));
+    file.Commit();
   }
   const std::string exceeded = Exceeded(metrics, limits);
   if (!exceeded.empty() && !quiet) {

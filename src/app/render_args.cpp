@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <regex>
 #include <sstream>
 
 #include <glm/geometric.hpp>
@@ -14,6 +15,7 @@
 #include "app/render_video.h"
 #include "core/atomic_file.h"  // WriteProblem
 #include "core/error.h"
+#include "core/output_folder.h"
 #include "core/text.h"
 #include "raster/camera.h"
 #include "raster/rasterizer.h"
@@ -153,6 +155,20 @@ void ReadCamera(Args& args, RenderOptions& o) {
 }
 
 }  // namespace
+
+bool IsFolderOwnName(const std::string& file, const RenderOptions& o) {
+  const std::string name = std::filesystem::path(file).filename().string();
+  static const std::regex frame("frame_[0-9]+\\.png", std::regex::icase);
+  if (LiesIn(file, o.out) && (std::regex_match(name, frame) || name.rfind(".prt", 0) == 0)) return true;
+  const std::string cache = o.cache.empty() ? o.out + "/transport.cache" : o.cache;
+  return o.cache != "none" && ResolvedPath(file) == ResolvedPath(cache);
+}
+
+bool HasControlCharacter(const std::string& file) {
+  for (unsigned char c : file)
+    if (c < 0x20 || c == 0x7f) return true;
+  return false;
+}
 
 const std::vector<std::string>& AllRenderOptionNames() {
   static const std::vector<std::string> names = {

@@ -23,6 +23,13 @@ const std::vector<std::string>& AllRenderOptionNames();
 OptionGroup RenderOptionGroup(const RenderOptions& defaults, const std::vector<std::string>& names,
                               const std::string& title = "render options");
 
+/// True if `file` names a file of the output folder that the run writes or owns itself (a frame,
+/// `.prt-*`, the transport cache): --video and --vertex-radiance may not take that name.
+bool IsFolderOwnName(const std::string& file, const RenderOptions& o);
+
+/// True if `file` has a control character (a newline would break the folder's list of outputs).
+bool HasControlCharacter(const std::string& file);
+
 /// Reads the render options the command's table lists, with `defaults` for what is not given.
 RenderOptions ReadRenderOptions(Args& args, const RenderOptions& defaults);
 

@@ -52,8 +52,9 @@ OutputPlan RenderPlan(const RenderOptions& r) {
 /// shades it, to the --vertex-radiance file `path` (precompute_io/transport_txt.h): one of the
 /// folder's outputs when it lies there; else written beside it under a temporary name, returned
 /// to be renamed into place when the run has succeeded.
-std::unique_ptr<AtomicFile> WriteVertexRadiance(const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                                                const Camera& camera, const std::string& path, OutputFolder& folder) {
+std::unique_ptr<SingleFileOutput> WriteVertexRadiance(const Mesh& mesh, const Transport& transport, const ShRgb& light,
+                                                      const Camera& camera, const std::string& path,
+                                                      OutputFolder& folder) {
   const glm::dvec3 eye(camera.eye);
   const std::string text =
       FormatVertexRadianceTxt(mesh, ShadeVertices(mesh, transport, FirstBands(light, transport.lmax), true, &eye));
@@ -63,9 +64,8 @@ std::unique_ptr<AtomicFile> WriteVertexRadiance(const Mesh& mesh, const Transpor
     WriteFileAtomic(folder.Output(std::filesystem::path(path).filename().string()), text);
     return nullptr;
   }
-  AtomicFile::RemoveStale(path);  // what a killed run left while writing it
-  auto outside = std::make_unique<AtomicFile>(path);
-  WriteFileAtomic(outside->temp_path(), text);
+  auto outside = std::make_unique<SingleFileOutput>(path);
+  outside->Write(text);
   return outside;
 }
 
@@ -89,7 +89,7 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
   const auto env = LoadSceneEnvironment(scene, &folder);
   const ShRgb light = ComputeLight(*env, scene);
   const Transport transport = ComputeSceneTransport(mesh, scene, cache, &camera, matrices);
-  std::unique_ptr<AtomicFile> radiance_outside;
+  std::unique_ptr<SingleFileOutput> radiance_outside;
   if (!render.vertex_radiance.empty())
     radiance_outside = WriteVertexRadiance(mesh, transport, light, camera, render.vertex_radiance, folder);
   const AxisRotation rotation(render.axis, transport.lmax);

@@ -12,20 +12,6 @@
 
 namespace prt {
 namespace fs = std::filesystem;
-bool IsFolderOwnName(const std::string& file, const RenderOptions& o) {
-  const std::string name = fs::path(file).filename().string();
-  static const std::regex frame("frame_[0-9]+\\.png", std::regex::icase);
-  if (LiesIn(file, o.out) && (std::regex_match(name, frame) || name.rfind(".prt", 0) == 0)) return true;
-  const std::string cache = o.cache.empty() ? o.out + "/transport.cache" : o.cache;
-  return o.cache != "none" && ResolvedPath(file) == ResolvedPath(cache);
-}
-
-bool HasControlCharacter(const std::string& file) {
-  for (unsigned char c : file)
-    if (c < 0x20 || c == 0x7f) return true;
-  return false;
-}
-
 namespace {
 
 /// True if `file` names an output the run writes itself: a frame or a file of prt's own in the
@@ -76,9 +62,7 @@ RenderVideo::RenderVideo(const RenderOptions& o, OutputFolder& folder) : path_(o
   if (LiesIn(o.video, folder.dir())) {
     write_path = folder.Output(fs::path(o.video).filename().string());
   } else {
-    created_.CreateParentOf(o.video);
-    AtomicFile::RemoveStale(o.video);  // what a killed run left while writing it
-    outside_ = std::make_unique<AtomicFile>(o.video);
+    outside_ = std::make_unique<SingleFileOutput>(o.video);
     write_path = outside_->temp_path();
   }
   writer_ = std::make_unique<VideoWriter>(spec, write_path, o.video);
@@ -88,7 +72,6 @@ RenderVideo::~RenderVideo() = default;
 
 void RenderVideo::Commit() {
   if (outside_) outside_->Commit();
-  created_.Keep();
 }
 
 std::string RenderVideo::Finish() {

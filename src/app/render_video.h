@@ -13,18 +13,10 @@
 
 #include "app/args.h"
 #include "app/render_args.h"
-#include "core/atomic_file.h"
 #include "core/output_folder.h"
 #include "video/video_writer.h"
 
 namespace prt {
-
-/// True if `file` names a file of the output folder that the run writes or owns itself (a frame,
-/// `.prt-*`, the transport cache): no other output may take that name.
-bool IsFolderOwnName(const std::string& file, const RenderOptions& o);
-
-/// True if `file` has a control character (a newline would break the folder's list of outputs).
-bool HasControlCharacter(const std::string& file);
 
 /// Reads --video and --fps into `o` (after --size and --out): the extension names a format, the
 /// rate suits it, the size suits H.264, the name is not one of the run's other outputs, and
@@ -49,9 +41,8 @@ class RenderVideo {
   void Commit();
 
  private:
-  std::string path_;                    ///< the user's name
-  CreatedFolders created_;              ///< the video's folders this run made (removed if it fails)
-  std::unique_ptr<AtomicFile> outside_;  ///< the temporary file of a video outside the folder
+  std::string path_;                           ///< the user's name
+  std::unique_ptr<SingleFileOutput> outside_;  ///< a video outside the folder
   std::unique_ptr<VideoWriter> writer_;
 };
 

@@ -27,37 +27,59 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
   cleanup_ = CleanupOnSignal(temp_, CleanupKind::kFile);  // before anything creates the file
 }
 
-bool AtomicFile::IsTemporaryName(const std::string& name, long* pid) {
-  static const std::regex pattern("\\..+\\.prt-tmp([0-9]{1,9})_[0-9]+");
+namespace {
+
+/// What follows kTemporaryTag in a temporary name: `<pid>_<n>`; the pid into `pid`.
+bool IsTemporarySuffix(const std::string& suffix, long* pid) {
+  static const std::regex pattern("([0-9]{1,9})_[0-9]+");
   std::smatch m;
-  if (!std::regex_match(name, m, pattern)) return false;
+  if (!std::regex_match(suffix, m, pattern)) return false;
   if (pid) *pid = std::stol(m[1].str());
   return true;
+}
+
+}  // namespace
+
+bool AtomicFile::IsTemporaryName(const std::string& name, long* pid) {
+  const std::size_t tag = name.rfind(kTemporaryTag);
+  return name.size() > 1 && name[0] == '.' && tag != std::string::npos && tag > 1 &&
+         IsTemporarySuffix(name.substr(tag + std::string(kTemporaryTag).size()), pid);
 }
 
 bool AtomicFile::ProcessGone(long pid) {
   return pid > 0 && pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH;
 }
 
-int AtomicFile::RemoveStale(const std::string& path) {
-  const fs::path p(path);
-  const std::string prefix = "." + p.filename().string() + kTemporaryTag;
-  fs::path folder = p.parent_path();
-  if (folder.empty()) folder = ".";
-  int removed = 0;
+std::vector<std::string> AtomicFile::RemoveStaleIn(const std::string& folder, const std::string& name) {
+  const std::string prefix = name.empty() ? "" : "." + name + kTemporaryTag;
+  std::vector<std::string> removed;
   std::error_code ec;
-  for (auto it = fs::directory_iterator(folder, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
-    const fs::directory_entry& entry = *it;
-    const std::string name = entry.path().filename().string();
+  for (auto it = fs::directory_iterator(folder.empty() ? "." : folder, ec); !ec && it != fs::directory_iterator();
+       it.increment(ec)) {
+    const std::string file = it->path().filename().string();
     long maker = 0;
-    if (name.compare(0, prefix.size(), prefix) != 0 || !IsTemporaryName(name, &maker)) continue;
-    // The rest after the prefix must be exactly <pid>_<n>: `.a.png.tmp1_0` is not a.png.tmp's.
-    if (name.find('_', prefix.size()) == std::string::npos ||
-        name.substr(prefix.size(), name.find('_', prefix.size()) - prefix.size()) != std::to_string(maker))
-      continue;
-    if (ProcessGone(maker) && fs::remove(entry.path(), ec)) ++removed;
+    const bool stale = name.empty() ? IsTemporaryName(file, &maker)
+                                    : file.compare(0, prefix.size(), prefix) == 0 &&
+                                          IsTemporarySuffix(file.substr(prefix.size()), &maker);
+    std::error_code removing;
+    if (stale && ProcessGone(maker) && fs::remove(it->path(), removing)) removed.push_back(file);
   }
   return removed;
+}
+
+void AtomicFile::RemoveStale(const std::string& path) {
+  const fs::path p(path);
+  RemoveStaleIn(p.parent_path().string(), p.filename().string());
+}
+
+void AtomicFile::Write(const std::vector<std::string_view>& parts) {
+  const int fd = ::open(temp_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw Error(path_ + ": cannot write (" + WriteProblem(path_, errno) + ")");
+  int error = 0;
+  for (std::size_t p = 0; p < parts.size() && error == 0; ++p) error = WriteAll(fd, parts[p]);
+  // close() reports delayed write errors (full disks on network file systems among them).
+  if (::close(fd) != 0 && error == 0) error = errno;
+  if (error != 0) throw Error(path_ + ": cannot write (" + WriteProblem(path_, error) + ")");
 }
 
 AtomicFile::~AtomicFile() {
@@ -109,13 +131,7 @@ void WriteFileAtomic(const std::string& path, const std::string& bytes) {
 
 void WriteFileAtomic(const std::string& path, const std::vector<std::string_view>& parts) {
   AtomicFile file(path);
-  const int fd = ::open(file.temp_path().c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw Error(path + ": cannot write (" + WriteProblem(path, errno) + ")");
-  int error = 0;
-  for (std::size_t p = 0; p < parts.size() && error == 0; ++p) error = WriteAll(fd, parts[p]);
-  // close() reports delayed write errors (full disks on network file systems among them).
-  if (::close(fd) != 0 && error == 0) error = errno;
-  if (error != 0) throw Error(path + ": cannot write (" + WriteProblem(path, error) + ")");
+  file.Write(parts);
   file.Commit();
 }
 

@@ -30,11 +30,16 @@ class AtomicFile {
   /// True if `name` (a file name without folder) is one of these temporary files,
   /// `.<name>.prt-tmp<pid>_<n>`; `pid` then receives the process that made it.
   static bool IsTemporaryName(const std::string& name, long* pid = nullptr);
-  /// Removes the temporary files of `path` (`.<name>.prt-tmp<pid>_<n>` beside it) whose process is
-  /// gone: what a run killed by SIGKILL left while writing `path`. Returns how many.
-  static int RemoveStale(const std::string& path);
+  /// Removes the temporary files in `folder` whose process is gone (what runs killed by SIGKILL
+  /// left), all of them or those of the file `name` only. Returns the names removed.
+  static std::vector<std::string> RemoveStaleIn(const std::string& folder, const std::string& name = "");
+  /// RemoveStaleIn for the file `path`: what a killed run left while writing it.
+  static void RemoveStale(const std::string& path);
   /// True if process `pid` no longer exists (and is not this one).
   static bool ProcessGone(long pid);
+  /// Writes `parts`, one after the other, as the whole content of the temporary file. Throws
+  /// Error naming the destination and the cause (WriteProblem) on failure.
+  void Write(const std::vector<std::string_view>& parts);
   /// Renames the temporary file over the destination. Throws Error on failure.
   void Commit();
 

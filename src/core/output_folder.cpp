@@ -32,11 +32,6 @@ void CreateFolder(const std::string& dir) {
                 ")");
 }
 
-void CreateParentFolder(const std::string& path) {
-  const fs::path parent = fs::path(path).parent_path();
-  if (!parent.empty()) CreateFolder(parent.string());
-}
-
 CreatedFolders::~CreatedFolders() {
   for (auto it = made_.rbegin(); it != made_.rend(); ++it) ::rmdir(it->c_str());  // only if empty
 }
@@ -70,6 +65,17 @@ void CreatedFolders::CreateParentOf(const std::string& path) {
 void CreatedFolders::Keep() {
   made_.clear();
   cleanup_.clear();
+}
+
+SingleFileOutput::SingleFileOutput(const std::string& path) {
+  created_.CreateParentOf(path);
+  AtomicFile::RemoveStale(path);
+  file_.emplace(path);
+}
+
+void SingleFileOutput::Commit() {
+  file_->Commit();
+  created_.Keep();
 }
 
 namespace {
@@ -160,8 +166,8 @@ void OutputFolder::Abandon() {
     // Files written in place are valid on their own: listed, so that the next run knows them.
     std::map<std::string, std::string> all = earlier_;
     bool added = false;
-    for (const std::string& name : in_place_) {
-      if (!WroteInPlace(name) || (earlier_.count(name) && earlier_.at(name) == plan_.command)) continue;
+    for (const std::string& name : Written()) {
+      if (earlier_.count(name) && earlier_.at(name) == plan_.command) continue;
       all[name] = plan_.command;
       added = true;
     }
@@ -184,9 +190,10 @@ void OutputFolder::Abandon() {
 std::string OutputFolder::staging() const { return dir_ + "/" + kStagingName; }
 
 bool OutputFolder::IsForeignLocked(const std::string& name) const {
-  // A staged output is not in the folder yet: what is there under its name is still foreign.
+  // A staged output is not in the folder until it is moved: what is there under its name is
+  // still foreign.
   std::error_code ec;
-  if (earlier_.count(name) || in_place_.count(name)) return false;
+  if (earlier_.count(name) || before_.count(name) || moved_.count(name)) return false;
   return fs::exists(fs::symlink_status(fs::path(dir_) / name, ec));
 }
 
@@ -225,21 +232,22 @@ std::string OutputFolder::Output(const std::string& name) {
 
 std::string OutputFolder::OutputInPlace(const std::string& name) {
   std::lock_guard<std::mutex> lock(mutex_);
-  in_place_.insert(name);
   before_.emplace(name, FileSignature(dir_ + "/" + name));
   return dir_ + "/" + name;
 }
 
-bool OutputFolder::WroteInPlace(const std::string& name) const {
-  if (!in_place_.count(name)) return false;
-  const std::string now = FileSignature(dir_ + "/" + name);
-  const auto it = before_.find(name);
-  return !now.empty() && (it == before_.end() || it->second != now);
+std::set<std::string> OutputFolder::Written() const {
+  std::set<std::string> written = moved_;
+  for (const auto& [name, before] : before_) {
+    const std::string now = FileSignature(dir_ + "/" + name);
+    if (!now.empty() && now != before) written.insert(name);
+  }
+  return written;
 }
 
 bool OutputFolder::Wrote(const std::string& name) {
   std::lock_guard<std::mutex> lock(mutex_);
-  return staged_.count(name) != 0 || in_place_.count(name) != 0;
+  return staged_.count(name) != 0 || before_.count(name) != 0;
 }
 
 fs::path ResolvedPath(const std::string& path) {
@@ -303,25 +311,24 @@ OutputFolder::Finished OutputFolder::Finish() {
       throw Error(to + ": cannot write (" + WriteProblem(to, error) + ")");
     }
     if (keep) result.kept_as_orig.push_back(name + kOrigSuffix);
-    in_place_.insert(name);
+    moved_.insert(name);
   }
   // The new list: this run's outputs, the other commands' files, and a file this run named but
   // did not rewrite (a reused cache) under the command that wrote it. This command's earlier
   // outputs that it did not write again are removed, but only once the list no longer names them.
+  const std::set<std::string> written = Written();
   std::map<std::string, std::string> list;
   std::vector<std::string> leftovers;
   for (const auto& [name, command] : earlier_) {
-    const bool exists = fs::exists(fs::symlink_status(fs::path(dir_) / name, ec));
-    if (!exists || WroteInPlace(name)) continue;  // gone, or listed below as this run's
-    if (in_place_.count(name) || command != plan_.command) {
+    if (written.count(name) || !fs::exists(fs::symlink_status(fs::path(dir_) / name, ec))) continue;  // listed below, or gone
+    if (before_.count(name) || command != plan_.command) {
       list[name] = command;  // not rewritten, or another command's (an unknown command's) deliverable: kept
       continue;
     }
     if (IsInput(name)) continue;  // read by this run: kept, and no longer listed as prt's
     leftovers.push_back(name);
   }
-  for (const auto& name : in_place_)
-    if (WroteInPlace(name)) list[name] = plan_.command;
+  for (const auto& name : written) list[name] = plan_.command;
   WriteList(list);
   finished_ = true;
   created_.Keep();
@@ -329,16 +336,9 @@ OutputFolder::Finished OutputFolder::Finish() {
     const fs::path p = fs::path(dir_) / name;
     if (fs::is_regular_file(fs::symlink_status(p, ec)) && fs::remove(p, ec)) result.removed.push_back(name);
   }
-  // Temporary files of prt runs that were killed mid-write (core/atomic_file.h names them
-  // `.<name>.prt-tmp<pid>_<n>`): removed once their process is gone. This run holds the folder,
-  // so no live run of prt can be writing them here.
-  for (auto it = fs::directory_iterator(dir_, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
-    long maker = 0;
-    const std::string name = it->path().filename().string();
-    if (!AtomicFile::IsTemporaryName(name, &maker)) continue;
-    std::error_code removing;
-    if (AtomicFile::ProcessGone(maker) && fs::remove(it->path(), removing)) result.removed.push_back(name);
-  }
+  // Temporary files of prt runs that were killed mid-write: removed once their process is gone.
+  // This run holds the folder, so no live run of prt can be writing them here.
+  for (const std::string& name : AtomicFile::RemoveStaleIn(dir_)) result.removed.push_back(name);
   return result;
 }
 

@@ -33,10 +33,13 @@
 #include <filesystem>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/signal_cleanup.h"
 
@@ -76,12 +79,27 @@ class CreatedFolders {
   std::vector<CleanupOnSignal> cleanup_;
 };
 
+/// A file named on its own, outside any output folder (`--video` or `--vertex-radiance`
+/// elsewhere, `diff --out`, `basis --out`): its missing folders are made (and removed again if
+/// the run fails), the temporaries a killed run left beside it swept, and it is written under
+/// a temporary name (AtomicFile) that Commit() renames into place once the run has succeeded.
+class SingleFileOutput {
+ public:
+  explicit SingleFileOutput(const std::string& path);
+  /// Where to write the content before Commit() (or Write() it).
+  const std::string& temp_path() const { return file_->temp_path(); }
+  /// Writes `bytes` as the whole content of the temporary file.
+  void Write(std::string_view bytes) { file_->Write({bytes}); }
+  void Commit();
+
+ private:
+  CreatedFolders created_;          ///< first made, last removed
+  std::optional<AtomicFile> file_;  ///< after the folders it lies in
+};
+
 /// `path` made absolute, its symbolic links resolved as far as it exists, normalised: two paths
 /// name the same file exactly when their resolved paths are equal (neither need exist yet).
 std::filesystem::path ResolvedPath(const std::string& path);
-
-/// Creates the folder a file `path` is to be written into, if missing (see CreateFolder).
-void CreateParentFolder(const std::string& path);
 
 /// True if `a` and `b` name the same file: the same resolved path, or (both existing) the same
 /// file by device and inode (another spelling on a case-insensitive mount, a hard link).
@@ -165,8 +183,9 @@ class OutputFolder {
 
  private:
   void CheckLocked(const std::string& name);
-  /// True if this run named `name` in place and the file there is new or was rewritten since.
-  bool WroteInPlace(const std::string& name) const;
+  /// The files this run put in the folder: the staged ones moved there, and those named in
+  /// place that are new or were rewritten since (a cache reused as it was is not).
+  std::set<std::string> Written() const;
   void WriteList(const std::map<std::string, std::string>& entries) const;
   bool IsForeignLocked(const std::string& name) const;
   bool IsInput(const std::string& name) const;
@@ -180,8 +199,8 @@ class OutputFolder {
   CleanupOnSignal lock_cleanup_, staging_cleanup_;
   std::map<std::string, std::string> earlier_;  ///< name -> command, as the list said when the run started
   std::set<std::string> staged_;    ///< this run's outputs written to the staging folder
-  std::set<std::string> in_place_;  ///< this run's outputs written directly
-  std::map<std::string, std::string> before_;  ///< in-place names: the file's signature when named
+  std::map<std::string, std::string> before_;  ///< outputs written in place: the file's signature when named
+  std::set<std::string> moved_;  ///< staged outputs Finish() has moved into the folder
   std::set<std::string> replaced_;  ///< names whose file prt did not write (to keep as NAME.orig)
   std::vector<std::string> inputs_;  ///< absolute, normalised paths this run reads
   bool finished_ = false;

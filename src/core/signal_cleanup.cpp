@@ -65,11 +65,7 @@ void CleanUp(const std::map<std::uint64_t, Entry>& entries, bool children) {
     if (e.child > 0) continue;
     switch (e.kind) {
       case CleanupKind::kFile: ::unlink(e.path.c_str()); break;
-      case CleanupKind::kTree:
-        // Twice: a thread may have been creating a file in it during the first pass.
-        std::filesystem::remove_all(e.path, ec);
-        std::filesystem::remove_all(e.path, ec);
-        break;
+      case CleanupKind::kTree: std::filesystem::remove_all(e.path, ec); break;
       case CleanupKind::kEmptyFolder: ::rmdir(e.path.c_str()); break;
     }
   }
@@ -96,9 +92,13 @@ void Watch(sigset_t set) {
   ::_exit(128 + sig);  // not reached: the default action of all three ends the process
 }
 
-std::uint64_t Add(Entry e) {
+/// Takes the registry's lock, makes the entry (a child is started then), registers it unless
+/// it is a child that did not start, and returns its id (0 for none).
+std::uint64_t Add(const std::function<Entry()>& make) {
   Registry& r = TheRegistry();
   std::lock_guard<std::recursive_mutex> lock(r.mutex);
+  Entry e = make();
+  if (e.path.empty() && e.child <= 0) return 0;
   const std::uint64_t id = r.next++;
   r.entries.emplace(id, std::move(e));
   return id;
@@ -114,16 +114,13 @@ void InstallSignalCleanup() {
 
 void ChildSignalMask(void* out) { *static_cast<sigset_t*>(out) = OriginalMask(); }
 
-CleanupOnSignal::CleanupOnSignal(std::string path, CleanupKind kind) : id_(Add({std::move(path), kind, -1})) {}
+CleanupOnSignal::CleanupOnSignal(std::string path, CleanupKind kind)
+    : id_(Add([&] { return Entry{std::move(path), kind, -1}; })) {}
 
-std::uint64_t CleanupOnSignal::LockAndAdd(const std::function<pid_t()>& make_child) {
-  Registry& r = TheRegistry();
-  std::lock_guard<std::recursive_mutex> lock(r.mutex);
-  const pid_t child = make_child();
-  if (child <= 0) return 0;
-  const std::uint64_t id = r.next++;
-  r.entries.emplace(id, Entry{"", CleanupKind::kFile, child});
-  return id;
+CleanupOnSignal CleanupOnSignal::Spawn(const std::function<pid_t()>& spawn) {
+  CleanupOnSignal c;
+  c.id_ = Add([&] { return Entry{"", CleanupKind::kFile, spawn()}; });
+  return c;
 }
 
 CleanupOnSignal& CleanupOnSignal::operator=(CleanupOnSignal&& other) noexcept {
@@ -145,11 +142,5 @@ void CleanupOnSignal::Release() {
 
 SignalCleanupHold::SignalCleanupHold() { TheRegistry().mutex.lock(); }
 SignalCleanupHold::~SignalCleanupHold() { TheRegistry().mutex.unlock(); }
-
-std::size_t RegisteredCleanups() {
-  Registry& r = TheRegistry();
-  std::lock_guard<std::recursive_mutex> lock(r.mutex);
-  return r.entries.size();
-}
 
 }  // namespace prt

@@ -18,8 +18,9 @@
 /// opens it), and the watcher never lets go of the registry, so no file is registered after the
 /// cleanup began; one registered just before and created during the first pass is removed by a
 /// second pass 50 ms later. SignalCleanupHold defers the cleanup over a step that must not be
-/// cut in half (OutputFolder::Finish moving the outputs into place). A SIGKILL cannot be caught: the next run of prt sweeps what it left (OutputFolder::Finish for
-/// the output folder, AtomicFile::RemoveStale beside single-file outputs).
+/// cut in half (OutputFolder::Finish moving the outputs into place). A SIGKILL cannot be
+/// caught: the next run of prt sweeps what it left (OutputFolder::Finish for the output folder,
+/// AtomicFile::RemoveStale beside single-file outputs and ffmpeg's log).
 ///
 /// Without InstallSignalCleanup (the tests' own processes) the registry is kept and never used.
 
@@ -55,12 +56,7 @@ class CleanupOnSignal {
   /// Starts a child process with `spawn` (returning its pid, or -1 if none started) and
   /// registers it in one step, so no signal falls between the two: the child is killed with
   /// SIGKILL and reaped before any file is removed.
-  template <typename SpawnFunction>
-  static CleanupOnSignal Spawn(SpawnFunction spawn) {
-    CleanupOnSignal c;
-    c.id_ = LockAndAdd([&spawn] { return static_cast<pid_t>(spawn()); });
-    return c;
-  }
+  static CleanupOnSignal Spawn(const std::function<pid_t()>& spawn);
   ~CleanupOnSignal() { Release(); }
   CleanupOnSignal(CleanupOnSignal&& other) noexcept : id_(other.id_) { other.id_ = 0; }
   CleanupOnSignal& operator=(CleanupOnSignal&& other) noexcept;
@@ -70,10 +66,6 @@ class CleanupOnSignal {
   void Release();
 
  private:
-  /// Takes the registry's lock, runs `make_child`, registers its pid (none if -1) and returns
-  /// the registration's id (0 for none).
-  static std::uint64_t LockAndAdd(const std::function<pid_t()>& make_child);
-
   std::uint64_t id_ = 0;
 };
 
@@ -86,8 +78,5 @@ class SignalCleanupHold {
   SignalCleanupHold(const SignalCleanupHold&) = delete;
   SignalCleanupHold& operator=(const SignalCleanupHold&) = delete;
 };
-
-/// How many registrations are live (for tests).
-std::size_t RegisteredCleanups();
 
 }  // namespace prt

@@ -1,11 +1,7 @@
 #include "video/ffmpeg_encoder.h"
 
-#include <atomic>
 #include <cstdio>
 #include <cstdlib>
-
-#include <fcntl.h>
-#include <unistd.h>
 
 #include "core/error.h"
 #include "core/text.h"
@@ -16,12 +12,12 @@ namespace {
 /// The encoder's threads: fixed, so that prt's --threads does not reach the file (see the header).
 constexpr const char* kEncoderThreads = "4";
 
-/// A name for a new file of ffmpeg's messages, in $TMPDIR or /tmp: this process's own.
-std::string LogName() {
-  static std::atomic<unsigned> counter{0};
+/// Where ffmpeg's messages go: a temporary file of this name in $TMPDIR or /tmp (AtomicFile:
+/// this process's own name, removed at the end or by a signal, swept by a later run after a
+/// SIGKILL).
+std::string LogPath() {
   const char* tmp = std::getenv("TMPDIR");
-  return std::string(tmp && *tmp ? tmp : "/tmp") + "/prt-ffmpeg-" + std::to_string(::getpid()) + "-" +
-         std::to_string(counter++) + ".log";
+  return std::string(tmp && *tmp ? tmp : "/tmp") + "/prt-ffmpeg.log";
 }
 
 }  // namespace
@@ -44,7 +40,6 @@ std::string FindFfmpeg(FfmpegCodec codec, const std::string& what) {
 std::vector<std::string> FfmpegArguments(const std::string& program, FfmpegCodec codec, int width, int height,
                                          double fps, const std::string& path) {
   std::vector<std::string> a = {program, "-hide_banner", "-nostats", "-loglevel", "error", "-y",
-
                                 // input: raw 8-bit sRGB frames on standard input
                                 "-f", "rawvideo", "-pix_fmt", "rgb24",
                                 "-video_size", std::to_string(width) + "x" + std::to_string(height),
@@ -70,28 +65,18 @@ std::vector<std::string> FfmpegArguments(const std::string& program, FfmpegCodec
 
 FfmpegEncoder::FfmpegEncoder(const std::string& program, FfmpegCodec codec, const std::string& path, std::string name,
                              int width, int height, double fps)
-    : name_(std::move(name)), log_(LogName()), width_(width), height_(height) {
-  // Registered for the signal cleanup before it exists; without a place for it, no log.
-  log_cleanup_ = CleanupOnSignal(log_, CleanupKind::kFile);
-  const int fd = ::open(log_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
-  if (fd < 0) {
-    log_cleanup_.Release();
-    log_ = "/dev/null";
-  } else {
-    ::close(fd);
-  }
+    : name_(std::move(name)), log_file_(LogPath()), width_(width), height_(height) {
+  AtomicFile::RemoveStale(LogPath());
   try {
-    child_ = std::make_unique<ChildProcess>(FfmpegArguments(program, codec, width, height, fps, path), log_);
-  } catch (...) {
-    if (log_ != "/dev/null") std::remove(log_.c_str());  // the destructor does not run
-    throw;
+    log_file_.Write({});
+    log_ = log_file_.temp_path();
+  } catch (const Error&) {
+    log_ = "/dev/null";  // no place for a log: a failure is reported without ffmpeg's words
   }
+  child_ = std::make_unique<ChildProcess>(FfmpegArguments(program, codec, width, height, fps, path), log_);
 }
 
-FfmpegEncoder::~FfmpegEncoder() {
-  child_.reset();  // kills ffmpeg if it still runs
-  if (log_ != "/dev/null") std::remove(log_.c_str());
-}
+FfmpegEncoder::~FfmpegEncoder() = default;  // ffmpeg killed if it still runs, then its log removed
 
 void FfmpegEncoder::Fail(const std::string& what) const {
   const std::string said = LastLine(log_);

@@ -19,6 +19,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/atomic_file.h"
 #include "core/child_process.h"
 
 namespace prt {
@@ -58,10 +59,11 @@ class FfmpegEncoder {
  private:
   [[noreturn]] void Fail(const std::string& what) const;
 
-  std::string name_, log_;
-  CleanupOnSignal log_cleanup_;  ///< the log file, removed if a signal stops the run
+  std::string name_;
+  AtomicFile log_file_;  ///< ffmpeg's messages, never committed: removed at the end or by a signal
+  std::string log_;      ///< log_file_'s temporary name, or /dev/null
   int width_, height_;
-  std::unique_ptr<ChildProcess> child_;
+  std::unique_ptr<ChildProcess> child_;  ///< last: destroyed (ffmpeg killed) before its log
 };
 
 }  // namespace prt

@@ -47,10 +47,6 @@ std::set<std::string> Temporaries(const std::string& dir) {
 /// A precompute of the quick scene (milliseconds) into `out`.
 std::string Precompute(const std::string& out) { return "precompute " + test::QuickScene() + " --out " + Q(out); }
 
-/// A render of the quick scene into `out`.
-std::string Render(const std::string& out, int frames, const std::string& size = "16x12") {
-  return "render " + test::QuickScene() + " --size " + size + " --frames " + std::to_string(frames) + " --out " + Q(out);
-}
 
 /// The pid of a process that has exited and been reaped: no process has it (until reused).
 pid_t GonePid() {
@@ -149,7 +145,7 @@ TEST_SUITE("app") {
     const std::string dir = test::ScratchDir("kept_commands");
     REQUIRE(test::RunPrt(Precompute(dir) + " --quiet").exit_code == 0);
     const std::string light = ReadFile(dir + "/light.txt"), transport = ReadFile(dir + "/transport.txt");
-    const auto render = test::RunPrt(Render(dir, 3));
+    const auto render = test::RunPrt(test::QuickRender(dir, 3));
     CAPTURE(render.err);
     CHECK(render.exit_code == 0);
     CHECK(render.err.find("outputs: removed") == std::string::npos);
@@ -159,12 +155,12 @@ TEST_SUITE("app") {
     // The cache the render reused as it was stays the precompute's: a render without a cache
     // does not remove it.
     CHECK(ReadFile(dir + "/" + OutputFolder::kListName).find("precompute\ttransport.cache\n") != std::string::npos);
-    CHECK(test::RunPrt(Render(dir, 3) + " --cache none --quiet").exit_code == 0);
+    CHECK(test::RunPrt(test::QuickRender(dir, 3) + " --cache none --quiet").exit_code == 0);
     CHECK(fs::exists(dir + "/transport.cache"));
     // A precompute keeps the frames; a render of fewer frames removes only its own extra ones.
     REQUIRE(test::RunPrt(Precompute(dir) + " --albedo 0.5,0.5,0.5 --quiet").exit_code == 0);
     CHECK(fs::exists(dir + "/frame_0002.png"));
-    const auto fewer = test::RunPrt(Render(dir, 1));
+    const auto fewer = test::RunPrt(test::QuickRender(dir, 1));
     CHECK(fewer.err.find("outputs: removed 2 files an earlier run of this command wrote in " + dir +
                          " and this one did not (frame_0001.png ... frame_0002.png)") != std::string::npos);
     CHECK(fs::exists(dir + "/light.txt"));
@@ -196,7 +192,7 @@ TEST_SUITE("app") {
                                       "--vertex-radiance " + Q(dir + "/out/frame_0000.png"),
                                       "--vertex-radiance " + Q(dir + "/out/.prt-lock")}) {
       CAPTURE(option);
-      const auto r = test::RunPrt(Render(dir + "/out", 1) + " " + option);
+      const auto r = test::RunPrt(test::QuickRender(dir + "/out", 1) + " " + option);
       CHECK(r.exit_code == 2);
       CHECK_FALSE(fs::exists(dir + "/out"));
     }
@@ -204,7 +200,7 @@ TEST_SUITE("app") {
 
   TEST_CASE("files kept: prt diff refuses an --out that is one of its inputs (exit 2)") {
     const std::string dir = test::ScratchDir("kept_diff");
-    REQUIRE(test::RunPrt(Render(dir, 2) + " --quiet").exit_code == 0);
+    REQUIRE(test::RunPrt(test::QuickRender(dir, 2) + " --quiet").exit_code == 0);
     const std::string a = test::FramePath(dir, 0, 2), b = test::FramePath(dir, 1, 2);
     const std::string golden = ReadFile(a), other = ReadFile(b);
     for (const std::string& out : {a, b, dir + "/./" + fs::path(a).filename().string()}) {
@@ -250,7 +246,7 @@ TEST_SUITE("app") {
     CHECK(test::RunPrt("precompute --env furnace --mesh " + Q(bad) + " --out " + Q(dir + "/empty")).exit_code == 1);
     CHECK(fs::is_empty(dir + "/empty"));
     const std::string used = dir + "/used";
-    REQUIRE(test::RunPrt(Render(used, 2) + " --quiet").exit_code == 0);
+    REQUIRE(test::RunPrt(test::QuickRender(used, 2) + " --quiet").exit_code == 0);
     const auto before = Snapshot(used);
     CHECK(test::RunPrt("render --env furnace --mesh " + Q(bad) + " --out " + Q(used)).exit_code == 1);
     CHECK(Snapshot(used) == before);
@@ -264,7 +260,7 @@ TEST_SUITE("app") {
     // The --vertex-radiance file outside the folder, written early, is renamed into place only
     // when the run succeeds.
     const auto video = test::RunCommand("PATH=" + Q(dir + "/bin") + ":\"$PATH\" " + Q(test::PrtBinary()) + " " +
-                                        Render(dir + "/v", 12, "64x48") + " --video " + Q(dir + "/videos/deep/turn.mp4") +
+                                        test::QuickRender(dir + "/v", 12, "64x48") + " --video " + Q(dir + "/videos/deep/turn.mp4") +
                                         " --vertex-radiance " + Q(dir + "/radiance.txt"));
     CHECK(video.exit_code == 1);
     CHECK_FALSE(fs::exists(dir + "/videos"));
@@ -297,7 +293,7 @@ TEST_SUITE("app") {
     std::ofstream(dir + "/" + live) << "being written";
     std::ofstream(dir + "/.other.png" + tag + gone + "_0") << "not an output of this run";
     std::ofstream(dir + "/.turn.png.tmp" + gone + "_0") << "someone else's, named like an older prt's";
-    const auto r = test::RunPrt(Render(dir + "/out", 2) + " --quiet --video " + Q(dir + "/turn.png") +
+    const auto r = test::RunPrt(test::QuickRender(dir + "/out", 2) + " --quiet --video " + Q(dir + "/turn.png") +
                                 " --vertex-radiance " + Q(dir + "/radiance.txt"));
     CHECK(r.exit_code == 0);
     REQUIRE(test::RunPrt("diff " + Q(test::FramePath(dir + "/out", 0, 2)) + " " + Q(test::FramePath(dir + "/out", 1, 2)) +
@@ -327,7 +323,7 @@ TEST_SUITE("app") {
 
   TEST_CASE("files kept: --size takes a capital X, and a path typo gets a did-you-mean") {
     const std::string dir = test::ScratchDir("kept_small_things");
-    const auto size = test::RunPrt(Render(dir + "/out", 1, "20X10") + " --quiet");
+    const auto size = test::RunPrt(test::QuickRender(dir + "/out", 1, "20X10") + " --quiet");
     CHECK(size.exit_code == 0);
     CHECK(fs::exists(dir + "/out/frame_0000.png"));
     test::WriteHdrCube(dir + "/cubemap/GraceCathedral", 4, [](int, int, int) { return glm::vec3(1.0f); });

@@ -27,9 +27,6 @@ namespace fs = std::filesystem;
 
 using test::Q;
 
-std::string Quick(const std::string& out, int frames) {
-  return "render " + test::QuickScene() + " --size 16x12 --frames " + std::to_string(frames) + " --out " + Q(out);
-}
 
 /// Names of the files in `dir`, hidden ones included.
 std::set<std::string> Files(const std::string& dir) {
@@ -53,13 +50,13 @@ TEST_SUITE("app") {
     const int fd = ::open((dir + "/" + OutputFolder::kLockName).c_str(), O_RDWR | O_CREAT, 0644);
     REQUIRE(fd >= 0);
     REQUIRE(::flock(fd, LOCK_EX | LOCK_NB) == 0);
-    const auto refused = test::RunPrt(Quick(dir, 2));
+    const auto refused = test::RunPrt(test::QuickRender(dir, 2));
     CHECK(refused.exit_code == kExitFolderBusy);  // try again: a CI wrapper retries
     CHECK(refused.err.find(dir + ": in use by another prt run") != std::string::npos);
     CHECK_FALSE(fs::exists(dir + "/frame_0000.png"));
     // The lock file stays where a killed run left it, but unheld: the next run goes ahead.
     ::close(fd);
-    const auto after = test::RunPrt(Quick(dir, 2));
+    const auto after = test::RunPrt(test::QuickRender(dir, 2));
     CHECK(after.exit_code == 0);
     CHECK(fs::exists(dir + "/frame_0001.png"));
     CHECK_FALSE(fs::exists(dir + "/" + OutputFolder::kLockName));  // a finished run removes its lock
@@ -76,7 +73,7 @@ TEST_SUITE("app") {
       holding = ReadIfPresent(lock) == std::to_string(pid);
       if (!holding) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
-    const auto second = test::RunPrt(Quick(dir, 3));
+    const auto second = test::RunPrt(test::QuickRender(dir, 3));
     ::kill(pid, SIGKILL);
     int status = 0;
     ::waitpid(pid, &status, 0);
@@ -89,10 +86,10 @@ TEST_SUITE("app") {
     const std::string dir = test::ScratchDir("folder_exact");
     std::ofstream(dir + "/notes.txt") << "mine";
     std::ofstream(dir + "/frame_0007.png") << "a frame prt did not write";
-    const auto first = test::RunPrt(Quick(dir, 5) + " --quiet");
+    const auto first = test::RunPrt(test::QuickRender(dir, 5) + " --quiet");
     CHECK(first.exit_code == 0);
     CHECK(fs::exists(dir + "/frame_0004.png"));
-    const auto second = test::RunPrt(Quick(dir, 3) + " --quiet");  // what CI runs: nothing printed
+    const auto second = test::RunPrt(test::QuickRender(dir, 3) + " --quiet");  // what CI runs: nothing printed
     CHECK(second.exit_code == 0);
     CHECK(second.err.empty());
     CHECK(Files(dir) == std::set<std::string>{".prt-outputs", "frame_0000.png", "frame_0001.png", "frame_0002.png",
@@ -100,7 +97,7 @@ TEST_SUITE("app") {
     CHECK(ReadFile(dir + "/notes.txt") == "mine");
     CHECK(ReadFile(dir + "/frame_0007.png") == "a frame prt did not write");
     // Without --quiet the run says what it removed and what it left.
-    const auto third = test::RunPrt(Quick(dir, 1));
+    const auto third = test::RunPrt(test::QuickRender(dir, 1));
     CHECK(third.err.find("outputs: removed 2 files an earlier run of this command wrote in " + dir +
                           " and this one did not (frame_0001.png ... frame_0002.png)") != std::string::npos);
     CHECK(third.err.find("note: 1 frame file in " + dir + " not written by this run was left untouched") !=
