@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include "app/commands.h"
 #include "app/pipeline.h"
 #include "app/render_args.h"
@@ -39,7 +41,10 @@ CommandSpec PrecomputeSpec() {
   output.options[0].help = "output folder, created if missing; one run at a time; after a successful run it holds "
                            "this run's files, and what an earlier precompute wrote there and this one did not is "
                            "removed (other commands' outputs and files prt did not write are never touched)";
-  OptionGroup scene = SceneOptionGroup(SceneOptions{}, AllSceneOptionNames());
+  // No camera here: every vertex takes --samples (the course's viewer turns the model freely).
+  std::vector<std::string> names = AllSceneOptionNames();
+  names.erase(std::find(names.begin(), names.end(), "--hidden-samples"));
+  OptionGroup scene = SceneOptionGroup(SceneOptions{}, names);
   for (auto& o : scene.options)
     if (o.name == "--max-edge")
       o.help = "refused here: the course's transport.txt has three rows per face of the OBJ file, and split "
@@ -93,7 +98,7 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
   if (glossy) CheckMatrixMemory(mesh, options);
   const auto env = LoadSceneEnvironment(options, &folder);
   const ShRgb light = ComputeLight(*env, options);
-  const Transport transport = ComputeSceneTransport(mesh, options, cache, nullptr, glossy);
+  const Transport transport = ComputeSceneTransport(mesh, options, cache, {}, nullptr, glossy);
 
   WriteFileAtomic(folder.Output("light.txt"), FormatLightTxt(light));
   std::string wrote;

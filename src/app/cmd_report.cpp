@@ -124,6 +124,18 @@ int RunReport(const std::vector<std::string>& tokens) {
     data.glossy = RunGlossyStudy(mesh, *env, eye,
                                  MakeGlossyConfig(quick, scene.material.lobe.exponent, scene.material.ks, scene.seed));
   }
+  // Visible noise: frame 0 as `render` draws it, per way of spending directions (report_noise.h).
+  NoiseConfig noise;
+  noise.seed = scene.seed;
+  noise.bounces = scene.bounces;
+  if (quick) {
+    noise.mode = TransportMode::kShadowed;
+    noise.converged_samples = 16384;
+    noise.repeats = 1;
+  }
+  RenderOptions frame;
+  frame.frames = 1;
+  data.noise = RunNoiseStudy(mesh, *env, noise, frame);
   WriteReport(folder, data);
   FinishOutputs(folder);
   return 0;

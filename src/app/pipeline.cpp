@@ -118,6 +118,7 @@ TransportOptions TransportOptionsOf(const SceneOptions& options, const std::opti
   t.mode = TransportModeFromName(options.transport);
   t.lmax = options.lmax;
   t.samples = options.samples;
+  t.hidden_samples = options.hidden_samples;
   t.sampler = SamplerFromName(options.sampler);
   t.bounces = options.bounces;
   t.seed = options.seed;
@@ -165,12 +166,29 @@ CachePlan PlanCache(const std::string& option, OutputFolder* folder) {
   return {given ? path : folder->OutputInPlace("transport.cache"), true};
 }
 
+namespace {
+
+/// How many directions the transport's vertices took, for its summary line.
+std::string DirectionsText(const SceneOptions& options, const TransportOptions& o, const TransportReport& r,
+                           std::size_t vertices) {
+  const std::string sampler = SamplerName(o.sampler);
+  if (r.hidden_directions == 0)
+    return std::to_string(r.directions_per_vertex) + " " + sampler + " directions per vertex" + SamplesOrigin(options);
+  return std::to_string(r.directions_per_vertex) + " " + sampler + " directions for each of the " +
+         std::to_string(vertices - r.hidden_vertices) + " vertices the camera sees, " +
+         std::to_string(r.hidden_directions) + " for the " + std::to_string(r.hidden_vertices) +
+         " it does not" + SamplesOrigin(options);
+}
+
+}  // namespace
+
 Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, const CachePlan& cache,
-                                const Camera* camera, bool matrices) {
+                                const std::vector<std::uint8_t>& seen, const Camera* camera, bool matrices) {
   std::optional<glm::dvec3> eye;
   if (camera && !matrices) eye = glm::dvec3(camera->eye);
   TransportOptions topts = TransportOptionsOf(options, eye);
   topts.matrices = matrices && options.material.glossy;
+  if (topts.hidden_samples != topts.samples) topts.seen = seen;
   const std::uint64_t key = TransportKey(mesh, topts);
   std::string why;
   if (!cache.path.empty()) {
@@ -179,6 +197,20 @@ Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, c
       cached->material = topts.material;
       WarnIfMostlyBlocked(mesh, *cached, topts.mode);
       return std::move(*cached);
+    }
+    // A transport with --samples at every vertex (what precompute writes) holds at least what
+    // this one needs at every vertex: taken as it is.
+    if (!topts.seen.empty()) {
+      TransportOptions every = topts;
+      every.seen.clear();
+      std::string ignored;
+      if (auto cached = ReadTransportCache(cache.path, TransportKey(mesh, every), ignored)) {
+        Summary("transport: taken from the cache " + cache.path + " (same mesh and options, with " +
+                std::to_string(topts.samples) + " directions at every vertex, not only those the camera sees)");
+        cached->material = topts.material;
+        WarnIfMostlyBlocked(mesh, *cached, topts.mode);
+        return std::move(*cached);
+      }
     }
   }
   const auto t0 = std::chrono::steady_clock::now();
@@ -190,8 +222,7 @@ Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, c
   if (topts.mode == TransportMode::kUnshadowed) {
     line += "; closed form at every vertex: no BVH, no rays";
   } else {
-    line += Formatted("; BVH %.3f s; ", r.bvh_seconds) + std::to_string(r.directions_per_vertex) + " " +
-            SamplerName(topts.sampler) + " directions per vertex" + SamplesOrigin(options) + ", " + std::to_string(r.rays) +
+    line += Formatted("; BVH %.3f s; ", r.bvh_seconds) + DirectionsText(options, topts, r, mesh.vertex_count()) + ", " + std::to_string(r.rays) +
             " rays (none below the horizon); " + std::to_string(r.closed_form_vertices) + " of " +
             std::to_string(mesh.vertex_count()) + " vertices unoccluded, given the exact closed form";
   }

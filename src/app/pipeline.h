@@ -73,9 +73,12 @@ CachePlan PlanCache(const std::string& option, OutputFolder* folder);
 /// and options, else computed (and written there when the plan allows; a failed write is a
 /// warning). Warns when most vertices see no light at all (an inside-out or enclosed mesh). A
 /// glossy material gets its view-dependent transfer toward `camera`'s eye (required then).
-/// With `matrices`, a glossy material gets transfer matrices instead (any view).
+/// With `matrices`, a glossy material gets transfer matrices instead (any view). `seen` marks
+/// the vertices the camera sees in some frame (render/seen_vertices.h; empty: all): they take
+/// --samples directions, the others --hidden-samples.
 Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, const CachePlan& cache,
-                                const Camera* camera = nullptr, bool matrices = false);
+                                const std::vector<std::uint8_t>& seen = {}, const Camera* camera = nullptr,
+                                bool matrices = false);
 
 /// Says on the run summary what the transfer matrices of `mesh` will take, and throws Error,
 /// naming the largest lmax that fits, when that is more than the memory available allows.

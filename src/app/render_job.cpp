@@ -12,6 +12,7 @@
 #include "precompute/shade.h"
 #include "precompute_io/transport_txt.h"
 #include "render/render_frames.h"
+#include "render/seen_vertices.h"
 
 namespace prt {
 namespace {
@@ -88,7 +89,10 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
 
   const auto env = LoadSceneEnvironment(scene, &folder);
   const ShRgb light = ComputeLight(*env, scene);
-  const Transport transport = ComputeSceneTransport(mesh, scene, cache, &camera, matrices);
+  // The vertices the frames show take --samples directions, the others --hidden-samples.
+  std::vector<std::uint8_t> seen;
+  if (scene.transport != "unshadowed" && scene.hidden_samples != scene.samples) seen = SeenVertices(mesh, camera, render);
+  const Transport transport = ComputeSceneTransport(mesh, scene, cache, seen, &camera, matrices);
   std::unique_ptr<SingleFileOutput> radiance_outside;
   if (!render.vertex_radiance.empty())
     radiance_outside = WriteVertexRadiance(mesh, transport, light, camera, render.vertex_radiance, folder);

@@ -42,12 +42,17 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
        "plus --bounces bounces of light between surfaces)",
        d.transport});
   add({"--samples", "N",
-       "ray directions per vertex, 1..16777216; fewer than the sample rule's minimum for --lmax and --sampler "
-       "is warned about (" + SampleRuleText(Sampler::kFibonacci) + ")",
+       "ray directions per vertex that a frame shows (every vertex without a camera), 1..16777216; fewer than the "
+       "sample rule's minimum for --lmax and --sampler is warned about (" + SampleRuleText(Sampler::kFibonacci) + ")",
        d.samples ? std::to_string(d.samples)
-                 : "follows --lmax and --sampler, e.g. fibonacci " +
-                       std::to_string(DefaultSamples(2, Sampler::kFibonacci)) + " at lmax 2, " +
-                       std::to_string(DefaultSamples(15, Sampler::kFibonacci)) + " at lmax 15"});
+                 : "follows --lmax and --sampler, e.g. fibonacci " + std::to_string(DefaultSamples(2, Sampler::kFibonacci)) +
+                       " at lmax 2"});
+  add({"--hidden-samples", "N",
+       "ray directions per vertex the camera does not see (facing away or behind other surfaces in every "
+       "frame), 1..16777216: they show only through the light they bounce",
+       d.hidden_samples ? std::to_string(d.hidden_samples)
+                        : "the sample rule's, e.g. fibonacci " + std::to_string(DefaultHiddenSamples(2, Sampler::kFibonacci)) +
+                              " at lmax 2, at most --samples"});
   add({"--sampler", "NAME", "fibonacci (spherical Fibonacci) | stratified (the course's jittered grid) | uniform",
        d.sampler});
   add({"--bounces", "B", "interreflection bounces, 1..1000 (stops early once negligible)", std::to_string(d.bounces)});
@@ -137,8 +142,9 @@ void ResolveSamples(Args& args, SceneOptions& o) {
   if (!given && o.samples == 0) {
     o.samples = DefaultSamples(o.lmax, sampler);
     o.samples_from_rule = true;
-    return;
   }
+  if (o.hidden_samples == 0) o.hidden_samples = std::min(o.samples, DefaultHiddenSamples(o.lmax, sampler));
+  if (!given) return;
   const int minimum = MinimumSamples(o.lmax, sampler);
   if (given && o.transport != "unshadowed" && o.samples < minimum)
     Warn("--samples " + std::to_string(o.samples) + " is below the " + std::to_string(minimum) + " " + o.sampler +
@@ -167,7 +173,7 @@ void WarnIfLobeTooSharp(const SceneOptions& o) {
 const std::vector<std::string>& AllSceneOptionNames() {
   static const std::vector<std::string> names = {
       "--mesh",    "--env",          "--lmax",   "--tolerance", "--transport",      "--samples",
-      "--sampler", "--bounces",      "--direction-sets",        "--albedo",         "--texture", "--material", "--seed",
+      "--hidden-samples", "--sampler", "--bounces",      "--direction-sets",        "--albedo",         "--texture", "--material", "--seed",
       "--threads", "--games202-faces", "--window", "--max-edge"};
   return names;
 }
@@ -204,6 +210,7 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
   if (has("--transport"))
     o.transport = args.Choice("--transport", d.transport, {"unshadowed", "shadowed", "interreflection"});
   if (has("--samples")) o.samples = args.Int("--samples", d.samples, 1, 1 << 24);
+  if (has("--hidden-samples")) o.hidden_samples = args.Int("--hidden-samples", d.hidden_samples, 1, 1 << 24);
   if (has("--sampler")) o.sampler = args.Choice("--sampler", d.sampler, {"fibonacci", "stratified", "uniform"});
   if (has("--bounces")) o.bounces = args.Int("--bounces", d.bounces, 1, 1000);
   if (has("--direction-sets")) o.direction_sets = args.Int("--direction-sets", d.direction_sets, 1, 1024);

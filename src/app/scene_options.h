@@ -32,6 +32,8 @@ struct SceneOptions {
   /// (precompute/sample_rule.h), which ReadSceneOptions puts here.
   int samples = 0;
   bool samples_from_rule = false;    ///< samples is the rule's default, not given by --samples
+  /// Directions per vertex the camera does not see; 0: the sample rule's, at most `samples`.
+  int hidden_samples = 0;
   std::string sampler = "fibonacci"; ///< fibonacci | stratified | uniform
   int bounces = 1;                   ///< interreflection bounces
   int direction_sets = 64;           ///< pool of direction sets (1: every vertex shares one)

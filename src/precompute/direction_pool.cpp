@@ -20,4 +20,17 @@ DirectionPool MakeDirectionPool(Sampler sampler, int samples, int count, std::ui
   return pool;
 }
 
+DirectionPlan MakeDirectionPlan(Sampler sampler, int samples, int hidden_samples, int count, std::uint64_t seed,
+                                const std::vector<std::uint8_t>& seen, std::size_t vertices) {
+  DirectionPlan plan;
+  plan.pools.push_back(MakeDirectionPool(sampler, samples, count, seed));
+  bool any_hidden = false;
+  for (std::size_t v = 0; v < seen.size() && v < vertices; ++v) any_hidden |= seen[v] == 0;
+  if (!any_hidden || hidden_samples == samples) return plan;
+  plan.pools.push_back(MakeDirectionPool(sampler, hidden_samples, count, MixSeed(seed, 1)));
+  plan.pool_of.resize(vertices);
+  for (std::size_t v = 0; v < vertices; ++v) plan.pool_of[v] = v < seen.size() && seen[v] == 0 ? 1 : 0;
+  return plan;
+}
+
 }  // namespace prt

@@ -30,13 +30,19 @@ int MinimumSamples(int lmax, Sampler sampler) {
 }
 
 int DefaultSamples(int lmax, Sampler sampler) {
-  return std::max(kDefaultFloor, kDefaultMargin * MinimumSamples(lmax, sampler));
+  return std::max(kDefaultFloor, kSeenOverHidden * DefaultHiddenSamples(lmax, sampler));
+}
+
+int DefaultHiddenSamples(int lmax, Sampler sampler) {
+  return std::max(kHiddenFloor, kHiddenMargin * MinimumSamples(lmax, sampler));
 }
 
 std::string SampleRuleText(Sampler sampler) {
   return std::string(SamplerName(sampler)) + " needs " + std::to_string(SamplesPerCoefficient(sampler)) +
-         " (L+1)^2 rounded up to a power of two, the default is " + std::to_string(kDefaultMargin) +
-         " times that, at least " + std::to_string(kDefaultFloor);
+         " (L+1)^2 rounded up to a power of two; the default is " + std::to_string(kHiddenMargin) +
+         " times that, at least " + std::to_string(kHiddenFloor) + ", for the vertices the camera does not see, and " +
+         std::to_string(kSeenOverHidden) + " times theirs, at least " + std::to_string(kDefaultFloor) +
+         ", for those it sees";
 }
 
 }  // namespace prt

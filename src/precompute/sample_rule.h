@@ -53,10 +53,14 @@
 
 namespace prt {
 
-/// The default never goes below the count prt has always used at its default lmax of 2.
-constexpr int kDefaultFloor = 1024;
-/// Safety factor of the default over the minimum (above: why 8).
-constexpr int kDefaultMargin = 8;
+/// The default for the vertices the camera sees: at least this many, and this factor over the
+/// default for those it does not (above: why).
+constexpr int kDefaultFloor = 8192;
+constexpr int kSeenOverHidden = 2;
+/// The default for the vertices it does not see (their light reaches the picture only through
+/// bounces, averaged over many hits): the count every vertex had before (above: why 8).
+constexpr int kHiddenFloor = 1024;
+constexpr int kHiddenMargin = 8;
 
 /// Directions per coefficient at which the sampling error met the truncation error (above).
 int SamplesPerCoefficient(Sampler sampler);
@@ -67,6 +71,9 @@ int MinimumSamples(int lmax, Sampler sampler);
 
 /// The default directions per vertex at `lmax`: max(1024, 8 MinimumSamples), a power of two.
 int DefaultSamples(int lmax, Sampler sampler);
+
+/// The default directions per vertex the camera does not see at `lmax`.
+int DefaultHiddenSamples(int lmax, Sampler sampler);
 
 /// "c (L+1)^2 rounded up to a power of two" in words, for help texts and the run summary.
 std::string SampleRuleText(Sampler sampler);

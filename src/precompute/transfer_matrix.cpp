@@ -54,13 +54,12 @@ void UnshadowedTransferMatrix(const glm::dvec3& normal, int lmax, double* out) {
   }
 }
 
-void ComputeTransferMatrices(const Mesh& mesh, const DirectionPool* pool, const DirectResult* direct, int lmax,
+void ComputeTransferMatrices(const Mesh& mesh, const DirectionPlan* plan, const DirectResult* direct, int lmax,
                              const std::vector<double>* hit_transfer, Transport& transport) {
   const int n = CoeffCount(lmax);
   const std::size_t nn = std::size_t(n) * n, nv = mesh.vertex_count();
   const int channels = transport.channels;
   transport.matrices.assign(nv * channels * nn, 0.0f);
-  const double weight = pool ? 4.0 * kPi / double(pool->size()) : 0.0;
   Progress progress("transfer matrices", nv);
   ParallelFor(nv, 32, [&](std::size_t begin, std::size_t end) {
     std::vector<double> m(channels * nn), y(n), lit(n);
@@ -74,21 +73,23 @@ void ComputeTransferMatrices(const Mesh& mesh, const DirectionPool* pool, const 
       for (int c = 1; c < channels; ++c) std::copy(m.begin(), m.begin() + nn, m.begin() + c * nn);
       if (direct) {
         // The blocked directions the direct pass found, with what they hit (transport_steps.h).
-        const auto& dirs = pool->sets[pool->SetOf(v)];
+        const std::size_t directions = plan->PoolOf(v).size();  // the camera's vertices take more
+        const double vertex_weight = 4.0 * kPi / double(directions);
         for (const VertexHit& h : direct->hits[v]) {
-          const double cosine = glm::dot(normal, dirs[h.dir]);
-          EvalBasis(lmax, dirs[h.dir], y.data());
+          const glm::dvec3& dir = plan->Direction(v, h.dir);
+          const double cosine = glm::dot(normal, dir);
+          EvalBasis(lmax, dir, y.data());
           if (open)
-            for (int c = 0; c < channels; ++c) AddOuter(-weight * cosine, y.data(), y.data(), n, m.data() + c * nn);
+            for (int c = 0; c < channels; ++c) AddOuter(-vertex_weight * cosine, y.data(), y.data(), n, m.data() + c * nn);
           if (!hit_transfer || !h.front) continue;
           // The hit point's diffuse light: albedo(h) T(h), barycentric (or the texture).
           const glm::vec3 albedo =
-              mesh.textured() ? HitAlbedo(mesh, v, h.triangle, h.u, h.v, dirs.size()) : glm::vec3(0.f);
+              mesh.textured() ? HitAlbedo(mesh, v, h.triangle, h.u, h.v, directions) : glm::vec3(0.f);
           for (int c = 0; c < channels; ++c) {
             std::fill(lit.begin(), lit.end(), 0.0);
             AddHitLight(mesh, h.triangle, h.u, h.v, *hit_transfer, channels, n, c, 1.0, lit.data(),
                         mesh.textured() ? &albedo : nullptr);
-            AddOuter(weight * cosine, y.data(), lit.data(), n, m.data() + c * nn);
+            AddOuter(vertex_weight * cosine, y.data(), lit.data(), n, m.data() + c * nn);
           }
         }
       }

@@ -1,5 +1,6 @@
 #include "precompute/transport.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <future>
@@ -21,12 +22,12 @@ std::vector<float> ToFloat(const std::vector<double>& v) { return std::vector<fl
 
 /// The glossy transfer of `options.material` into `transport`: the fixed view's vector
 /// (transport_glossy.cpp) or the matrices for any view (transfer_matrix.h).
-void AddGlossy(const Mesh& mesh, const Bvh* bvh, const DirectionPool* pool, const DirectResult* direct,
+void AddGlossy(const Mesh& mesh, const Bvh* bvh, const DirectionPlan* plan, const DirectResult* direct,
                const TransportOptions& options, const std::vector<double>* hits, Transport& transport,
                TransportReport& r) {
   if (options.matrices) {
     const auto t0 = std::chrono::steady_clock::now();
-    ComputeTransferMatrices(mesh, pool, direct, options.lmax, hits, transport);
+    ComputeTransferMatrices(mesh, plan, direct, options.lmax, hits, transport);
     r.matrix_seconds = SecondsSince(t0);
     return;
   }
@@ -104,31 +105,36 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
   };
   std::future<Bvh> bvh_future;
   if (ThreadCount() > 1) bvh_future = std::async(std::launch::async, build_bvh);
-  const DirectionPool pool =
-      MakeDirectionPool(options.sampler, options.samples, options.direction_sets, options.seed);
+  const DirectionPlan plan =
+      MakeDirectionPlan(options.sampler, options.samples, options.hidden_samples ? options.hidden_samples : options.samples,
+                        options.direction_sets, options.seed, options.seen, mesh.vertex_count());
   const Bvh bvh = bvh_future.valid() ? bvh_future.get() : build_bvh();
   r.bvh_built = true;
-  r.directions_per_vertex = static_cast<int>(pool.size());
+  r.directions_per_vertex = static_cast<int>(plan.pools[0].size());
+  if (plan.pools.size() > 1) {
+    r.hidden_directions = static_cast<int>(plan.pools[1].size());
+    for (std::uint8_t p : plan.pool_of) r.hidden_vertices += p;
+  }
   // Bounces gather from the hits; transfer matrices are built from them.
   const bool bounces = options.mode == TransportMode::kInterreflection;
   const bool keep_hits = bounces || (options.material.glossy && options.matrices);
-  DirectResult direct = ComputeDirect(mesh, bvh, pool, options.lmax, keep_hits);
+  DirectResult direct = ComputeDirect(mesh, bvh, plan, options.lmax, keep_hits);
   r.rays = direct.rays;
   r.closed_form_vertices = direct.closed_form_vertices;
   r.direct_seconds = SecondsSince(t0);
 
   if (!bounces) {
     transport.coeffs = ToFloat(direct.transfer);
-    if (options.material.glossy) AddGlossy(mesh, &bvh, &pool, &direct, options, nullptr, transport, r);
+    if (options.material.glossy) AddGlossy(mesh, &bvh, &plan, &direct, options, nullptr, transport, r);
     return transport;
   }
 
   t0 = std::chrono::steady_clock::now();
-  BounceResult bounced = AddBounces(mesh, pool, direct, options, r, options.material.glossy);
+  BounceResult bounced = AddBounces(mesh, plan, direct, options, r, options.material.glossy);
   r.bounce_seconds = SecondsSince(t0);
   transport.channels = bounced.channels;
   transport.coeffs = ToFloat(bounced.transfer);
-  if (options.material.glossy) AddGlossy(mesh, &bvh, &pool, &direct, options, &bounced.before_last, transport, r);
+  if (options.material.glossy) AddGlossy(mesh, &bvh, &plan, &direct, options, &bounced.before_last, transport, r);
   return transport;
 }
 

@@ -66,8 +66,14 @@ struct TransportOptions {
   TransportMode mode = TransportMode::kShadowed;
   int lmax = 2;
   int samples = 1024;                ///< directions per vertex (stratified: floor(sqrt)^2); 1024 =
-                                     ///< DefaultSamples(2, kFibonacci), precompute/sample_rule.h
+                                     ///< DefaultHiddenSamples(2, kFibonacci), precompute/sample_rule.h
   Sampler sampler = Sampler::kFibonacci;
+  /// Directions per vertex the camera does not see (`seen`); 0: `samples` (sample_rule.h).
+  int hidden_samples = 0;
+  /// Per vertex, nonzero when the camera sees it (some pixel of a frame shows a triangle of
+  /// it); empty: every vertex is seen. Those take `samples` directions, the others
+  /// `hidden_samples`.
+  std::vector<std::uint8_t> seen;
   int bounces = 1;                   ///< interreflection bounces
   std::uint64_t seed = 1;
   double bounce_tolerance = 1e-4;    ///< stop when a bounce adds less than this share of direct
@@ -113,7 +119,9 @@ struct TransportReport {
   double bvh_seconds = 0, direct_seconds = 0, bounce_seconds = 0;
   std::uint64_t rays = 0;                 ///< rays actually traced
   std::size_t closed_form_vertices = 0;   ///< vertices given the exact closed form
-  int directions_per_vertex = 0;
+  int directions_per_vertex = 0;          ///< directions of each vertex the camera sees
+  int hidden_directions = 0;              ///< directions of each it does not see (0: none such)
+  std::size_t hidden_vertices = 0;        ///< vertices the camera does not see, given those
   std::vector<double> bounce_share;       ///< energy each bounce added, relative to direct
   std::string bounce_stop;                ///< why the bounces stopped
   double glossy_seconds = 0;              ///< the lobe's transfer (glossy materials)

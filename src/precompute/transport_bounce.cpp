@@ -58,7 +58,7 @@ void AddHitLight(const Mesh& mesh, std::uint32_t triangle, float u, float v, con
   for (int k = 0; k < count; ++k) out[k] += f * (b[0] * t0[k] + b[1] * t1[k] + b[2] * t2[k]);
 }
 
-BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const DirectResult& direct,
+BounceResult AddBounces(const Mesh& mesh, const DirectionPlan& plan, const DirectResult& direct,
                         const TransportOptions& options, TransportReport& report, bool keep_before_last) {
   const int count = CoeffCount(options.lmax);
   const std::size_t nv = mesh.vertex_count();
@@ -76,7 +76,6 @@ BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const Direc
   result.transfer = current;
   if (keep_before_last) result.before_last = current;
   const double direct_energy = Energy(current, count);
-  const double weight = 4.0 / double(pool.size());  // (4 pi / N) * (1 / pi)
   const bool textured = mesh.textured();
 
   std::size_t front_hits = 0;
@@ -93,15 +92,16 @@ BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const Direc
     ParallelFor(nv, 64, [&](std::size_t begin, std::size_t end) {
       for (std::size_t v = begin; v < end; ++v) {
         const glm::dvec3 n(mesh.normals[v]);
-        const auto& dirs = pool.sets[pool.SetOf(v)];
+        const std::size_t directions = plan.PoolOf(v).size();  // the camera's vertices take more
+        const double vertex_weight = 4.0 / double(directions);     // (4 pi / N) * (1 / pi)
         double* out = next.data() + v * stride;
         for (const VertexHit& h : direct.hits[v]) {
           if (!h.front) continue;  // the unlit back of a surface reflects nothing
-          const double cosine = glm::dot(n, dirs[h.dir]);
-          const glm::vec3 albedo = textured ? HitAlbedo(mesh, v, h.triangle, h.u, h.v, dirs.size()) : glm::vec3(0.f);
+          const double cosine = glm::dot(n, plan.Direction(v, h.dir));
+          const glm::vec3 albedo = textured ? HitAlbedo(mesh, v, h.triangle, h.u, h.v, directions) : glm::vec3(0.f);
           for (int c = 0; c < channels; ++c)
-            AddHitLight(mesh, h.triangle, h.u, h.v, current, channels, count, c, weight * cosine, out + c * count,
-                        textured ? &albedo : nullptr);
+            AddHitLight(mesh, h.triangle, h.u, h.v, current, channels, count, c, vertex_weight * cosine,
+                        out + c * count, textured ? &albedo : nullptr);
         }
       }
       progress.Advance(end - begin);

@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <string>
 
 #include <glm/geometric.hpp>
 #if defined(__SSE2__)
@@ -116,19 +117,17 @@ constexpr std::size_t kMaxBasisTable = std::size_t(1) << 18;
 
 }  // namespace
 
-DirectResult ComputeDirect(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lmax,
-                           bool keep_hits) {
+namespace {
+
+/// The direct transfer of the vertices of `vertices`, each traced with its set of `pool`.
+void RunPass(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lmax, bool keep_hits,
+             const std::vector<std::uint32_t>& vertices, const std::string& what, DirectResult& result) {
   const int count = CoeffCount(lmax);
-  const std::size_t nv = mesh.vertex_count();
-  DirectResult result;
-  result.transfer.resize(nv * count);
-  if (keep_hits) result.hits.resize(nv);
-  result.sees_sky.resize(nv);
   const float scene_scale = bvh.SceneScale();
   const double weight = 4.0 / double(pool.size());  // (4 pi / N) * (1 / pi)
   std::atomic<std::uint64_t> rays{0};
   std::atomic<std::size_t> closed{0};
-  Progress progress(keep_hits ? "direct transfer (closest hits)" : "shadowed transfer", nv);
+  Progress progress(what, vertices.size());
 
   // Any-hit rays: the directions of each set as three arrays, so that the horizon test of all
   // of a vertex's directions (the count of rays it traces) is one vectorised pass; then only the
@@ -150,15 +149,15 @@ DirectResult ComputeDirect(const Mesh& mesh, const Bvh& bvh, const DirectionPool
   // Vertices in the order of their direction sets (then by index): consecutive vertices then
   // share a set, whose fan and arrays stay in the cache. Each vertex's result is its own, so the
   // order changes nothing else.
-  std::vector<std::uint32_t> order(nv);
+  std::vector<std::uint32_t> order(vertices.size());
   {
     std::vector<std::uint32_t> start(pool.sets.size() + 1, 0);
-    for (std::size_t v = 0; v < nv; ++v) ++start[pool.SetOf(v) + 1];
+    for (std::uint32_t v : vertices) ++start[pool.SetOf(v) + 1];
     for (std::size_t s = 0; s < pool.sets.size(); ++s) start[s + 1] += start[s];
-    for (std::size_t v = 0; v < nv; ++v) order[start[pool.SetOf(v)]++] = static_cast<std::uint32_t>(v);
+    for (std::uint32_t v : vertices) order[start[pool.SetOf(v)]++] = v;
   }
 
-  ParallelFor(nv, 64, [&](std::size_t begin, std::size_t end) {
+  ParallelFor(order.size(), 64, [&](std::size_t begin, std::size_t end) {
     std::vector<std::uint8_t> blocked;
     std::vector<std::optional<Hit>> hits;
     std::vector<double> y(count), t(count);
@@ -236,8 +235,29 @@ DirectResult ComputeDirect(const Mesh& mesh, const Bvh& bvh, const DirectionPool
     closed += local_closed;
     progress.Advance(end - begin);
   });
-  result.rays = rays;
-  result.closed_form_vertices = closed;
+  result.rays += rays;
+  result.closed_form_vertices += closed;
+}
+
+}  // namespace
+
+DirectResult ComputeDirect(const Mesh& mesh, const Bvh& bvh, const DirectionPlan& plan, int lmax,
+                           bool keep_hits) {
+  const std::size_t nv = mesh.vertex_count();
+  DirectResult result;
+  result.transfer.resize(nv * CoeffCount(lmax));
+  if (keep_hits) result.hits.resize(nv);
+  result.sees_sky.resize(nv);
+  const std::string what = keep_hits ? "direct transfer (closest hits)" : "shadowed transfer";
+  for (std::size_t p = 0; p < plan.pools.size(); ++p) {
+    std::vector<std::uint32_t> vertices;
+    vertices.reserve(nv);
+    for (std::size_t v = 0; v < nv; ++v)
+      if ((plan.pool_of.empty() ? 0 : plan.pool_of[v]) == p) vertices.push_back(static_cast<std::uint32_t>(v));
+    const std::string label =
+        plan.pools.size() == 1 ? what : what + (p == 0 ? ", vertices the camera sees" : ", vertices it does not");
+    RunPass(mesh, bvh, plan.pools[p], lmax, keep_hits, vertices, label, result);
+  }
   return result;
 }
 

@@ -47,10 +47,10 @@ struct DirectResult {
   std::size_t closed_form_vertices = 0;
 };
 
-/// Shadowed transfer of every vertex (control-variate estimator). With `keep_hits`, traces
-/// closest hits instead of any-hit rays and records them.
-DirectResult ComputeDirect(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lmax,
-                           bool keep_hits);
+/// Shadowed transfer of every vertex (control-variate estimator), each from the set of its pool
+/// in `plan`. With `keep_hits`, traces closest hits instead of any-hit rays and records them
+/// (VertexHit::dir indexes the vertex's set).
+DirectResult ComputeDirect(const Mesh& mesh, const Bvh& bvh, const DirectionPlan& plan, int lmax, bool keep_hits);
 
 struct BounceResult {
   int channels = 1;
@@ -63,11 +63,11 @@ struct BounceResult {
 /// The transfer matrices of every vertex into transport.matrices (transfer_matrix.h), from the
 /// blocked directions and hits `direct` recorded (null: unshadowed, no pool); `hit_transfer`
 /// (BounceResult::before_last, transport.channels channels) with interreflection, else null.
-void ComputeTransferMatrices(const Mesh& mesh, const DirectionPool* pool, const DirectResult* direct, int lmax,
+void ComputeTransferMatrices(const Mesh& mesh, const DirectionPlan* plan, const DirectResult* direct, int lmax,
                              const std::vector<double>* hit_transfer, Transport& transport);
 
 /// Adds up to options.bounces bounces to `direct`; records each bounce's share in `report`.
-BounceResult AddBounces(const Mesh& mesh, const DirectionPool& pool, const DirectResult& direct,
+BounceResult AddBounces(const Mesh& mesh, const DirectionPlan& plan, const DirectResult& direct,
                         const TransportOptions& options, TransportReport& report, bool keep_before_last = false);
 
 /// The glossy transfer G of every vertex (transport.h) for options.material seen from

@@ -43,8 +43,13 @@ std::uint64_t TransportKey(const Mesh& mesh, const TransportOptions& o) {
     const std::uint64_t content = texture->content_hash();
     h = Fnv1a(&content, sizeof content, h);
   }
+  // Which vertices the camera sees decides how many directions each one took; without a split
+  // every vertex took `samples`, whatever hidden_samples says.
+  const bool split = !o.seen.empty() && o.hidden_samples && o.hidden_samples != o.samples;
+  if (split) h = HashVector(o.seen, h);
   const std::string options = std::string("prt ") + PRT_VERSION + " mode=" + TransportModeName(o.mode) +
                               " lmax=" + std::to_string(o.lmax) + " samples=" + std::to_string(o.samples) +
+                              " hidden_samples=" + std::to_string(split ? o.hidden_samples : o.samples) +
                               " sampler=" + SamplerName(o.sampler) + " bounces=" + std::to_string(o.bounces) +
                               " seed=" + std::to_string(o.seed) + " tol=" + std::to_string(o.bounce_tolerance) +
                               " sets=" + std::to_string(o.direction_sets) +

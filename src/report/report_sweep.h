@@ -28,6 +28,7 @@
 #include "precompute/transport.h"
 #include "render/render_options.h"
 #include "report/report_glossy.h"
+#include "report/report_noise.h"
 
 namespace prt {
 
@@ -95,6 +96,7 @@ struct ReportData {
   int max_lmax = 0;
   double bvh_seconds = 0;  ///< BVH build inside each sampled run (the fastest seen): a fixed cost
   std::optional<GlossyStudy> glossy;  ///< with --material phong:N,KS (report_glossy.h)
+  std::optional<NoiseStudy> noise;    ///< the visible-noise study (report_noise.h)
 };
 
 /// The transport of `options`, timed: a run shorter than 0.05 s is repeated until the repeats

@@ -9,6 +9,7 @@
 #include "core/log.h"
 #include "io/png_io.h"
 #include "raster/plot.h"
+#include "report/report_noise.h"
 #include "report/report_sample_rule.h"
 
 namespace prt {
@@ -118,6 +119,7 @@ std::string Markdown(const ReportData& d) {
     s += "| " + std::to_string(l.face_size) + " | " + std::to_string(l.supersample) + "^2 | " + F("%.4f", l.seconds) +
          " | " + F("%.3g", l.coeff_error) + " |\n";
   if (d.glossy) s += GlossyMarkdown(*d.glossy);
+  if (d.noise) s += NoiseMarkdown(*d.noise);
   const std::size_t glossy_rows = d.glossy ? d.glossy->vector_rows.size() + d.glossy->matrix_rows.size() : 0;
   s += "\n## All measurements\n\nSee report.csv (" + std::to_string(d.rows.size() + glossy_rows) +
        " rows; the glossy ones have material phong:N,KS and path glossy-vector or glossy-matrices) and "

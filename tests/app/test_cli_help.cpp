@@ -106,7 +106,7 @@ TEST_SUITE("app") {
     for (const char* scene_option : {"--mesh", "--env", "--lmax", "--transport", "--samples", "--view", "--size",
                                      "--tonemap", "--exposure", "--ssaa", "--eye", "--target", "--up", "--fov"})
       CHECK(Mentions(help.out, scene_option));
-    CHECK(help.out.find("e.g. fibonacci 1024 at lmax 2") != std::string::npos);  // --samples follows --lmax
+    CHECK(help.out.find("e.g. fibonacci 8192 at lmax 2") != std::string::npos);  // --samples follows --lmax
     for (const char* ask : {"render --help", "render -h", "render --out x --help"}) {
       CAPTURE(ask);
       const auto r = test::RunPrt(ask);

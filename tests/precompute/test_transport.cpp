@@ -168,6 +168,46 @@ TEST_SUITE("precompute") {
     CHECK(worst < 0.01);
   }
 
+  TEST_CASE("white furnace with two direction counts: the vertices the camera sees and the others each weigh their own") {
+    // Every other vertex "hidden", with 16 times fewer directions: each vertex's bounce and
+    // its direct estimate must weigh its own directions (4 pi / N of its own set), so the series
+    // still tends to 1 at every vertex, whatever set it drew.
+    Mesh knot = MakeTorusKnot(2, 3, 0.25f, 160, 16);
+    SetUniformAlbedo(knot, glm::vec3(1.0f));
+    TransportOptions o;
+    o.mode = TransportMode::kInterreflection;
+    o.samples = 512;
+    o.hidden_samples = 32;
+    o.bounces = 64;
+    o.bounce_tolerance = 0.0;
+    o.seen.resize(knot.vertex_count());
+    for (std::size_t v = 0; v < o.seen.size(); ++v) o.seen[v] = v % 2;
+    TransportReport r;
+    const Transport t = ComputeTransport(knot, o, &r);
+    CHECK(r.directions_per_vertex == 512);
+    CHECK(r.hidden_directions == 32);
+    CHECK(r.hidden_vertices == knot.vertex_count() / 2);
+    double worst = 0.0;
+    for (std::size_t v = 0; v < knot.vertex_count(); ++v) worst = std::max(worst, std::abs(2 * std::sqrt(kPi) * t.at(v, 0)[0] - 1.0));
+    MESSAGE("furnace, two counts: worst |radiance - 1| after 64 bounces = " << worst);
+    CHECK(worst < 0.01);
+    // The seen vertices are exactly what a single pool of 512 gives them in their direct
+    // transfer (pool 0 is that pool), and the hidden ones are not.
+    TransportOptions shadowed = o;
+    shadowed.mode = TransportMode::kShadowed;
+    TransportOptions single = shadowed;
+    single.hidden_samples = 0;
+    single.seen.clear();
+    const Transport split = ComputeTransport(knot, shadowed, nullptr), whole = ComputeTransport(knot, single, nullptr);
+    std::size_t same_seen = 0, same_hidden = 0;
+    for (std::size_t v = 0; v < knot.vertex_count(); ++v) {
+      const bool same = std::equal(split.at(v, 0), split.at(v, 0) + CoeffCount(o.lmax), whole.at(v, 0));
+      (o.seen[v] ? same_seen : same_hidden) += same;
+    }
+    CHECK(same_seen == knot.vertex_count() / 2);
+    CHECK(same_hidden < knot.vertex_count() / 4);  // those that agree see everything (the closed form)
+  }
+
   TEST_CASE("one bounce under a ceiling matches the analytic view-factor value") {
     // A tiny upward receiver at the origin under a downward-facing square ceiling of half-side
     // s at height 1, constant light 1, albedo rho everywhere. The ceiling sees only the tiny

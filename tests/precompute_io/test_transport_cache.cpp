@@ -57,11 +57,48 @@ TEST_SUITE("precompute_io") {
     with("seed", [](Mesh&, TransportOptions& o) { o.seed = 2; });
     with("tolerance", [](Mesh&, TransportOptions& o) { o.bounce_tolerance = 2e-4; });
     with("direction sets", [](Mesh&, TransportOptions& o) { o.direction_sets = 63; });
+    // Which vertices the camera sees decides which take the fewer directions.
+    const auto seen = [](const Mesh& m, std::size_t hidden) {
+      std::vector<std::uint8_t> s(m.vertex_count(), 1);
+      s[hidden] = 0;
+      return s;
+    };
+    with("hidden samples", [&](Mesh& m, TransportOptions& o) { o.hidden_samples = 64, o.seen = seen(m, 5); });
+    with("seen vertices", [&](Mesh& m, TransportOptions& o) { o.hidden_samples = 64, o.seen = seen(m, 6); });
     std::set<std::uint64_t> distinct;
     for (const auto& [name, key] : keys) {
       CAPTURE(name);
       CHECK(distinct.insert(key).second);
     }
+  }
+
+  TEST_CASE("cache: a render reuses precompute's transport, whose every vertex took what the camera's take") {
+    // precompute has no camera: every vertex takes --samples. A render of the same options
+    // needs --samples only where the camera looks and fewer elsewhere, which that transport
+    // exceeds everywhere: it is taken as it is, and the render then equals one whose hidden
+    // vertices take --samples too.
+    const std::string dir = test::ScratchDir("cache_precompute");
+    ObjPart part{"part", SphereOnFloor(1.0f), glm::vec3(0.7f, 0.5f, 0.3f)};
+    WriteFileAtomic(dir + "/scene.obj", FormatObj({part}, "scene.mtl"));
+    WriteFileAtomic(dir + "/scene.mtl", FormatMtl({part}));
+    const std::string scene = " --mesh " + Q(dir + "/scene.obj") + " --env sky --transport shadowed --samples 256";
+    const std::string render = " --exposure 0 --size 48x36 --frames 1 --eye 3,3,5 --target 0,0.8,0";
+    REQUIRE(test::RunPrt("precompute" + scene + " --out " + Q(dir + "/p")).exit_code == 0);
+    const auto reused = test::RunPrt("render" + scene + render + " --hidden-samples 32 --out " + Q(dir + "/p"));
+    REQUIRE(reused.exit_code == 0);
+    CHECK(reused.err.find("transport: taken from the cache") != std::string::npos);
+    CHECK(reused.err.find("256 directions at every vertex") != std::string::npos);
+    const auto every = test::RunPrt("render" + scene + render + " --hidden-samples 256 --cache none --out " + Q(dir + "/e"));
+    const auto split = test::RunPrt("render" + scene + render + " --hidden-samples 32 --cache none --out " + Q(dir + "/s"));
+    REQUIRE(every.exit_code == 0);
+    REQUIRE(split.exit_code == 0);
+    CHECK(split.err.find("256 fibonacci directions for each of the") != std::string::npos);
+    const Image8 from_cache = ReadPng(dir + "/p/frame_0000.png");
+    CHECK(CompareImages(from_cache, ReadPng(dir + "/e/frame_0000.png")).differing_pixels == 0);
+    // A cache of a split transport is not taken for one at every vertex.
+    REQUIRE(test::RunPrt("render" + scene + render + " --hidden-samples 32 --out " + Q(dir + "/s2")).exit_code == 0);
+    const auto other = test::RunPrt("render" + scene + render + " --hidden-samples 256 --out " + Q(dir + "/s2"));
+    CHECK(other.err.find("taken from the cache") == std::string::npos);
   }
 
   TEST_CASE("cache: a render from the cache is byte for byte a render without it, whatever input changed") {
@@ -74,7 +111,7 @@ TEST_SUITE("precompute_io") {
     // Options by name, so that a change replaces the base value (an option given twice is an error).
     using Options = std::map<std::string, std::string>;
     const Options base = {{"--mesh", Q(dir + "/scene.obj")}, {"--transport", "interreflection"},
-                          {"--samples", "64"}, {"--bounces", "1"}, {"--seed", "1"}, {"--direction-sets", "8"},
+                          {"--samples", "64"}, {"--hidden-samples", "16"}, {"--bounces", "1"}, {"--seed", "1"}, {"--direction-sets", "8"},
                           {"--env", "sky"}, {"--exposure", "0"}, {"--ssaa", "1"}, {"--size", "48x36"},
                           {"--frames", "1"}, {"--eye", "3,3,5"}, {"--target", "0,0.8,0"}, {"--lmax", "2"}};
     const auto line = [](const Options& options) {
@@ -99,7 +136,9 @@ TEST_SUITE("precompute_io") {
     const Options changes = {
         {"--mesh", Q(dir + "/moved.obj")}, {"--albedo", "0.2,0.5,0.9"}, {"--transport", "shadowed"},
         {"--lmax", "3"}, {"--samples", "96"}, {"--sampler", "stratified"}, {"--bounces", "2"}, {"--seed", "2"},
-        {"--direction-sets", "3"},
+        {"--direction-sets", "3"}, {"--hidden-samples", "32"},
+        // another camera sees other vertices: they take the 64 directions, the rest 16
+        {"--eye", "-3,2,-5"},
     };
     for (const auto& [option, value] : changes) {
       Options changed = base;

@@ -1,0 +1,149 @@
+#include "report/report_noise.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "core/log.h"
+#include "core/text.h"
+#include "precompute/light.h"
+#include "precompute/sample_rule.h"
+#include "precompute/shade.h"
+#include "raster/exposure.h"
+#include "render/render_frames.h"
+#include "render/seen_vertices.h"
+
+namespace prt {
+
+FrameDifference CompareFrames(const Image8& a, const Image8& b) {
+  FrameDifference d;
+  if (a.width != b.width || a.height != b.height || a.rgb.size() != b.rgb.size())
+    throw Error("frames of different sizes compared (internal)");
+  const std::size_t pixels = a.rgb.size() / 3;
+  std::size_t over = 0;
+  for (std::size_t p = 0; p < pixels; ++p) {
+    int worst = 0;
+    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(a.rgb[3 * p + c]) - int(b.rgb[3 * p + c])));
+    d.max_levels = std::max(d.max_levels, worst);
+    over += worst > 1;
+  }
+  d.share_over_one = pixels ? double(over) / double(pixels) : 0.0;
+  return d;
+}
+
+std::vector<NoiseMethod> NoiseMethods(int lmax) {
+  const Sampler s = Sampler::kFibonacci;
+  return {
+      {"one set per vertex from a pool of 64, 1024 directions (the default before)", 1024, 1024, 64},
+      {"one set shared by every vertex, 1024 directions", 1024, 1024, 1},
+      {"one set per vertex, 4096 directions", 4096, 4096, 64},
+      {"the sample rule's default: " + std::to_string(DefaultSamples(lmax, s)) + " for the vertices the camera sees, " +
+           std::to_string(DefaultHiddenSamples(lmax, s)) + " for the others",
+       DefaultSamples(lmax, s), DefaultHiddenSamples(lmax, s), 64},
+      {"one set per vertex, 16384 directions", 16384, 16384, 64},
+  };
+}
+
+Image8 NoiseFrame(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Environment& env,
+                  const RenderOptions& picture, double* ev) {
+  Rasterizer rasterizer;
+  const Camera camera = ChooseCamera(mesh, picture);
+  const AxisRotation rotation(picture.axis, transport.lmax);
+  const RasterImage& frame = RasterizeFrame(rasterizer, mesh, transport, light, rotation, env, camera, picture, 0.0, 1.0);
+  if (!*ev) *ev = AutoExposureEv(frame, picture.tonemap);
+  return ToneMapFrame(frame, picture, *ev, 1.0).image;
+}
+
+namespace {
+
+TransportOptions OptionsOf(const NoiseConfig& c, const NoiseMethod& m, const std::vector<std::uint8_t>& seen) {
+  TransportOptions o;
+  o.mode = c.mode;
+  o.lmax = c.lmax;
+  o.samples = m.samples;
+  o.hidden_samples = m.hidden_samples;
+  o.direction_sets = m.direction_sets;
+  o.seed = c.seed;
+  o.bounces = c.bounces;
+  if (m.hidden_samples != m.samples) o.seen = seen;
+  return o;
+}
+
+/// Relative RMS of the seen vertices' luminance against the converged transport's.
+double SeenRmsError(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b,
+                    const std::vector<std::uint8_t>& seen) {
+  double num = 0.0, den = 0.0;
+  for (std::size_t v = 0; v < a.size(); ++v) {
+    if (!seen[v]) continue;
+    const double x = a[v].x + a[v].y + a[v].z, y = b[v].x + b[v].y + b[v].z;
+    num += (x - y) * (x - y);
+    den += y * y;
+  }
+  return den > 0.0 ? std::sqrt(num / den) : 0.0;
+}
+
+}  // namespace
+
+NoiseStudy RunNoiseStudy(const Mesh& mesh, const Environment& env, const NoiseConfig& config,
+                         const RenderOptions& picture) {
+  NoiseStudy study;
+  study.config = config;
+  study.vertices = mesh.vertex_count();
+  const ShRgb light = ProjectLight(env, config.lmax);
+  const Camera camera = ChooseCamera(mesh, picture);
+  const std::vector<std::uint8_t> seen = SeenVertices(mesh, camera, picture);
+  for (std::uint8_t s : seen) study.seen_vertices += s;
+
+  const NoiseMethod converged{"converged", config.converged_samples, config.converged_samples, 64};
+  const Transport truth = ComputeTransport(mesh, OptionsOf(config, converged, seen), nullptr);
+  const Image8 truth_frame = NoiseFrame(mesh, truth, light, env, picture, &study.exposure);
+  const std::vector<glm::vec3> truth_radiance = ShadeVertices(mesh, truth, light, false);
+
+  const std::vector<NoiseMethod> methods = NoiseMethods(config.lmax);
+  std::vector<std::vector<double>> seconds(methods.size());
+  study.rows.resize(methods.size());
+  // Repeats interleaved across the methods, so that a change of the machine's speed during the
+  // study touches every method alike.
+  for (int repeat = 0; repeat < std::max(1, config.repeats); ++repeat) {
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      TransportReport r;
+      const auto t0 = std::chrono::steady_clock::now();
+      const Transport t = ComputeTransport(mesh, OptionsOf(config, methods[m], seen), &r);
+      seconds[m].push_back(SecondsSince(t0));
+      if (repeat > 0) continue;
+      NoiseRow& row = study.rows[m];
+      row.method = methods[m];
+      row.rays = r.rays;
+      row.rms_error = SeenRmsError(ShadeVertices(mesh, t, light, false), truth_radiance, seen);
+      double ev = study.exposure;
+      row.frame = CompareFrames(NoiseFrame(mesh, t, light, env, picture, &ev), truth_frame);
+    }
+  }
+  for (std::size_t m = 0; m < methods.size(); ++m) {
+    std::sort(seconds[m].begin(), seconds[m].end());
+    study.rows[m].seconds = seconds[m][seconds[m].size() / 2];
+  }
+  return study;
+}
+
+std::string NoiseMarkdown(const NoiseStudy& s) {
+  std::string md = "## Visible noise\n\n";
+  md += Formatted(
+      "Frame 0 (%s transport, lmax %d, the render's camera, tone curve and supersampling, exposure %.1f EV "
+      "measured on the converged frame) of each way of spending directions, against the same frame with %d "
+      "directions at every vertex: the largest per-pixel difference in 8-bit levels and the share of pixels "
+      "more than one level apart (what a viewer sees as blotches), the relative RMS error of the radiance of the "
+      "%zu of %zu vertices the camera sees, the rays traced and the transport's time (median of %d runs, "
+      "interleaved).\n\n",
+      TransportModeName(s.config.mode), s.config.lmax, s.exposure, s.config.converged_samples, s.seen_vertices,
+      s.vertices, s.config.repeats);
+  md += "| method | largest difference (levels) | pixels > 1 level | RMS error (seen vertices) | rays | seconds |\n";
+  md += "|---|---:|---:|---:|---:|---:|\n";
+  for (const NoiseRow& r : s.rows)
+    md += Formatted("| %s | %d | %.3f%% | %.3f%% | %llu | %.3f |\n", r.method.name.c_str(), r.frame.max_levels,
+                    100.0 * r.frame.share_over_one, 100.0 * r.rms_error, static_cast<unsigned long long>(r.rays),
+                    r.seconds);
+  return md + "\n";
+}
+
+}  // namespace prt
