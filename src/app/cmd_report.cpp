@@ -130,7 +130,7 @@ int RunReport(const std::vector<std::string>& tokens) {
   noise.bounces = scene.bounces;
   if (quick) {
     noise.mode = TransportMode::kShadowed;
-    noise.converged_samples = 16384;
+    noise.converged_samples = 32768;
     noise.repeats = 1;
   }
   RenderOptions frame;

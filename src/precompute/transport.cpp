@@ -4,12 +4,15 @@
 #include <chrono>
 #include <cmath>
 #include <future>
+#include <limits>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
 #include "core/log.h"
 #include "core/parallel.h"
+#include "precompute/bounce_senders.h"
 #include "precompute/transfer_matrix.h"
 #include "precompute/transport_steps.h"
 #include "sh/basis.h"
@@ -35,6 +38,60 @@ void AddGlossy(const Mesh& mesh, const Bvh* bvh, const DirectionPlan* plan, cons
   const auto t0 = std::chrono::steady_clock::now();
   transport.glossy = ToFloat(ComputeGlossy(mesh, bvh, options, hits, transport.channels, r));
   r.glossy_seconds = SecondsSince(t0);
+}
+
+/// Shadowed or interreflected transport of every vertex of `mesh`; the report's vertex counts
+/// cover its first `counted` vertices (all by default: the rest only send bounced light).
+Transport ComputeTraced(const Mesh& mesh, const TransportOptions& options, TransportReport& r,
+                        std::size_t counted = std::numeric_limits<std::size_t>::max()) {
+  Transport transport;
+  transport.material = options.material;
+  transport.lmax = options.lmax;
+  transport.vertices = mesh.vertex_count();
+  counted = std::min(counted, mesh.vertex_count());
+
+  // The BVH and the direction pool do not depend on each other: with more than one thread they
+  // are built at the same time (the BVH on a thread of its own), else one after the other.
+  auto t0 = std::chrono::steady_clock::now();
+  const auto build_bvh = [&mesh, &r] {
+    const auto tb = std::chrono::steady_clock::now();
+    Bvh built = Bvh::Build(mesh);
+    r.bvh_seconds = SecondsSince(tb);
+    return built;
+  };
+  std::future<Bvh> bvh_future;
+  if (ThreadCount() > 1) bvh_future = std::async(std::launch::async, build_bvh);
+  const DirectionPlan plan =
+      MakeDirectionPlan(options.sampler, options.samples, options.hidden_samples ? options.hidden_samples : options.samples,
+                        options.direction_sets, options.seed, options.seen, mesh.vertex_count());
+  const Bvh bvh = bvh_future.valid() ? bvh_future.get() : build_bvh();
+  r.bvh_built = true;
+  r.directions_per_vertex = static_cast<int>(plan.pools[0].size());
+  if (plan.pools.size() > 1) {
+    r.hidden_directions = static_cast<int>(plan.pools[1].size());
+    for (std::size_t v = 0; v < counted; ++v) r.hidden_vertices += plan.pool_of[v];
+  }
+  // Bounces gather from the hits; transfer matrices are built from them.
+  const bool bounces = options.mode == TransportMode::kInterreflection;
+  const bool keep_hits = bounces || (options.material.glossy && options.matrices);
+  DirectResult direct = ComputeDirect(mesh, bvh, plan, options.lmax, keep_hits);
+  r.rays = direct.rays;
+  for (std::size_t v = 0; v < counted; ++v) r.closed_form_vertices += direct.unoccluded[v];
+  r.direct_seconds = SecondsSince(t0);
+
+  if (!bounces) {
+    transport.coeffs = ToFloat(direct.transfer);
+    if (options.material.glossy) AddGlossy(mesh, &bvh, &plan, &direct, options, nullptr, transport, r);
+    return transport;
+  }
+
+  t0 = std::chrono::steady_clock::now();
+  BounceResult bounced = AddBounces(mesh, plan, direct, options, r, options.material.glossy);
+  r.bounce_seconds = SecondsSince(t0);
+  transport.channels = bounced.channels;
+  transport.coeffs = ToFloat(bounced.transfer);
+  if (options.material.glossy) AddGlossy(mesh, &bvh, &plan, &direct, options, &bounced.before_last, transport, r);
+  return transport;
 }
 
 }  // namespace
@@ -94,48 +151,24 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
     return transport;
   }
 
-  // The BVH and the direction pool do not depend on each other: with more than one thread they
-  // are built at the same time (the BVH on a thread of its own), else one after the other.
-  auto t0 = std::chrono::steady_clock::now();
-  const auto build_bvh = [&mesh, &r] {
-    const auto tb = std::chrono::steady_clock::now();
-    Bvh built = Bvh::Build(mesh);
-    r.bvh_seconds = SecondsSince(tb);
-    return built;
-  };
-  std::future<Bvh> bvh_future;
-  if (ThreadCount() > 1) bvh_future = std::async(std::launch::async, build_bvh);
-  const DirectionPlan plan =
-      MakeDirectionPlan(options.sampler, options.samples, options.hidden_samples ? options.hidden_samples : options.samples,
-                        options.direction_sets, options.seed, options.seen, mesh.vertex_count());
-  const Bvh bvh = bvh_future.valid() ? bvh_future.get() : build_bvh();
-  r.bvh_built = true;
-  r.directions_per_vertex = static_cast<int>(plan.pools[0].size());
-  if (plan.pools.size() > 1) {
-    r.hidden_directions = static_cast<int>(plan.pools[1].size());
-    for (std::uint8_t p : plan.pool_of) r.hidden_vertices += p;
-  }
-  // Bounces gather from the hits; transfer matrices are built from them.
-  const bool bounces = options.mode == TransportMode::kInterreflection;
-  const bool keep_hits = bounces || (options.material.glossy && options.matrices);
-  DirectResult direct = ComputeDirect(mesh, bvh, plan, options.lmax, keep_hits);
-  r.rays = direct.rays;
-  r.closed_form_vertices = direct.closed_form_vertices;
-  r.direct_seconds = SecondsSince(t0);
+  if (options.mode != TransportMode::kInterreflection) return ComputeTraced(mesh, options, r);
 
-  if (!bounces) {
-    transport.coeffs = ToFloat(direct.transfer);
-    if (options.material.glossy) AddGlossy(mesh, &bvh, &plan, &direct, options, nullptr, transport, r);
-    return transport;
-  }
-
-  t0 = std::chrono::steady_clock::now();
-  BounceResult bounced = AddBounces(mesh, plan, direct, options, r, options.material.glossy);
-  r.bounce_seconds = SecondsSince(t0);
-  transport.channels = bounced.channels;
-  transport.coeffs = ToFloat(bounced.transfer);
-  if (options.material.glossy) AddGlossy(mesh, &bvh, &plan, &direct, options, &bounced.before_last, transport, r);
+  // Interreflection: on a copy whose light-sending triangles are split finely (bounce_senders.h),
+  // the output the mesh's own vertices, which come first in the copy and are unchanged.
+  const std::optional<Mesh> refined = RefineSenders(mesh, r.senders);
+  if (!refined) return ComputeTraced(mesh, options, r);
+  TransportOptions o = options;
+  const std::size_t nv = mesh.vertex_count();
+  if (o.seen.empty() && o.hidden_samples && o.hidden_samples != o.samples) o.seen.assign(nv, 1);
+  if (!o.seen.empty()) o.seen.resize(refined->vertex_count(), 0);  // the added vertices only send light
+  transport = ComputeTraced(*refined, o, r, nv);
+  const std::size_t stride = std::size_t(transport.channels) * count;
+  transport.vertices = nv;
+  transport.coeffs.resize(nv * stride);
+  if (!transport.glossy.empty()) transport.glossy.resize(nv * stride);
+  if (!transport.matrices.empty()) transport.matrices.resize(nv * stride * count);
   return transport;
 }
+
 
 }  // namespace prt

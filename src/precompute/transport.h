@@ -52,6 +52,7 @@
 
 #include "geometry/mesh.h"
 #include "material/material.h"
+#include "precompute/bounce_senders.h"
 #include "precompute/samplers.h"
 #include "sh/coeffs.h"
 
@@ -128,6 +129,7 @@ struct TransportReport {
   std::uint64_t lobe_rays = 0;            ///< rays traced from the lobes
   int lobe_samples = 0;                   ///< lobe rays per vertex
   double matrix_seconds = 0;              ///< the transfer matrices
+  SenderRefinement senders;               ///< interreflection: the bounce senders split (bounce_senders.h)
 };
 
 /// Vectors per vertex the transport of `mesh` in `mode` will have: 3 for interreflection with

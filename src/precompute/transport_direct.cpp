@@ -200,6 +200,7 @@ void RunPass(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lm
           }
         }
         local_rays += above;
+        result.unoccluded[v] = blocked_above == 0;
         if (blocked_above == 0) ++local_closed;
         const bool any_open = above > blocked_above;
         result.sees_sky[v] = any_open;
@@ -225,6 +226,7 @@ void RunPass(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lm
                                   FrontSide(mesh, h, glm::vec3(dirs[i]))});
       }
       if (!any_blocked) ++local_closed;
+      result.unoccluded[v] = !any_blocked;
       result.sees_sky[v] = any_open;
       // Nothing open: the transfer is exactly zero (the estimate of the blocked part would
       // only cancel the closed form up to its sampling noise).
@@ -248,6 +250,7 @@ DirectResult ComputeDirect(const Mesh& mesh, const Bvh& bvh, const DirectionPlan
   result.transfer.resize(nv * CoeffCount(lmax));
   if (keep_hits) result.hits.resize(nv);
   result.sees_sky.resize(nv);
+  result.unoccluded.resize(nv);
   const std::string what = keep_hits ? "direct transfer (closest hits)" : "shadowed transfer";
   for (std::size_t p = 0; p < plan.pools.size(); ++p) {
     std::vector<std::uint32_t> vertices;

@@ -43,6 +43,7 @@ struct DirectResult {
   std::vector<double> transfer;                ///< [v * count + k]
   std::vector<std::vector<VertexHit>> hits;    ///< per vertex (only when asked for)
   std::vector<std::uint8_t> sees_sky;          ///< per vertex: some direction above it is open
+  std::vector<std::uint8_t> unoccluded;        ///< per vertex: nothing blocked (the closed form)
   std::uint64_t rays = 0;
   std::size_t closed_form_vertices = 0;
 };

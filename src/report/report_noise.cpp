@@ -99,7 +99,11 @@ NoiseStudy RunNoiseStudy(const Mesh& mesh, const Environment& env, const NoiseCo
   const Image8 truth_frame = NoiseFrame(mesh, truth, light, env, picture, &study.exposure);
   const std::vector<glm::vec3> truth_radiance = ShadeVertices(mesh, truth, light, false);
 
-  const std::vector<NoiseMethod> methods = NoiseMethods(config.lmax);
+  // Only methods well below the converged count: a method at the converged count would be
+  // compared with itself.
+  std::vector<NoiseMethod> methods;
+  for (const NoiseMethod& m : NoiseMethods(config.lmax))
+    if (4 * m.samples <= config.converged_samples) methods.push_back(m);
   std::vector<std::vector<double>> seconds(methods.size());
   study.rows.resize(methods.size());
   // Repeats interleaved across the methods, so that a change of the machine's speed during the

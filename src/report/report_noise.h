@@ -16,7 +16,8 @@
 /// default before the camera was taken into account), the same with one set shared by every
 /// vertex (the error correlated between neighbours), four times the directions everywhere,
 /// the sample rule's default (sample_rule.h: more directions for the vertices the frames show),
-/// and 16384 directions everywhere.
+/// and 16384 directions everywhere; those with more than a quarter of the converged count are
+/// left out.
 
 #include <string>
 #include <vector>
