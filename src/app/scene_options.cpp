@@ -278,7 +278,9 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
 std::string SamplesOrigin(const SceneOptions& o) {
   if (!o.samples_from_rule || o.transport == "unshadowed") return "";
   return " (the sample rule's default at lmax " + std::to_string(o.lmax) + ": " +
-         SampleRuleText(SamplerFromName(o.sampler)) + "; --samples N overrides)";
+         SampleRuleText(SamplerFromName(o.sampler)) +
+         "; it aims at frame 0 within 2 levels of a converged frame at every pixel, as measured at lmax 2 and 4; "
+         "--samples N and --hidden-samples N override)";
 }
 
 double MaxEdgeLength(const SceneOptions& options, double diagonal) {

@@ -86,7 +86,7 @@ Transport ComputeTraced(const Mesh& mesh, const TransportOptions& options, Trans
   }
 
   t0 = std::chrono::steady_clock::now();
-  BounceResult bounced = AddBounces(mesh, plan, direct, options, r, options.material.glossy);
+  BounceResult bounced = AddBounces(mesh, plan, direct, options, r, options.material.glossy, counted);
   r.bounce_seconds = SecondsSince(t0);
   transport.channels = bounced.channels;
   transport.coeffs = ToFloat(bounced.transfer);

@@ -34,7 +34,13 @@
 /// come from a pool of `direction_sets` sets drawn by the chosen sampler, each prepared once as
 /// a ray fan (geometry/ray_fan.h); vertex v uses set hash(seed, v) mod pool size, so neighbours
 /// get different sets, results do not depend on the thread count, and no fan is rebuilt per
-/// vertex.
+/// vertex. With `seen` (the vertices a render's frames show), those draw from a pool of
+/// `samples` directions and the others from one of `hidden_samples` (direction_pool.h,
+/// DirectionPlan; sample_rule.h says why); each vertex weighs its estimates by its own count.
+///
+/// Interreflection runs on a copy of the mesh whose long edges are split, so that the light a
+/// bounce reads at a hit point does not depend on how coarsely the senders are triangulated;
+/// only the mesh's own vertices are returned (bounce_senders.h).
 ///
 /// References
 /// [1] Sloan, Kautz, Snyder, "Precomputed Radiance Transfer for Real-Time Rendering in Dynamic,

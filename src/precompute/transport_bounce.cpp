@@ -1,5 +1,6 @@
 // Interreflection: each bounce gathers the previous bounce's transfer from the blocked
 // directions, weighted by the albedo at the hit over pi and the cosine at the receiver.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -59,7 +60,8 @@ void AddHitLight(const Mesh& mesh, std::uint32_t triangle, float u, float v, con
 }
 
 BounceResult AddBounces(const Mesh& mesh, const DirectionPlan& plan, const DirectResult& direct,
-                        const TransportOptions& options, TransportReport& report, bool keep_before_last) {
+                        const TransportOptions& options, TransportReport& report, bool keep_before_last,
+                        std::size_t counted) {
   const int count = CoeffCount(options.lmax);
   const std::size_t nv = mesh.vertex_count();
   BounceResult result;
@@ -79,8 +81,8 @@ BounceResult AddBounces(const Mesh& mesh, const DirectionPlan& plan, const Direc
   const bool textured = mesh.textured();
 
   std::size_t front_hits = 0;
-  for (const auto& hits : direct.hits)
-    for (const VertexHit& h : hits) front_hits += h.front;
+  for (std::size_t v = 0; v < std::min(counted, nv); ++v)
+    for (const VertexHit& h : direct.hits[v]) front_hits += h.front;
   if (front_hits == 0) {
     report.bounce_stop = "no bounce pass: no vertex sees any lit surface of the mesh";
     return result;

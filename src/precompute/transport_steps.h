@@ -4,6 +4,7 @@
 /// direct transfer with visibility, then the bounces. Internal to precompute/.
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "geometry/bvh.h"
@@ -68,8 +69,11 @@ void ComputeTransferMatrices(const Mesh& mesh, const DirectionPlan* plan, const 
                              const std::vector<double>* hit_transfer, Transport& transport);
 
 /// Adds up to options.bounces bounces to `direct`; records each bounce's share in `report`.
+/// None when none of the first `counted` vertices (the output's; the rest only send light,
+/// bounce_senders.h) sees a lit surface: their bounces would all be zero.
 BounceResult AddBounces(const Mesh& mesh, const DirectionPlan& plan, const DirectResult& direct,
-                        const TransportOptions& options, TransportReport& report, bool keep_before_last = false);
+                        const TransportOptions& options, TransportReport& report, bool keep_before_last = false,
+                        std::size_t counted = std::numeric_limits<std::size_t>::max());
 
 /// The glossy transfer G of every vertex (transport.h) for options.material seen from
 /// options.eye; `hit_transfer` (layout of BounceResult::transfer with `channels`) is what hit
