@@ -1,5 +1,6 @@
 #include "render/seen_vertices.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/mesh_ops.h"
@@ -12,6 +13,10 @@ namespace {
 /// and interpolated from three equal corner values, so rounding recovers it (up to 2^24
 /// triangles). The background is -1.
 constexpr int kIdBits = 12;
+
+/// An orbit of more frames is drawn at this many of them (1 degree apart or less for a full
+/// turn), so the pass stays a fraction of the render it serves.
+constexpr int kMaxOrbitViews = 360;
 
 }  // namespace
 
@@ -38,8 +43,11 @@ std::vector<std::uint8_t> SeenVertices(const Mesh& mesh, const Camera& camera, c
   std::vector<std::uint8_t> shown(nt, 0);
   const Bounds3 bounds = MeshBounds(mesh);
   Rasterizer rasterizer;
-  const int views = o.orbit != 0.0 ? o.frames : 1;  // the light's turn moves nothing
-  for (int i = 0; i < views; ++i) {
+  // The light's turn moves nothing; an orbit is drawn at every frame's camera, or at
+  // kMaxOrbitViews of them spread evenly when there are more.
+  const int views = o.orbit != 0.0 ? std::min(o.frames, kMaxOrbitViews) : 1;
+  for (int j = 0; j < views; ++j) {
+    const long long i = static_cast<long long>(j) * o.frames / views;
     const Camera view = Orbit(camera, o.orbit * double(i) / double(o.frames), bounds.lo, bounds.hi);
     const RasterImage& frame = rasterizer.Draw(view, o.width * k, o.height * k, positions, triangles, colors, ro);
     for (const glm::vec3& p : frame.image.pixels) {

@@ -8,10 +8,11 @@
 /// away, behind other surfaces, outside the view) changes the picture only through the light it
 /// bounces, which a receiver gathers from many hit points at once. So the transport spends its
 /// directions on the vertices seen (precompute/sample_rule.h). The test is exact for the
-/// frames drawn: each frame's camera (the orbit included) is drawn once by the rasterizer that
-/// draws the frames, at the frame's supersampled resolution, with each triangle's number as its
-/// colour, and the vertices of every triangle left in a sample are marked. The light's turn
-/// changes no visibility.
+/// frames drawn: each frame's camera (the orbit included; of a long orbit 360 cameras spread
+/// evenly over it) is drawn once by the rasterizer that draws the frames, at the frame's
+/// supersampled resolution, with each triangle's number as its colour, and the vertices of
+/// every triangle left in a sample are marked. The light's turn changes no visibility. The pass
+/// holds the triangles with corners of their own: 72 bytes a triangle while it runs.
 
 #include <cstdint>
 #include <vector>

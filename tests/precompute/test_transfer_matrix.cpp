@@ -219,4 +219,34 @@ TEST_CASE("matrix path seen from any eye equals the fixed-camera vector toward t
   }
 }
 
+TEST_CASE("shadowed matrices: column 0 is pi Y00 times the diffuse transfer at every vertex, with two direction counts") {
+  // M_k0 = integral Y_k Y_00 V max(0, n.s) ds = pi Y_00 T_k: the same integral as the diffuse
+  // transfer, estimated from the same blocked directions with the same weights, so the two agree
+  // to rounding at every vertex, whether it drew the camera's count or the smaller one. Both
+  // are stored as float: 1e-6 is a few float steps of their size (at most about 1).
+  constexpr double kFloatTolerance = 1e-6;
+  constexpr double kY00 = 0.28209479177387814;
+  const int lmax = 2, n = CoeffCount(lmax);
+  const Mesh mesh = SphereOverPlane();
+  TransportOptions o;
+  o.mode = TransportMode::kShadowed;
+  o.lmax = lmax;
+  o.samples = 256;
+  o.hidden_samples = 32;
+  o.seen.resize(mesh.vertex_count());
+  for (std::size_t v = 0; v < o.seen.size(); ++v) o.seen[v] = v % 3 == 0;
+  o.material = RaisedCosine(2, 0.3);
+  o.matrices = true;
+  TransportReport r;
+  const Transport t = ComputeTransport(mesh, o, &r);
+  REQUIRE(r.hidden_directions == 32);
+  REQUIRE(t.matrices.size() == mesh.vertex_count() * std::size_t(n) * n);
+  double worst = 0.0;
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
+    for (int k = 0; k < n; ++k)
+      worst = std::max(worst, std::abs(double(t.matrices[(v * n + k) * n]) - kPi * kY00 * double(t.at(v, 0)[k])));
+  MESSAGE("column 0 against pi Y00 T: " << worst);
+  CHECK(worst < kFloatTolerance);
+}
+
 TEST_SUITE_END();
