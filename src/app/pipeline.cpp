@@ -12,6 +12,7 @@
 #include "core/memory.h"
 #include "core/text.h"
 #include "env/load_environment.h"
+#include "precompute/bounce_senders.h"
 #include "precompute/light.h"
 #include "precompute/transfer_matrix.h"
 #include "precompute_io/transport_cache.h"
@@ -188,7 +189,7 @@ Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, c
   if (camera && !matrices) eye = glm::dvec3(camera->eye);
   TransportOptions topts = TransportOptionsOf(options, eye);
   topts.matrices = matrices && options.material.glossy;
-  if (topts.hidden_samples != topts.samples) topts.seen = seen;
+  topts.seen = seen;  // used only where the two counts differ (direction_pool.h, the cache key)
   const std::uint64_t key = TransportKey(mesh, topts);
   std::string why;
   if (!cache.path.empty()) {
@@ -200,11 +201,12 @@ Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, c
     }
     // A transport with --samples at every vertex (what precompute writes) holds at least what
     // this one needs at every vertex: taken as it is.
-    if (!topts.seen.empty()) {
-      TransportOptions every = topts;
-      every.seen.clear();
-      std::string ignored;
-      if (auto cached = ReadTransportCache(cache.path, TransportKey(mesh, every), ignored)) {
+    TransportOptions every = topts;
+    every.seen.clear();
+    const std::uint64_t every_key = TransportKey(mesh, every);
+    std::string ignored;
+    if (every_key != key) {
+      if (auto cached = ReadTransportCache(cache.path, every_key, ignored)) {
         Summary("transport: taken from the cache " + cache.path + " (same mesh and options, with " +
                 std::to_string(topts.samples) + " directions at every vertex, not only those the camera sees)");
         cached->material = topts.material;
@@ -236,16 +238,17 @@ Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, c
     if (transport.channels == 3) bounces += "; coloured albedo: one transport vector per colour channel";
     if (r.senders.done)
       bounces += "; triangles with edges longer than " + Formatted("%.3g", double(r.senders.max_edge)) +
-                 " (2% of the scene's diagonal) split for the bounces only, so the light a bounce reads does not "
+                 " (" + Formatted("%g", 100.0 * kSenderEdge) + "% of the scene's diagonal) split for the bounces only, so the light a bounce reads does not "
                  "depend on how coarsely the mesh is triangulated (" + std::to_string(r.senders.vertices_added) +
                  " vertices added, not in the output)";
     Summary(bounces);
     if (r.senders.needed && !r.senders.done)
       Warn("bounces: the mesh has edges longer than " + Formatted("%.3g", double(r.senders.max_edge)) +
-           " (2% of its diagonal), and splitting them for the bounces would make " +
+           " (" + Formatted("%g", 100.0 * kSenderEdge) + "% of its diagonal), and splitting them for the bounces would make " +
            Formatted("about %.2g", double(r.senders.triangles_estimate)) +
            " triangles: the light a bounce reads from such a large triangle is interpolated from its corners and "
-           "can be far off inside it (split the mesh with --max-edge 2%, or in the modeller)");
+           "can be far off inside it (split the mesh with --max-edge " + Formatted("%g", 100.0 * kSenderEdge) +
+           "%, or in the modeller)");
   }
   if (topts.material.glossy) Summary(GlossyLine(topts, r, transport));
   WarnIfMostlyBlocked(mesh, transport, topts.mode);

@@ -146,7 +146,7 @@ void ResolveSamples(Args& args, SceneOptions& o) {
   if (o.hidden_samples == 0) o.hidden_samples = std::min(o.samples, DefaultHiddenSamples(o.lmax, sampler));
   if (!given) return;
   const int minimum = MinimumSamples(o.lmax, sampler);
-  if (given && o.transport != "unshadowed" && o.samples < minimum)
+  if (o.transport != "unshadowed" && o.samples < minimum)
     Warn("--samples " + std::to_string(o.samples) + " is below the " + std::to_string(minimum) + " " + o.sampler +
          " directions per vertex that lmax " + std::to_string(o.lmax) +
          " needs for its sampling error to stay under its SH truncation error: shadows will be blotchy (raise "

@@ -53,9 +53,10 @@
 ///     three vertices of the triangle it shows, so a vertex no frame shows reaches the picture
 ///     only through the light it bounces, gathered from many hit points at once. The demo shows
 ///     16149 of its 33985 vertices, mary 3718 of 7905. 8192 directions for those and 1024 for
-///     the others met the aim on the demo (2 levels, 0.02 %, 0.27 x the time of 16384 at every
-///     vertex), on mary shadowed and with interreflection and on the sample scene of
-///     `prt sample-files` (2 levels or fewer, under 0.01 %; 0.18 to 0.35 x), and is the default.
+///     the others met the aim on the demo (2 levels, 0.023 %, 0.29 x the time of 16384 at every
+///     vertex, medians of 3), on mary shadowed and with interreflection and on the sample scene
+///     of `prt sample-files` (2 levels or fewer, under 0.01 %; 0.18 to 0.38 x), and is the
+///     default.
 /// 2 DefaultHiddenSamples keeps the seen count at least twice the hidden one above lmax 7.
 /// Measured at lmax 2 and 4; at lmax 15 the sun's shadow is sharper and even 16384 directions
 /// are not converged (frames 9 levels apart from 32768 on the demo): the aim is not claimed

@@ -126,7 +126,6 @@ void RunPass(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lm
   const float scene_scale = bvh.SceneScale();
   const double weight = 4.0 / double(pool.size());  // (4 pi / N) * (1 / pi)
   std::atomic<std::uint64_t> rays{0};
-  std::atomic<std::size_t> closed{0};
   Progress progress(what, vertices.size());
 
   // Any-hit rays: the directions of each set as three arrays, so that the horizon test of all
@@ -166,7 +165,6 @@ void RunPass(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lm
     std::vector<std::uint32_t> list;
     std::size_t table_set = std::numeric_limits<std::size_t>::max();
     std::uint64_t local_rays = 0;
-    std::size_t local_closed = 0;
     for (std::size_t o = begin; o < end; ++o) {
       const std::size_t v = order[o];
       const std::size_t set = pool.SetOf(v);
@@ -201,7 +199,6 @@ void RunPass(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lm
         }
         local_rays += above;
         result.unoccluded[v] = blocked_above == 0;
-        if (blocked_above == 0) ++local_closed;
         const bool any_open = above > blocked_above;
         result.sees_sky[v] = any_open;
         if (!any_open) std::fill(t.begin(), t.end(), 0.0);  // as below
@@ -225,7 +222,6 @@ void RunPass(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lm
         result.hits[v].push_back({h.triangle, h.u, h.v, static_cast<std::uint32_t>(i),
                                   FrontSide(mesh, h, glm::vec3(dirs[i]))});
       }
-      if (!any_blocked) ++local_closed;
       result.unoccluded[v] = !any_blocked;
       result.sees_sky[v] = any_open;
       // Nothing open: the transfer is exactly zero (the estimate of the blocked part would
@@ -234,11 +230,9 @@ void RunPass(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lm
       std::copy(t.begin(), t.end(), result.transfer.begin() + v * count);
     }
     rays += local_rays;
-    closed += local_closed;
     progress.Advance(end - begin);
   });
   result.rays += rays;
-  result.closed_form_vertices += closed;
 }
 
 }  // namespace

@@ -46,7 +46,6 @@ struct DirectResult {
   std::vector<std::uint8_t> sees_sky;          ///< per vertex: some direction above it is open
   std::vector<std::uint8_t> unoccluded;        ///< per vertex: nothing blocked (the closed form)
   std::uint64_t rays = 0;
-  std::size_t closed_form_vertices = 0;
 };
 
 /// Shadowed transfer of every vertex (control-variate estimator), each from the set of its pool

@@ -33,15 +33,16 @@ DiffMetrics CompareImages(const Image8& a, const Image8& b) {
   DiffMetrics m;
   std::uint64_t sum_abs = 0, sum_sq = 0;  // exact: at most 255^2 * 3 * 2^31 < 2^64
   for (std::size_t p = 0; p < a.rgb.size(); p += 3) {
-    bool differs = false;
+    int worst = 0;
     for (std::size_t c = p; c < p + 3; ++c) {
       const int d = std::abs(int(a.rgb[c]) - int(b.rgb[c]));
-      m.max_abs = std::max(m.max_abs, d);
+      worst = std::max(worst, d);
       sum_abs += static_cast<std::uint64_t>(d);
       sum_sq += static_cast<std::uint64_t>(d * d);
-      differs = differs || d != 0;
     }
-    m.differing_pixels += differs;
+    m.max_abs = std::max(m.max_abs, worst);
+    m.differing_pixels += worst != 0;
+    m.pixels_over_one += worst > 1;
   }
   const double n = std::max<double>(1.0, static_cast<double>(a.rgb.size()));
   m.mean_abs = static_cast<double>(sum_abs) / n;

@@ -25,6 +25,7 @@ struct DiffMetrics {
   double rmse = 0.0;                 ///< root mean square channel difference, 0..255
   double psnr = 0.0;                 ///< dB; +infinity when identical
   std::size_t differing_pixels = 0;  ///< pixels with any channel different
+  std::size_t pixels_over_one = 0;   ///< pixels with a channel more than one level apart
 };
 
 /// Metrics of a against b. Throws Error when the sizes differ or a buffer does not hold

@@ -15,22 +15,6 @@
 
 namespace prt {
 
-FrameDifference CompareFrames(const Image8& a, const Image8& b) {
-  FrameDifference d;
-  if (a.width != b.width || a.height != b.height || a.rgb.size() != b.rgb.size())
-    throw Error("frames of different sizes compared (internal)");
-  const std::size_t pixels = a.rgb.size() / 3;
-  std::size_t over = 0;
-  for (std::size_t p = 0; p < pixels; ++p) {
-    int worst = 0;
-    for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(a.rgb[3 * p + c]) - int(b.rgb[3 * p + c])));
-    d.max_levels = std::max(d.max_levels, worst);
-    over += worst > 1;
-  }
-  d.share_over_one = pixels ? double(over) / double(pixels) : 0.0;
-  return d;
-}
-
 std::vector<NoiseMethod> NoiseMethods(int lmax) {
   const Sampler s = Sampler::kFibonacci;
   return {
@@ -45,12 +29,12 @@ std::vector<NoiseMethod> NoiseMethods(int lmax) {
 }
 
 Image8 NoiseFrame(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Environment& env,
-                  const RenderOptions& picture, double* ev) {
+                  const RenderOptions& picture, std::optional<double>& ev) {
   Rasterizer rasterizer;
   const Camera camera = ChooseCamera(mesh, picture);
   const AxisRotation rotation(picture.axis, transport.lmax);
   const RasterImage& frame = RasterizeFrame(rasterizer, mesh, transport, light, rotation, env, camera, picture, 0.0, 1.0);
-  if (!*ev) *ev = AutoExposureEv(frame, picture.tonemap);
+  if (!ev) ev = AutoExposureEv(frame, picture.tonemap);
   return ToneMapFrame(frame, picture, *ev, 1.0).image;
 }
 
@@ -65,11 +49,14 @@ TransportOptions OptionsOf(const NoiseConfig& c, const NoiseMethod& m, const std
   o.direction_sets = m.direction_sets;
   o.seed = c.seed;
   o.bounces = c.bounces;
-  if (m.hidden_samples != m.samples) o.seen = seen;
+  o.seen = seen;  // used only where the two counts differ
   return o;
 }
 
-/// Relative RMS of the seen vertices' luminance against the converged transport's.
+double PixelShare(std::size_t count, std::size_t pixels) { return pixels ? double(count) / double(pixels) : 0.0; }
+
+/// Relative RMS of the seen vertices' radiance (albedo 1, the three channels summed) against
+/// the converged transport's.
 double SeenRmsError(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b,
                     const std::vector<std::uint8_t>& seen) {
   double num = 0.0, den = 0.0;
@@ -96,7 +83,10 @@ NoiseStudy RunNoiseStudy(const Mesh& mesh, const Environment& env, const NoiseCo
 
   const NoiseMethod converged{"converged", config.converged_samples, config.converged_samples, 64};
   const Transport truth = ComputeTransport(mesh, OptionsOf(config, converged, seen), nullptr);
-  const Image8 truth_frame = NoiseFrame(mesh, truth, light, env, picture, &study.exposure);
+  std::optional<double> exposure;
+  const Image8 truth_frame = NoiseFrame(mesh, truth, light, env, picture, exposure);
+  study.exposure = *exposure;
+  study.pixels = std::size_t(truth_frame.width) * std::size_t(truth_frame.height);
   const std::vector<glm::vec3> truth_radiance = ShadeVertices(mesh, truth, light, false);
 
   // Only methods well below the converged count: a method at the converged count would be
@@ -119,8 +109,7 @@ NoiseStudy RunNoiseStudy(const Mesh& mesh, const Environment& env, const NoiseCo
       row.method = methods[m];
       row.rays = r.rays;
       row.rms_error = SeenRmsError(ShadeVertices(mesh, t, light, false), truth_radiance, seen);
-      double ev = study.exposure;
-      row.frame = CompareFrames(NoiseFrame(mesh, t, light, env, picture, &ev), truth_frame);
+      row.frame = CompareImages(NoiseFrame(mesh, t, light, env, picture, exposure), truth_frame);
     }
   }
   for (std::size_t m = 0; m < methods.size(); ++m) {
@@ -144,8 +133,8 @@ std::string NoiseMarkdown(const NoiseStudy& s) {
   md += "| method | largest difference (levels) | pixels > 1 level | RMS error (seen vertices) | rays | seconds |\n";
   md += "|---|---:|---:|---:|---:|---:|\n";
   for (const NoiseRow& r : s.rows)
-    md += Formatted("| %s | %d | %.3f%% | %.3f%% | %llu | %.3f |\n", r.method.name.c_str(), r.frame.max_levels,
-                    100.0 * r.frame.share_over_one, 100.0 * r.rms_error, static_cast<unsigned long long>(r.rays),
+    md += Formatted("| %s | %d | %.3f%% | %.3f%% | %llu | %.3f |\n", r.method.name.c_str(), r.frame.max_abs,
+                    100.0 * PixelShare(r.frame.pixels_over_one, s.pixels), 100.0 * r.rms_error, static_cast<unsigned long long>(r.rays),
                     r.seconds);
   return md + "\n";
 }

