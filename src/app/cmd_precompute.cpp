@@ -44,12 +44,18 @@ CommandSpec PrecomputeSpec() {
   // No camera here: every vertex takes --samples (the course's viewer turns the model freely).
   std::vector<std::string> names = AllSceneOptionNames();
   names.erase(std::find(names.begin(), names.end(), "--hidden-samples"));
+  // The course's files are SH: --basis is taken only to refuse wavelet with a reason.
+  for (const char* wavelet_only : {"--cube-size", "--wavelet-terms", "--light-terms"})
+    names.erase(std::find(names.begin(), names.end(), wavelet_only));
   OptionGroup scene = SceneOptionGroup(SceneOptions{}, names);
   for (auto& o : scene.options)
     if (o.name == "--max-edge")
       o.help = "refused here: the course's transport.txt has three rows per face of the OBJ file, and split "
                "triangles are other faces (render and reference take it)",
       o.default_text = "";
+    else if (o.name == "--basis")
+      o.help = "sh only: the course's light.txt and transport.txt are SH coefficients (wavelet: render, demo and "
+               "report take it)";
   return {"prt precompute [scene options] --out DIR",
           "Writes DIR/light.txt and DIR/transport.txt in the course's text format (GAMES202 homework 2: its WebGL "
           "framework loads them), and the binary cache DIR/transport.cache that render reuses.\n\n"
@@ -75,6 +81,9 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
   const bool replace = args.Flag("--replace");
   args.Finish();
   if (!out) args.Fail("--out DIR is required");
+  if (options.basis != "sh")
+    args.Fail("--basis " + options.basis + ": precompute writes the course's SH files (light.txt, transport.txt) only; "
+              "render, demo and report take --basis wavelet");
   if (options.max_edge > 0.0)
     args.Fail("--max-edge: not with precompute (the course's transport.txt has three rows per face of the OBJ "
               "file, and split triangles are other faces; render and reference take it)");

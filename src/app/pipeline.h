@@ -22,6 +22,7 @@
 #include "env/environment.h"
 #include "geometry/mesh.h"
 #include "precompute/transport.h"
+#include "precompute/transport_wavelet.h"
 #include "raster/camera.h"
 #include "render/render_frames.h"
 #include "sh/coeffs.h"
@@ -79,6 +80,21 @@ CachePlan PlanCache(const std::string& option, OutputFolder* folder);
 Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, const CachePlan& cache,
                                 const std::vector<std::uint8_t>& seen = {}, const Camera* camera = nullptr,
                                 bool matrices = false);
+
+/// Says on the run summary what interreflection's bounces added and how (split senders), and
+/// warns when the senders needed a split too large to make.
+void ReportBounces(const TransportReport& report, int channels);
+
+/// The wavelet transport of `mesh` (precompute/transport_wavelet.h) for --basis wavelet, its
+/// bounces in SH at --lmax with `seen` as ComputeSceneTransport takes it; the run summary says
+/// the cube, the budget, what was kept, the bytes, and what the truncation costs under `env`
+/// (frame 0's direct light of a sample of vertices, kept against unkept). Not cached.
+WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const SceneOptions& options, const Environment& env,
+                                      const std::vector<std::uint8_t>& seen = {});
+
+/// The selection of wavelet coefficients prt uses (wavelet/selection.h): measured in
+/// precompute/transport_wavelet.h.
+inline constexpr Selection kWaveletSelection = Selection::kArea;
 
 /// Says on the run summary what the transfer matrices of `mesh` will take, and throws Error,
 /// naming the largest lmax that fits, when that is more than the memory available allows.

@@ -258,6 +258,9 @@ RenderOptions CompleteRenderOptions(Args& args, RenderOptions o, const SceneOpti
       if (!file->empty() && !input.empty() && std::filesystem::exists(input) && SameFile(*file, input))
         args.Fail(std::string(option) + ": '" + *file + "' is an input of this run (expected another name: the run would "
                   "replace " + input + ")");
+  if (o.view == "transport" && scene.basis != "sh")
+    args.Fail("--view transport: shows one SH transfer coefficient per vertex; --basis " + scene.basis +
+              " keeps the direct light in wavelets (expected --basis sh, or another view such as light)");
   if (o.view == "transport" && o.transport_index >= CoeffCount(scene.lmax))
     args.Fail("--view: transport:" + std::to_string(o.transport_index) + " is out of range (expected 0 to " +
               std::to_string(CoeffCount(scene.lmax) - 1) + " for lmax " + std::to_string(scene.lmax) + ")");

@@ -11,6 +11,7 @@
 #include "core/text.h"
 #include "precompute/shade.h"
 #include "precompute_io/transport_txt.h"
+#include "render/frame_light.h"
 #include "render/render_frames.h"
 #include "render/seen_vertices.h"
 
@@ -53,12 +54,11 @@ OutputPlan RenderPlan(const RenderOptions& r) {
 /// shades it, to the --vertex-radiance file `path` (precompute_io/transport_txt.h): one of the
 /// folder's outputs when it lies there; else written beside it under a temporary name, returned
 /// to be renamed into place when the run has succeeded.
-std::unique_ptr<SingleFileOutput> WriteVertexRadiance(const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                                                      const Camera& camera, const std::string& path,
-                                                      OutputFolder& folder) {
+std::unique_ptr<SingleFileOutput> WriteVertexRadiance(const Mesh& mesh, FrameLight& light, const Camera& camera,
+                                                      const std::string& path, OutputFolder& folder) {
   const glm::dvec3 eye(camera.eye);
-  const std::string text =
-      FormatVertexRadianceTxt(mesh, ShadeVertices(mesh, transport, FirstBands(light, transport.lmax), true, &eye));
+  light.Turn(0.0);
+  const std::string text = FormatVertexRadianceTxt(mesh, light.Shade(mesh, true, &eye));
   Summary("vertex radiance: frame 0's linear RGB radiance of " + std::to_string(mesh.vertex_count()) +
           " vertices toward the camera, three rows per face, in " + path);
   if (LiesIn(path, folder.dir())) {
@@ -92,16 +92,29 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
   // The vertices the frames show take --samples directions, the others --hidden-samples.
   std::vector<std::uint8_t> seen;
   if (scene.transport != "unshadowed" && scene.hidden_samples != scene.samples) seen = SeenVertices(mesh, camera, render);
-  const Transport transport = ComputeSceneTransport(mesh, scene, cache, seen, &camera, matrices);
+  // The transport in its basis, and the light each frame turns for it.
+  Transport transport;
+  WaveletTransport wavelets;
+  std::unique_ptr<FrameLight> frame_light;
+  if (scene.basis == "wavelet") {
+    wavelets = ComputeSceneWavelets(mesh, scene, *env, seen);
+    frame_light = MakeWaveletFrameLight(wavelets, *env, light, render.axis, scene.light_terms, kWaveletSelection);
+    Summary("rotation: the environment turned and resampled onto the wavelet cube each frame (each texel its mean "
+            "radiance, the sun's energy kept exactly)" +
+            std::string(wavelets.bounce.coeffs.empty() ? "" : "; the bounces' SH light turned by its band matrices"));
+  } else {
+    transport = ComputeSceneTransport(mesh, scene, cache, seen, &camera, matrices);
+    frame_light = MakeShFrameLight(transport, light, render.axis);
+    const AxisRotation rotation(render.axis, transport.lmax);
+    Summary("rotation: " + rotation.Describe() + "; only the " + std::to_string(CoeffCount(transport.lmax)) +
+            " coefficients the transport has are turned");
+  }
   std::unique_ptr<SingleFileOutput> radiance_outside;
   if (!render.vertex_radiance.empty())
-    radiance_outside = WriteVertexRadiance(mesh, transport, light, camera, render.vertex_radiance, folder);
-  const AxisRotation rotation(render.axis, transport.lmax);
-  Summary("rotation: " + rotation.Describe() + "; only the " + std::to_string(CoeffCount(transport.lmax)) +
-          " coefficients the transport has are turned");
+    radiance_outside = WriteVertexRadiance(mesh, *frame_light, camera, render.vertex_radiance, folder);
 
   RenderVideo video(render, folder);
-  const FrameStats stats = RenderFrames(mesh, transport, light, *env, camera, render, folder, video.writer());
+  const FrameStats stats = RenderFrames(mesh, *frame_light, *env, camera, render, folder, video.writer());
   if (stats.legend_left_out)
     Summary("legend: left out, a " + std::to_string(render.width) + "x" + std::to_string(render.height) +
             " frame is too small to hold it readably");
@@ -109,7 +122,7 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
   Summary("frames: " + std::to_string(stats.frames) + " of " + std::to_string(render.width) + "x" +
           std::to_string(render.height) + " in " + folder.dir() + "/" +
           Formatted(" [draw %.3f s, waiting for PNG encoding %.3f s]", stats.draw_seconds, stats.encode_seconds));
-  if (stats.negative_pixels > 0)
+  if (stats.negative_pixels > 0 && scene.basis == "sh")
     Summary("ringing: " + std::to_string(stats.negative_pixels) +
             " pixels over all frames had negative radiance (SH ringing), clamped to 0; --window auto reduces it");
   if (stats.nan_pixels > 0) Summary("warning: " + std::to_string(stats.nan_pixels) + " NaN pixels set to 0");

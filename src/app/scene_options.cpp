@@ -85,6 +85,17 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
        "split triangles until no edge is longer than L world units (`2%`: 2 % of the bounding-box diagonal), so "
        "per-vertex transport can show shadows inside large triangles",
        d.max_edge > 0 ? Formatted("%g", double(d.max_edge)) + (d.max_edge_relative ? "%" : "") : "none"});
+  add({"--basis", "B",
+       "sh | wavelet: the basis of the transport. wavelet keeps each vertex's direct light in Haar wavelets on a "
+       "cube (all-frequency: sharp shadows of small bright sources), its bounces in SH at --lmax",
+       d.basis});
+  add({"--cube-size", "F", "wavelet basis: the cube's face size, a power of two from 8 to 128 (6 F^2 texels)",
+       std::to_string(d.cube_size)});
+  add({"--wavelet-terms", "N", "wavelet basis: coefficients kept per vertex, 1..6 F^2 (8 bytes each)",
+       std::to_string(d.wavelet_terms)});
+  add({"--light-terms", "K",
+       "wavelet basis: light coefficients kept per frame, the K most important (0: all), 0..6 F^2",
+       d.light_terms ? std::to_string(d.light_terms) : "0 (all)"});
   return s;
 }
 
@@ -174,7 +185,8 @@ const std::vector<std::string>& AllSceneOptionNames() {
   static const std::vector<std::string> names = {
       "--mesh",    "--env",          "--lmax",   "--tolerance", "--transport",      "--samples",
       "--hidden-samples", "--sampler", "--bounces",      "--direction-sets",        "--albedo",         "--texture", "--material", "--seed",
-      "--threads", "--games202-faces", "--window", "--max-edge"};
+      "--threads", "--games202-faces", "--window", "--max-edge", "--basis", "--cube-size", "--wavelet-terms",
+      "--light-terms"};
   return names;
 }
 
@@ -261,6 +273,22 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
       o.max_edge_relative = relative;
     }
   }
+  if (has("--basis")) o.basis = args.Choice("--basis", d.basis, {"sh", "wavelet"});
+  if (has("--cube-size")) {
+    o.cube_size = args.Int("--cube-size", d.cube_size, 8, 128);
+    if (o.cube_size & (o.cube_size - 1))
+      args.Fail("--cube-size: " + std::to_string(o.cube_size) + " is not a power of two (expected 8, 16, 32, 64 or 128)");
+  }
+  const int texels = 6 * o.cube_size * o.cube_size;
+  if (has("--wavelet-terms")) o.wavelet_terms = args.Int("--wavelet-terms", d.wavelet_terms, 1, texels);
+  if (has("--light-terms")) o.light_terms = args.Int("--light-terms", d.light_terms, 0, texels);
+  o.wavelet_terms = std::min(o.wavelet_terms, texels);
+  if (o.basis == "wavelet" && o.material.glossy)
+    args.Fail("--basis wavelet: glossy materials are not built in the wavelet basis (--material " + o.material.Name() +
+              "); use --basis sh, or --material diffuse");
+  if (o.basis != "wavelet")
+    for (const char* name : {"--cube-size", "--wavelet-terms", "--light-terms"})
+      if (has(name) && args.Has(name)) args.Fail(std::string(name) + ": applies to --basis wavelet only");
   SetQuiet(args.Flag("--quiet"));
   SetThreadCount(o.threads);
   CheckInputs(args, o);

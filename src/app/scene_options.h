@@ -49,6 +49,11 @@ struct SceneOptions {
   /// a fraction of the bounding-box diagonal when max_edge_relative.
   double max_edge = 0.0;
   bool max_edge_relative = false;
+  /// --basis: sh | wavelet (all-frequency: direct light in Haar wavelets, precompute/transport_wavelet.h)
+  std::string basis = "sh";
+  int cube_size = 32;        ///< --cube-size: the wavelet cube's face size F
+  int wavelet_terms = 512;   ///< --wavelet-terms: coefficients kept per vertex
+  int light_terms = 0;       ///< --light-terms: light coefficients kept per frame (0: all)
 };
 
 /// Every scene option in help order: what `render` takes.

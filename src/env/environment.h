@@ -27,6 +27,14 @@ struct Texel {
   glm::dvec3 radiance;
 };
 
+/// A disk of uniform radiance that no grid resolves (the sky's sun): every direction w with
+/// dot(w, dir) >= cos_radius receives `radiance` on top of RadianceWithoutDisks.
+struct LightDisk {
+  glm::dvec3 dir;
+  double cos_radius;
+  glm::dvec3 radiance;
+};
+
 class Environment {
  public:
   virtual ~Environment() = default;
@@ -41,6 +49,12 @@ class Environment {
 
   /// Adds the exact projection of whatever the rows leave out. Default: nothing.
   virtual void AddAnalyticProjection(int lmax, ShRgb& coeffs) const { (void)lmax, (void)coeffs; }
+
+  /// The disks the rows leave out (AddAnalyticProjection projects them), for a basis that places
+  /// them exactly (wavelet/light_cube.h). Default: none.
+  virtual std::vector<LightDisk> Disks() const { return {}; }
+  /// Radiance from `dir` without the Disks. Default: Radiance.
+  virtual glm::dvec3 RadianceWithoutDisks(const glm::dvec3& dir) const { return Radiance(dir); }
 
   /// One line for the run summary, e.g. "cubemap GraceCathedral 6x256^2 (sRGB)".
   virtual std::string Describe() const = 0;

@@ -97,6 +97,8 @@ class Sky : public Environment {
     for (int l = 0; l <= lmax; ++l)
       for (int k = l * l; k < (l + 1) * (l + 1); ++k) coeffs[k] += 2.0 * kPi * cap[l] * y[k] * sun_radiance_;
   }
+  std::vector<LightDisk> Disks() const override { return {{sun_dir_, cos_radius_, sun_radiance_}}; }
+  glm::dvec3 RadianceWithoutDisks(const glm::dvec3& d) const override { return Smooth(d); }
   std::string Describe() const override {
     char b[160];
     std::snprintf(b, sizeof b, "sky (sun=%g elevation=%g azimuth=%g radius=%g)", p_.sun, p_.elevation,

@@ -42,8 +42,9 @@ void AddGlossy(const Mesh& mesh, const Bvh* bvh, const DirectionPlan* plan, cons
 
 /// Shadowed or interreflected transport of every vertex of `mesh`; the report's vertex counts
 /// cover its first `counted` vertices (all by default: the rest only send bounced light).
+/// With `bounced_only`, the transfer keeps what the bounces add and drops the direct part.
 Transport ComputeTraced(const Mesh& mesh, const TransportOptions& options, TransportReport& r,
-                        std::size_t counted = std::numeric_limits<std::size_t>::max()) {
+                        std::size_t counted = std::numeric_limits<std::size_t>::max(), bool bounced_only = false) {
   Transport transport;
   transport.material = options.material;
   transport.lmax = options.lmax;
@@ -89,8 +90,35 @@ Transport ComputeTraced(const Mesh& mesh, const TransportOptions& options, Trans
   BounceResult bounced = AddBounces(mesh, plan, direct, options, r, options.material.glossy, counted);
   r.bounce_seconds = SecondsSince(t0);
   transport.channels = bounced.channels;
+  if (bounced_only) {
+    const std::size_t count = CoeffCount(options.lmax);
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
+      for (int c = 0; c < bounced.channels; ++c)
+        for (std::size_t k = 0; k < count; ++k)
+          bounced.transfer[(v * bounced.channels + c) * count + k] -= direct.transfer[v * count + k];
+  }
   transport.coeffs = ToFloat(bounced.transfer);
   if (options.material.glossy) AddGlossy(mesh, &bvh, &plan, &direct, options, &bounced.before_last, transport, r);
+  return transport;
+}
+
+/// Interreflection: on a copy whose light-sending triangles are split finely (bounce_senders.h),
+/// the output the mesh's own vertices, which come first in the copy and are unchanged.
+Transport ComputeInterreflection(const Mesh& mesh, const TransportOptions& options, TransportReport& r,
+                                 bool bounced_only) {
+  const std::optional<Mesh> refined = RefineSenders(mesh, r.senders);
+  if (!refined) return ComputeTraced(mesh, options, r, std::numeric_limits<std::size_t>::max(), bounced_only);
+  TransportOptions o = options;
+  const std::size_t nv = mesh.vertex_count();
+  if (o.seen.empty() && o.hidden_samples && o.hidden_samples != o.samples) o.seen.assign(nv, 1);
+  if (!o.seen.empty()) o.seen.resize(refined->vertex_count(), 0);  // the added vertices only send light
+  Transport transport = ComputeTraced(*refined, o, r, nv, bounced_only);
+  const std::size_t count = CoeffCount(options.lmax);
+  const std::size_t stride = std::size_t(transport.channels) * count;
+  transport.vertices = nv;
+  transport.coeffs.resize(nv * stride);
+  if (!transport.glossy.empty()) transport.glossy.resize(nv * stride);
+  if (!transport.matrices.empty()) transport.matrices.resize(nv * stride * count);
   return transport;
 }
 
@@ -152,23 +180,18 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
   }
 
   if (options.mode != TransportMode::kInterreflection) return ComputeTraced(mesh, options, r);
-
-  // Interreflection: on a copy whose light-sending triangles are split finely (bounce_senders.h),
-  // the output the mesh's own vertices, which come first in the copy and are unchanged.
-  const std::optional<Mesh> refined = RefineSenders(mesh, r.senders);
-  if (!refined) return ComputeTraced(mesh, options, r);
-  TransportOptions o = options;
-  const std::size_t nv = mesh.vertex_count();
-  if (o.seen.empty() && o.hidden_samples && o.hidden_samples != o.samples) o.seen.assign(nv, 1);
-  if (!o.seen.empty()) o.seen.resize(refined->vertex_count(), 0);  // the added vertices only send light
-  transport = ComputeTraced(*refined, o, r, nv);
-  const std::size_t stride = std::size_t(transport.channels) * count;
-  transport.vertices = nv;
-  transport.coeffs.resize(nv * stride);
-  if (!transport.glossy.empty()) transport.glossy.resize(nv * stride);
-  if (!transport.matrices.empty()) transport.matrices.resize(nv * stride * count);
-  return transport;
+  return ComputeInterreflection(mesh, options, r, false);
 }
 
+Transport ComputeBouncedTransport(const Mesh& mesh, const TransportOptions& options, TransportReport* report) {
+  TransportReport local;
+  TransportReport& r = report ? *report : local;
+  r = TransportReport{};
+  TransportOptions o = options;
+  o.mode = TransportMode::kInterreflection;
+  o.material = Material{};
+  o.matrices = false;
+  return ComputeInterreflection(mesh, o, r, true);
+}
 
 }  // namespace prt

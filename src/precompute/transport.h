@@ -145,6 +145,11 @@ int TransportChannels(const Mesh& mesh, TransportMode mode);
 /// Computes the transport of `mesh` (unit normals, albedo in [0, 1]).
 Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, TransportReport* report);
 
+/// The light interreflection adds to shadowed transport, alone: ComputeTransport in mode
+/// interreflection (whatever options.mode says; diffuse) minus its own direct part, the same
+/// directions for both. What the wavelet basis takes from SH (transport_wavelet.h).
+Transport ComputeBouncedTransport(const Mesh& mesh, const TransportOptions& options, TransportReport* report);
+
 /// Monte Carlo estimate of the unshadowed transfer from a direction set (weights 4 pi/N), kept
 /// to test samplers against the closed form.
 std::vector<double> EstimateUnshadowed(const std::vector<glm::dvec3>& dirs, const glm::dvec3& normal, int lmax);

@@ -9,6 +9,7 @@
 
 #include "core/atomic_file.h"
 #include "core/background_jobs.h"
+#include "core/error.h"
 #include "core/log.h"
 #include "core/parallel.h"
 #include "core/progress.h"
@@ -18,44 +19,36 @@
 #include "precompute/shade.h"
 #include "raster/annotate.h"
 #include "raster/exposure.h"
-#include "sh/basis.h"
+#include "sh/rotation.h"
 
 namespace prt {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// Radiance of the SH reconstruction sum_k L_k Y_k(d).
-glm::vec3 Reconstruct(const ShRgb& light, const glm::dvec3& d) {
-  const int lmax = LmaxOfCount(light.size());
-  double y[CoeffCount(kMaxLmax)];
-  EvalBasis(lmax, d, y);
-  glm::dvec3 sum(0.0);
-  for (std::size_t k = 0; k < light.size(); ++k) sum += y[k] * light[k];
-  return glm::vec3(sum);
-}
-
 /// Per-vertex colours of the chosen view; `scale` is TransportViewScale for the transport view.
-std::vector<glm::vec3> ViewColors(const Mesh& mesh, const Transport& transport, const ShRgb& lit,
-                                  const RenderOptions& o, double scale, const glm::dvec3& eye) {
-  if (o.view == "irradiance") return ShadeVertices(mesh, transport, lit, false);
+std::vector<glm::vec3> ViewColors(const Mesh& mesh, const FrameLight& light, const RenderOptions& o, double scale,
+                                  const glm::dvec3& eye) {
+  if (o.view == "irradiance") return light.Shade(mesh, false, nullptr);
   if (o.view == "albedo") return mesh.albedo;
-  if (o.view == "glossy") return ShadeGlossy(mesh, transport, lit, &eye);
+  if (o.view == "glossy") return light.Glossy(mesh, &eye);
   std::vector<glm::vec3> colors(mesh.vertex_count());
   if (o.view == "light") {
-    for (std::size_t v = 0; v < colors.size(); ++v) colors[v] = Reconstruct(lit, glm::dvec3(mesh.normals[v]));
+    for (std::size_t v = 0; v < colors.size(); ++v) colors[v] = light.Kept(glm::dvec3(mesh.normals[v]));
     return colors;
   }
   if (o.view == "transport") {
+    const Transport* transport = light.ShTransport();
+    if (!transport) throw Error("--view transport shows SH coefficients; this transport has none (--basis sh)");
     const double s = scale > 0 ? scale : 1.0;
     for (std::size_t v = 0; v < colors.size(); ++v) {
       // Palette colours are display values: decode them so the sRGB tone curve restores them.
-      const glm::vec3 c = DivergingColor(transport.at(v, 0)[o.transport_index] / s);
+      const glm::vec3 c = DivergingColor(transport->at(v, 0)[o.transport_index] / s);
       colors[v] = glm::vec3(SrgbToLinear(c.x), SrgbToLinear(c.y), SrgbToLinear(c.z));
     }
     return colors;
   }
-  return ShadeVertices(mesh, transport, lit, true, &eye);
+  return light.Shade(mesh, true, &eye);
 }
 
 /// A perpendicular up for a view along world up: looking down, the image's top shows -Z (the
@@ -100,24 +93,24 @@ Camera ChooseCamera(const Mesh& mesh, const RenderOptions& o, std::string* note)
   return c;
 }
 
-const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport,
-                                  const ShRgb& light, const AxisRotation& rotation, const Environment& env,
-                                  const Camera& camera, const RenderOptions& o, double angle, double view_scale) {
-  // The light, and the environment behind the mesh, turned by R: L'(d) = L(R^T d). Only the
-  // bands the transport has are turned.
-  const ShRgb lit = rotation.Rotate(FirstBands(light, transport.lmax), angle);
+const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, FrameLight& light,
+                                  const Environment& env, const Camera& camera, const RenderOptions& o, double angle,
+                                  double view_scale) {
+  // The light, and the environment behind the mesh, turned by R: L'(d) = L(R^T d).
+  light.Turn(angle);
   // A textured mesh is shaded per pixel: the texture's albedo times the interpolated irradiance
   // (the vertex colour without albedo), plus a glossy lobe, which the albedo does not scale.
   const bool textured = mesh.textured() && (o.view == "radiance" || o.view == "albedo");
   std::vector<glm::vec3> colors, added;
   if (!textured) {
-    colors = ViewColors(mesh, transport, lit, o, view_scale, glm::dvec3(camera.eye));
+    colors = ViewColors(mesh, light, o, view_scale, glm::dvec3(camera.eye));
   } else if (o.view == "albedo") {
     colors.assign(mesh.vertex_count(), glm::vec3(1.f));
   } else {
     const glm::dvec3 eye(camera.eye);
-    colors = ShadeVertices(mesh, transport, lit, false);
-    if (transport.material.glossy) added = ShadeGlossy(mesh, transport, lit, &eye);
+    colors = light.Shade(mesh, false, nullptr);
+    const Transport* sh = light.ShTransport();
+    if (sh && sh->material.glossy) added = light.Glossy(mesh, &eye);
   }
   RasterTexturing texturing{&mesh.corner_uv, &mesh.triangle_texture, &mesh.textures, added.empty() ? nullptr : &added};
   RasterOptions ro;
@@ -127,12 +120,19 @@ const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, cons
   if (o.view == "transport") {
     ro.background.color = glm::vec3(static_cast<float>(SrgbToLinear(0.5f)));  // neutral grey: no colour to confuse with T
   } else if (o.view == "light") {
-    ro.background.radiance = [lit](const glm::vec3& d) { return Reconstruct(lit, glm::dvec3(d)); };
+    ro.background.radiance = [&light](const glm::vec3& d) { return light.Kept(glm::dvec3(d)); };
   } else if (o.env_background) {
     const glm::mat3 inverse(glm::transpose(AxisAngle(glm::normalize(o.axis), angle)));
     ro.background.radiance = [&env, inverse](const glm::vec3& d) { return glm::vec3(env.Radiance(glm::dvec3(inverse * d))); };
   }
   return rasterizer.Draw(camera, o.width, o.height, mesh.positions, mesh.triangles, colors, ro);
+}
+
+const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport,
+                                  const ShRgb& light, const AxisRotation&, const Environment& env,
+                                  const Camera& camera, const RenderOptions& o, double angle, double view_scale) {
+  const auto sh = MakeShFrameLight(transport, light, o.axis);
+  return RasterizeFrame(rasterizer, mesh, *sh, env, camera, o, angle, view_scale);
 }
 
 ToneMapped ToneMapFrame(const RasterImage& frame, const RenderOptions& o, double exposure_ev, double view_scale) {
@@ -153,21 +153,22 @@ double TransportViewScale(const Transport& transport, int index) {
 }
 
 ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                     const AxisRotation& rotation, const Environment& env, const Camera& camera,
+                     const AxisRotation&, const Environment& env, const Camera& camera,
                      const RenderOptions& o, double angle, double exposure_ev) {
   const double scale = o.view == "transport" ? TransportViewScale(transport, o.transport_index) : 0.0;
-  return ToneMapFrame(RasterizeFrame(rasterizer, mesh, transport, light, rotation, env, camera, o, angle, scale), o,
-                      exposure_ev, scale);
+  const auto sh = MakeShFrameLight(transport, light, o.axis);
+  return ToneMapFrame(RasterizeFrame(rasterizer, mesh, *sh, env, camera, o, angle, scale), o, exposure_ev, scale);
 }
 
-FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Environment& env,
-                        const Camera& camera, const RenderOptions& o, OutputFolder& folder, VideoWriter* video) {
+FrameStats RenderFrames(const Mesh& mesh, FrameLight& light, const Environment& env, const Camera& camera,
+                        const RenderOptions& o, OutputFolder& folder, VideoWriter* video) {
   FrameStats stats;
   stats.frames = o.frames;
   Rasterizer rasterizer;
-  const AxisRotation rotation(o.axis, transport.lmax);
   const bool transport_view = o.view == "transport";
-  const double view_scale = transport_view ? TransportViewScale(transport, o.transport_index) : 0.0;
+  const Transport* sh = light.ShTransport();
+  if (transport_view && !sh) throw Error("--view transport shows SH coefficients; this transport has none (--basis sh)");
+  const double view_scale = transport_view ? TransportViewScale(*sh, o.transport_index) : 0.0;
   stats.legend_left_out =
       transport_view && !LayoutDivergingLegend(o.width, o.height, view_scale, "T" + std::to_string(o.transport_index));
   // The automatic exposure is measured on frame 0 (its light at angle 0) and used for all frames.
@@ -183,7 +184,7 @@ FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRg
     const double angle = 2.0 * kPi * o.turns * double(i) / double(o.frames);
     const auto t0 = std::chrono::steady_clock::now();
     const Camera seen_from = Orbit(camera, o.orbit * double(i) / double(o.frames), bounds.lo, bounds.hi);
-    const RasterImage& frame = RasterizeFrame(rasterizer, mesh, transport, light, rotation, env, seen_from, o, angle, view_scale);
+    const RasterImage& frame = RasterizeFrame(rasterizer, mesh, light, env, seen_from, o, angle, view_scale);
     if (i == 0 && measure) stats.exposure = AutoExposureEv(frame, o.tonemap);
     ToneMapped mapped = ToneMapFrame(frame, o, stats.exposure, view_scale);
     stats.draw_seconds += SecondsSince(t0);

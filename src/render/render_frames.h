@@ -2,9 +2,9 @@
 /// \file
 /// The frame loop of `render` and `demo`. For frame i of N the light is turned by
 ///     a_i = 2 pi * turns * i / N
-/// and the camera by orbit * i / N degrees about its target (raster/camera.h, Orbit)
-/// about the axis (sh/axis_rotation.h, built from the absolute angle: no drift), the vertices are
-/// shaded by their transport (precompute/shade.h), the mesh is rasterized over the environment
+/// about the axis (from the absolute angle: no drift) and the camera by orbit * i / N degrees
+/// about its target (raster/camera.h, Orbit), the vertices are shaded by their transport in its
+/// basis (frame_light.h), the mesh is rasterized over the environment
 /// turned by the same rotation, tone-mapped, and written as DIR/frame_NNNN.png (four digits, more
 /// when N needs them, so names sort in frame order), and appended to the video if one is asked
 /// for. Encoding frame i overlaps drawing i+1.
@@ -19,6 +19,7 @@
 #include "raster/camera.h"
 #include "raster/rasterizer.h"
 #include "raster/tonemap.h"
+#include "render/frame_light.h"
 #include "render/render_options.h"
 #include "sh/axis_rotation.h"
 #include "sh/coeffs.h"
@@ -44,11 +45,15 @@ double TransportViewScale(const Transport& transport, int index);
 /// `note` (if given) says so.
 Camera ChooseCamera(const Mesh& mesh, const RenderOptions& options, std::string* note = nullptr);
 
-/// The linear frame with the light turned by `angle` radians by `rotation` (about the options'
-/// axis, built once per run for the transport's lmax): shading, rasterizing over the turned
-/// environment (the teaching view transport:K over a neutral grey instead, its colours scaled
-/// by `view_scale`, TransportViewScale). `rasterizer` keeps its buffers; the result is valid
-/// until its next call.
+/// The linear frame with `light` turned by `angle` radians (FrameLight::Turn): shading,
+/// rasterizing over the turned environment (the teaching view transport:K over a neutral grey
+/// instead, its colours scaled by `view_scale`, TransportViewScale; the light view over the
+/// light as the basis keeps it). `rasterizer` keeps its buffers; the result is valid until its
+/// next call.
+const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, FrameLight& light, const Environment& env,
+                                  const Camera& camera, const RenderOptions& options, double angle, double view_scale);
+
+/// The same for an SH transport (the rotation about options.axis; `rotation` is not read).
 const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport,
                                   const ShRgb& light, const AxisRotation& rotation, const Environment& env,
                                   const Camera& camera, const RenderOptions& options, double angle,
@@ -67,9 +72,8 @@ ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& 
 /// Renders all frames into `folder`, each named through folder.Output(), and hands each to
 /// `video` (if given) once its PNG is encoded; the automatic exposure (raster/exposure.h) is
 /// measured on frame 0 and used for every frame.
-FrameStats RenderFrames(const Mesh& mesh, const Transport& transport, const ShRgb& light, const Environment& env,
-                        const Camera& camera, const RenderOptions& options, OutputFolder& folder,
-                        VideoWriter* video = nullptr);
+FrameStats RenderFrames(const Mesh& mesh, FrameLight& light, const Environment& env, const Camera& camera,
+                        const RenderOptions& options, OutputFolder& folder, VideoWriter* video = nullptr);
 
 /// The file name of frame `i` of `count`: frame_0000.png ..., with as many digits as count - 1
 /// needs (at least four), so that the names sort in frame order.

@@ -1,0 +1,80 @@
+// ComputeSceneWavelets (pipeline.h): the wavelet transport of --basis wavelet and its summary.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "app/pipeline.h"
+#include "core/log.h"
+#include "core/text.h"
+#include "precompute/shade_wavelet.h"
+#include "wavelet/light_cube.h"
+
+namespace prt {
+namespace {
+
+/// Relative RMS difference, over the probes, of the direct light the kept coefficients give and
+/// the one every coefficient gives, under `env` as frame 0 sees it.
+double TruncationCost(const WaveletTransport& t, const Environment& env, int light_terms) {
+  const CubeGrid grid(t.face_size);
+  CubeRgb rgb;
+  LightCube(env, grid).Resample(glm::dmat3(1.0), rgb);
+  CubeToHaar(grid.size(), rgb);
+  if (light_terms > 0) KeepLightTerms(SelectionWeights(grid.size(), kWaveletSelection), light_terms, rgb);
+  const WaveletLight light = PackWaveletLight(rgb);
+  double num = 0.0, den = 0.0;
+  for (std::size_t p = 0; p < t.probes.size(); ++p) {
+    const glm::vec3 full = ShadeDense(t.probe_coeffs.data() + p * grid.texels(), light);
+    glm::vec4 kept(0.0f);
+    const std::uint32_t v = t.probes[p];
+    for (std::uint64_t j = t.offsets[v]; j < t.offsets[v + 1]; ++j) kept += t.value[j] * light.rgb[t.index[j]];
+    for (int c = 0; c < 3; ++c) num += std::pow(double(kept[c]) - full[c], 2.0), den += double(full[c]) * full[c];
+  }
+  return den > 0 ? std::sqrt(num / den) : 0.0;
+}
+
+}  // namespace
+
+WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const SceneOptions& options, const Environment& env,
+                                      const std::vector<std::uint8_t>& seen) {
+  TransportOptions sh = TransportOptionsOf(options);
+  sh.seen = seen;
+  WaveletOptions w;
+  w.face_size = options.cube_size;
+  w.budget = options.wavelet_terms;
+  w.selection = kWaveletSelection;
+  w.light_terms = options.light_terms;
+  TransportReport r;
+  const WaveletTransport t = ComputeWaveletTransport(mesh, sh, w, &r);
+  const std::size_t texels = std::size_t(6) * w.face_size * w.face_size;
+  const double kept = t.vertices ? double(t.index.size()) / double(t.vertices) : 0.0;
+  std::string line = std::string("transport: ") + TransportModeName(sh.mode) + " in Haar wavelets on a cube of 6 x " +
+                     std::to_string(w.face_size) + "^2 texels (--cube-size " + std::to_string(w.face_size) + ")" +
+                     Formatted(" [%.3f s]", t.seconds) + "; ";
+  if (sh.mode == TransportMode::kUnshadowed)
+    line += "no rays (nothing blocks); ";
+  else
+    line += std::to_string(w.split * w.split) + " jittered rays per texel, " + std::to_string(t.rays) +
+            " rays (none below the horizon); ";
+  line += "each vertex keeps its " + std::to_string(w.budget) + " most important of " + std::to_string(texels) +
+          " coefficients (--wavelet-terms, " + SelectionName(w.selection) + "-weighted)" +
+          Formatted(": %.0f on average, %.2f%% of the transport's energy kept, %.0f bytes a vertex (%.1f MB)", kept,
+                    100.0 * t.kept_energy, double(t.Bytes()) / double(std::max<std::size_t>(t.vertices, 1)),
+                    double(t.Bytes()) / 1e6);
+  Summary(line);
+  Summary("wavelet truncation: frame 0's direct light at " + std::to_string(t.probes.size()) +
+          " sample vertices differs from their unkept transport's by " +
+          Formatted("%.3g%%", 100.0 * TruncationCost(t, env, options.light_terms)) + " RMS (relative)" +
+          (options.light_terms > 0 ? ", the light kept to its " + std::to_string(options.light_terms) +
+                                         " most important coefficients (--light-terms)"
+                                   : ", every light coefficient used (--light-terms 0)"));
+  if (sh.mode == TransportMode::kInterreflection) {
+    Summary("bounced light: in SH at lmax " + std::to_string(sh.lmax) +
+            " (low frequency; interreflection's direct part is left to the wavelets) [" +
+            Formatted("%.3f s", r.direct_seconds + r.bounce_seconds) + "]");
+    ReportBounces(r, t.bounce.channels);
+  }
+  Summary("cache: not used with --basis wavelet (its transport is recomputed each run)");
+  return t;
+}
+
+}  // namespace prt

@@ -1,0 +1,49 @@
+#include "precompute/shade_wavelet.h"
+
+#include <algorithm>
+
+#include "core/parallel.h"
+
+namespace prt {
+
+WaveletLight PackWaveletLight(const CubeRgb& coeffs) {
+  WaveletLight light;
+  const std::size_t n = coeffs.c[0].size();
+  light.rgb.resize(n);
+  for (std::size_t k = 0; k < n; ++k)
+    light.rgb[k] = glm::vec4(float(coeffs.c[0][k]), float(coeffs.c[1][k]), float(coeffs.c[2][k]), 0.0f);
+  return light;
+}
+
+std::vector<glm::vec3> ShadeWavelet(const Mesh& mesh, const WaveletTransport& transport, const WaveletLight& light,
+                                    const ShRgb& sh_light, bool albedo) {
+  const Transport& bounce = transport.bounce;
+  const bool bounced = !bounce.coeffs.empty();
+  const int count = bounced ? std::min<int>(CoeffCount(bounce.lmax), static_cast<int>(sh_light.size())) : 0;
+  std::vector<glm::vec3> colors(mesh.vertex_count());
+  ParallelFor(colors.size(), 1024, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v) {
+      glm::vec4 direct(0.0f);
+      for (std::uint64_t j = transport.offsets[v]; j < transport.offsets[v + 1]; ++j)
+        direct += transport.value[j] * light.rgb[transport.index[j]];
+      glm::dvec3 sum(direct.x, direct.y, direct.z);
+      for (int c = 0; c < 3 && bounced; ++c) {
+        const float* t = bounce.at(v, c);
+        double s = 0.0;
+        for (int k = 0; k < count; ++k) s += sh_light[k][c] * t[k];
+        sum[c] += s;
+      }
+      colors[v] = albedo ? glm::vec3(glm::dvec3(mesh.albedo[v]) * sum) : glm::vec3(sum);
+    }
+  });
+  return colors;
+}
+
+glm::vec3 ShadeDense(const float* coeffs, const WaveletLight& light) {
+  glm::dvec3 sum(0.0);
+  for (std::size_t k = 0; k < light.rgb.size(); ++k)
+    sum += double(coeffs[k]) * glm::dvec3(light.rgb[k].x, light.rgb[k].y, light.rgb[k].z);
+  return glm::vec3(sum);
+}
+
+}  // namespace prt

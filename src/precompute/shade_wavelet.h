@@ -1,0 +1,42 @@
+#pragma once
+/// \file
+/// Shading with wavelet transport (transport_wavelet.h): the outgoing radiance of vertex v is
+///
+///   albedo(v) * ( sum over v's kept k of L^_k T^_k(v)   +   sum_j L_j B_j(v) )
+///
+/// per colour channel: the direct light a sparse dot product with the frame's light in the Haar
+/// basis (wavelet/light_cube.h), the bounced light B (SH, with interreflection) a dot product
+/// with the frame's SH light, as shade.h does.
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "geometry/mesh.h"
+#include "precompute/transport_wavelet.h"
+#include "sh/coeffs.h"
+#include "wavelet/light_cube.h"
+
+namespace prt {
+
+/// A frame's light in the Haar basis, packed for the dot products: coefficient k's R, G, B (and
+/// a zero) at rgb[k].
+struct WaveletLight {
+  std::vector<glm::vec4> rgb;
+};
+
+/// Packs Haar coefficients (CubeToHaar's output) for ShadeWavelet.
+WaveletLight PackWaveletLight(const CubeRgb& coeffs);
+
+/// Linear RGB radiance of every vertex (without `albedo`: as if every albedo were 1): the
+/// direct light from `light`, the bounced light from `sh_light` (bands beyond the bounce
+/// transport's are not used).
+std::vector<glm::vec3> ShadeWavelet(const Mesh& mesh, const WaveletTransport& transport, const WaveletLight& light,
+                                    const ShRgb& sh_light, bool albedo = true);
+
+/// Direct radiance (albedo 1) of one vertex's full coefficient vector `coeffs` (6 F^2 entries, a
+/// probe's unkept transport) under `light`.
+glm::vec3 ShadeDense(const float* coeffs, const WaveletLight& light);
+
+}  // namespace prt

@@ -1,0 +1,82 @@
+#pragma once
+/// \file
+/// Per-vertex transport in a Haar wavelet basis on a cube map (all-frequency PRT [1]), beside
+/// the SH transport of transport.h. What it stores, per vertex:
+///
+///   direct     the transport of each texel t of the cube (wavelet/cube_grid.h),
+///                T_t = (1/pi) integral over texel t of V(w) max(0, n.w) dw,
+///              taken to Haar coefficients face by face (wavelet/haar.h), of which only the
+///              `budget` most important are kept (wavelet/selection.h): index and value.
+///              Then a vertex of albedo rho under a light whose texels hold their mean radiance
+///              L_t (wavelet/light_cube.h) sends out  rho sum_t L_t T_t = rho sum_k L^_k T^_k
+///              (the transform is orthonormal), a sparse dot product over the kept k.
+///   bounced    with interreflection, the light that arrives after one or more bounces, as SH
+///              transfer vectors (transport.h, the bounced part alone): bounced light is low
+///              frequency, and the SH light of the same environment lights it.
+///
+/// The texel integral: the clamped cosine over the texel is exact (CubeGrid::ClampedCosine), and
+/// V is its share that rays find open: split x split rays per texel, one in each sub-square at a
+/// jittered point (a pool of `kJitterSets` jittered fans, vertex v taking set hash(seed, v)), each
+/// weighted by its cosine times its sub-square's solid angle. A vertex that nothing blocks gets
+/// the exact transport, so a white sky gives exactly the albedo. Vertices that no frame shows
+/// (TransportOptions::seen) take one ray per texel: only --vertex-radiance reads their direct
+/// light (their bounces are the SH pass's).
+///
+/// Memory: 8 bytes a kept coefficient (32-bit index, float value).
+///
+/// References
+/// [1] Ng, Ramamoorthi, Hanrahan, "All-Frequency Shadows Using Non-linear Wavelet Lighting
+///     Approximation", SIGGRAPH 2003.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/mesh.h"
+#include "precompute/transport.h"
+#include "wavelet/selection.h"
+
+namespace prt {
+
+/// How the wavelet transport is sampled and truncated.
+struct WaveletOptions {
+  int face_size = 32;   ///< F: the cube's faces are F x F texels
+  int budget = 256;     ///< coefficients kept per vertex
+  int split = 2;        ///< rays per texel: split x split
+  Selection selection = Selection::kMagnitude;
+  int light_terms = 0;  ///< light coefficients kept per frame (0: all)
+};
+
+/// Jittered fans in the pool the vertices draw from.
+inline constexpr int kJitterSets = 8;
+
+struct WaveletTransport {
+  int face_size = 0;
+  std::size_t vertices = 0;
+  std::vector<std::uint64_t> offsets;  ///< vertex v's coefficients: [offsets[v], offsets[v + 1])
+  std::vector<std::uint32_t> index;    ///< coefficient index (face * F^2 + row * F + col), increasing per vertex
+  std::vector<float> value;
+  /// Interreflection: the bounced light as SH transfer (transport.h layout); no coefficients
+  /// otherwise.
+  Transport bounce;
+  /// A sample of vertices with every coefficient kept (the unkept transport), to measure what
+  /// the truncation costs: probe p is vertex probes[p], its 6 F^2 coefficients at p * 6 F^2.
+  std::vector<std::uint32_t> probes;
+  std::vector<float> probe_coeffs;
+  double kept_energy = 0.0;  ///< mean over vertices of sum kept T^2 / sum T^2
+  std::uint64_t rays = 0;
+  double seconds = 0.0;
+
+  /// Bytes of the kept coefficients (index and value) and their offsets.
+  std::size_t Bytes() const {
+    return index.size() * sizeof(std::uint32_t) + value.size() * sizeof(float) + offsets.size() * sizeof(std::uint64_t);
+  }
+};
+
+/// The wavelet transport of every vertex of `mesh` (unit normals): direct in wavelets; with
+/// sh.mode interreflection, the bounces in SH at sh.lmax (ComputeBouncedTransport). Unshadowed
+/// mode has no visibility: V = 1. `report` gets the SH bounce pass's report (if any).
+WaveletTransport ComputeWaveletTransport(const Mesh& mesh, const TransportOptions& sh, const WaveletOptions& options,
+                                         TransportReport* report);
+
+}  // namespace prt

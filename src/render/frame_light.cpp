@@ -1,0 +1,101 @@
+#include "render/frame_light.h"
+
+#include <glm/geometric.hpp>
+
+#include "precompute/shade.h"
+#include "sh/basis.h"
+#include "sh/rotation.h"
+
+namespace prt {
+namespace {
+
+class ShFrameLight : public FrameLight {
+ public:
+  ShFrameLight(const Transport& transport, const ShRgb& light, const glm::dvec3& axis)
+      : transport_(transport), light_(FirstBands(light, transport.lmax)), rotation_(axis, transport.lmax), lit_(light_) {}
+
+  void Turn(double angle) override { lit_ = rotation_.Rotate(light_, angle); }
+  std::vector<glm::vec3> Shade(const Mesh& mesh, bool albedo, const glm::dvec3* eye) const override {
+    return ShadeVertices(mesh, transport_, lit_, albedo, eye);
+  }
+  std::vector<glm::vec3> Glossy(const Mesh& mesh, const glm::dvec3* eye) const override {
+    return ShadeGlossy(mesh, transport_, lit_, eye);
+  }
+  glm::vec3 Kept(const glm::dvec3& d) const override {
+    double y[CoeffCount(kMaxLmax)];
+    EvalBasis(transport_.lmax, d, y);
+    glm::dvec3 sum(0.0);
+    for (std::size_t k = 0; k < lit_.size(); ++k) sum += y[k] * lit_[k];
+    return glm::vec3(sum);
+  }
+  const Transport* ShTransport() const override { return &transport_; }
+
+ private:
+  const Transport& transport_;
+  ShRgb light_;
+  AxisRotation rotation_;
+  ShRgb lit_;
+};
+
+class WaveletFrameLight : public FrameLight {
+ public:
+  WaveletFrameLight(const WaveletTransport& transport, const Environment& env, const ShRgb& sh_light,
+                    const glm::dvec3& axis, int light_terms, Selection selection)
+      : transport_(transport),
+        grid_(transport.face_size),
+        cube_(env, grid_),
+        axis_(glm::normalize(axis)),
+        light_terms_(light_terms),
+        weights_(SelectionWeights(transport.face_size, selection)),
+        sh_light_(transport.bounce.coeffs.empty() ? ShRgb{} : FirstBands(sh_light, transport.bounce.lmax)),
+        rotation_(axis, transport.bounce.coeffs.empty() ? 0 : transport.bounce.lmax) {
+    Turn(0.0);
+  }
+
+  void Turn(double angle) override {
+    cube_.Resample(AxisAngle(axis_, angle), kept_);
+    CubeToHaar(grid_.size(), kept_);
+    if (light_terms_ > 0) KeepLightTerms(weights_, static_cast<std::size_t>(light_terms_), kept_);
+    light_ = PackWaveletLight(kept_);
+    CubeFromHaar(grid_.size(), kept_);  // the kept light back on the texels, for Kept()
+    if (!sh_light_.empty()) lit_sh_ = rotation_.Rotate(sh_light_, angle);
+  }
+  std::vector<glm::vec3> Shade(const Mesh& mesh, bool albedo, const glm::dvec3*) const override {
+    return ShadeWavelet(mesh, transport_, light_, lit_sh_, albedo);
+  }
+  std::vector<glm::vec3> Glossy(const Mesh& mesh, const glm::dvec3*) const override {
+    return std::vector<glm::vec3>(mesh.vertex_count(), glm::vec3(0.0f));
+  }
+  glm::vec3 Kept(const glm::dvec3& d) const override {
+    const std::size_t t = grid_.TexelOf(d);
+    return glm::vec3(float(kept_.c[0][t]), float(kept_.c[1][t]), float(kept_.c[2][t]));
+  }
+  const Transport* ShTransport() const override { return nullptr; }
+
+ private:
+  const WaveletTransport& transport_;
+  CubeGrid grid_;
+  LightCube cube_;
+  glm::dvec3 axis_;
+  int light_terms_;
+  std::vector<double> weights_;
+  ShRgb sh_light_;
+  AxisRotation rotation_;
+  CubeRgb kept_;        ///< the frame's light as kept, on the texels
+  WaveletLight light_;  ///< the same in the Haar basis, packed
+  ShRgb lit_sh_;        ///< the frame's SH light, for the bounces
+};
+
+}  // namespace
+
+std::unique_ptr<FrameLight> MakeShFrameLight(const Transport& transport, const ShRgb& light, const glm::dvec3& axis) {
+  return std::make_unique<ShFrameLight>(transport, light, axis);
+}
+
+std::unique_ptr<FrameLight> MakeWaveletFrameLight(const WaveletTransport& transport, const Environment& env,
+                                                  const ShRgb& sh_light, const glm::dvec3& axis, int light_terms,
+                                                  Selection selection) {
+  return std::make_unique<WaveletFrameLight>(transport, env, sh_light, axis, light_terms, selection);
+}
+
+}  // namespace prt
