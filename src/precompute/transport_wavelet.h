@@ -41,7 +41,7 @@ namespace prt {
 /// How the wavelet transport is sampled and truncated.
 struct WaveletOptions {
   int face_size = 32;   ///< F: the cube's faces are F x F texels
-  int budget = 256;     ///< coefficients kept per vertex
+  int budget = 512;     ///< coefficients kept per vertex
   int split = 2;        ///< rays per texel: split x split
   Selection selection = Selection::kMagnitude;
   int light_terms = 0;  ///< light coefficients kept per frame (0: all)

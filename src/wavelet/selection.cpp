@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 #include "wavelet/haar.h"
@@ -19,8 +20,10 @@ const char* SelectionName(Selection selection) { return selection == Selection::
 std::vector<double> SelectionWeights(int face_size, Selection selection) {
   const std::size_t per_face = static_cast<std::size_t>(face_size) * face_size;
   std::vector<double> w(6 * per_face, 1.0);
+  // Each face's scaling coefficient first, whatever its size: the mean over the face.
+  for (int f = 0; f < 6; ++f) w[f * per_face] = std::numeric_limits<double>::infinity();
   if (selection == Selection::kMagnitude) return w;
-  for (std::size_t i = 0; i < per_face; ++i) {
+  for (std::size_t i = 1; i < per_face; ++i) {
     const int side = HaarSupport(static_cast<int>(i / face_size), static_cast<int>(i % face_size), face_size);
     for (int f = 0; f < 6; ++f) w[f * per_face + i] = double(side) * side;
   }

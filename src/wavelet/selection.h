@@ -9,7 +9,9 @@
 ///                                     better choice for lighting)
 ///
 /// with the support area that of the coefficient's square on its face (wavelet/haar.h), in
-/// texels. The kept indices are returned in increasing order, which is also the order in which a
+/// texels. Each face's scaling coefficient (its mean) is kept before any other, under either
+/// rule: then a constant light meets every vertex's whole transport (a white sky gives exactly
+/// the albedo, however few coefficients are kept), and a kept light keeps its mean. The kept indices are returned in increasing order, which is also the order in which a
 /// dot product reads a light's coefficients.
 ///
 /// References
@@ -29,7 +31,8 @@ Selection SelectionFromName(const std::string& name);
 const char* SelectionName(Selection selection);
 
 /// The weight of each coefficient of a cube of faces `face_size` x `face_size` (6 face_size^2,
-/// in the texel order of wavelet/cube_grid.h) under `selection`: 1, or its support's area.
+/// in the texel order of wavelet/cube_grid.h) under `selection`: 1, or its support's area;
+/// infinity for the scaling coefficients.
 std::vector<double> SelectionWeights(int face_size, Selection selection);
 
 /// The indices of the `budget` entries of `coeffs` (size n) of largest |coeffs[i]| * weights[i],
