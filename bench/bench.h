@@ -40,6 +40,7 @@ int BenchLight(Args& args);
 int BenchBvh(Args& args);
 int BenchRaster(Args& args);
 int BenchTransport(Args& args);
+int BenchWavelet(Args& args);
 /// The glossy measurements of `prt bench transport` (bench_glossy.cpp): `threads` 0 = all cores.
 void BenchGlossy(int runs, int threads, int samples, int lmax);
 

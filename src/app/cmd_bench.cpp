@@ -13,11 +13,11 @@ namespace prt {
 
 CommandSpec BenchSpec() {
   return {"prt bench WHAT [options]",
-          "WHAT is one of: light, bvh, raster, transport, all. Prints key=value lines; comparisons end with "
+          "WHAT is one of: light, bvh, raster, transport, wavelet (a frame in the wavelet basis beside SH lmax 4 and 16), all. Prints key=value lines; comparisons end with "
           "ratio_<what>=<x>. Times are medians. The last line, peak_memory_mib=, is the process's peak resident "
           "memory.",
           {{"options",
-            {{"--runs", "N", "timed runs per measurement, median reported", "5; bvh and transport 3"},
+            {{"--runs", "N", "timed runs per measurement, median reported", "5; bvh and transport 3; wavelet 9"},
              {"--threads", "N", "threads for the multi-threaded measurements", "all cores"},
              {"--mesh", "PATH", "(bvh, transport) also measure this OBJ file", "none"},
              {"--size", "WxH", "(raster) frame size", "1920x1080"},
@@ -41,6 +41,7 @@ const std::vector<std::pair<std::string, Bench>>& Benches() {
       {"bvh", {bench::BenchBvh, {"--runs", "--threads", "--mesh", "--quiet"}}},
       {"raster", {bench::BenchRaster, {"--runs", "--threads", "--size", "--quiet"}}},
       {"transport", {bench::BenchTransport, {"--runs", "--threads", "--mesh", "--samples", "--quiet"}}},
+      {"wavelet", {bench::BenchWavelet, {"--runs", "--threads", "--quiet"}}},
   };
   return benches;
 }
