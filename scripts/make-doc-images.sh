@@ -33,3 +33,18 @@ for n in 10 1000; do
   cp "$tmp/n$n/frame_0000.png" "$out/glossy_n${n}_lmax12.png"
 done
 echo "wrote $(ls "$out" | wc -l) images to $out"
+# All-frequency shadows: the demo's sun shadow at SH lmax 2, 4 and 16 and with wavelets (the same
+# exposure), then the light the wavelets keep with 16, 64 and 256 terms (--view light), looking
+# at the sun (elevation 40, azimuth 35: direction 0.44,0.64,-0.63) from beside the knot.
+sun="--transport shadowed --exposure -1.6 --size 320x240 --frames 1"
+for lmax in 2 4 16; do
+  "$prt" demo $sun --lmax $lmax --out "$tmp/sun_sh$lmax" --quiet
+  cp "$tmp/sun_sh$lmax/frame_0000.png" "$out/sun_sh_lmax$lmax.png"
+done
+"$prt" demo $sun --basis wavelet --out "$tmp/sun_wavelet" --quiet
+cp "$tmp/sun_wavelet/frame_0000.png" "$out/sun_wavelet.png"
+for k in 16 64 256; do
+  "$prt" demo --transport unshadowed --basis wavelet --view light --light-terms $k --exposure -3 --size 320x240 \
+    --eye 6,0.5,6 --target 10.39,6.93,-0.27 --fov 60 --frames 1 --out "$tmp/light$k" --quiet
+  cp "$tmp/light$k/frame_0000.png" "$out/wavelet_light_$k.png"
+done
