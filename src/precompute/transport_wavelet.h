@@ -22,7 +22,24 @@
 /// (TransportOptions::seen) take one ray per texel: only --vertex-radiance reads their direct
 /// light (their bounces are the SH pass's).
 ///
-/// Memory: 8 bytes a kept coefficient (32-bit index, float value).
+/// Memory: 8 bytes a kept coefficient (32-bit index, float value); not quantised (the defaults
+/// below already take less memory than SH lmax 16's run).
+///
+/// Defaults, measured (AMD EPYC, 2 vCPUs): the sample knot over a ground of 40 x 40 quads under
+/// the built-in sky (2-degree sun), 5,521 vertices, per-vertex relative RMS against prt reference
+/// (65,536 directions, its own error 0.03 %), shadowed:
+///
+///   F   rays a texel   kept 256   kept 512        kept 1024   all kept
+///   16  16             8.0 %      1.47 %          -           -
+///   32  4              9.1 %      1.39 % (1.75 %  1.01 %      0.67 % (6,144)
+///                                 by magnitude)
+///   64  1              -          1.45 %          1.20 %      0.51 % (24,576)
+///
+/// (SH: lmax 2, 4, 8, 16: 12.6, 8.7, 6.0, 3.9 %.) One bounce (SH lmax 4) at F 32, 512 kept:
+/// 1.62 %. Below about 400 terms the truncation error jumps: the smooth cosine over the open
+/// sky needs its fine coefficients wherever the sun may stand. So: F = 32, 4 rays a texel, 512
+/// kept, area-weighted. The whole `prt render` of that scene (--max-edge 0.2, 160x120, one frame)
+/// takes 4.0 s and 102 MB at these defaults, against 7.9 s and 195 MB at SH lmax 16.
 ///
 /// References
 /// [1] Ng, Ramamoorthi, Hanrahan, "All-Frequency Shadows Using Non-linear Wavelet Lighting

@@ -20,6 +20,11 @@
 ///
 /// Keeping only the K most important light coefficients per frame (wavelet/selection.h) is
 /// Ng's non-linear approximation of the light [1]; KeepLightTerms does it on the luminance.
+/// Measured on the sample knot over a 40 x 40 ground under the sky (AMD EPYC; F 32, 512
+/// transport terms, against prt reference): 64 light terms 1.69 %, 256 1.41 %, 1024 and all
+/// 1.39 %. It buys no speed here: each vertex's dot product runs over its own kept transport
+/// terms whatever the light keeps (Ng stored the transport by light coefficient instead), so it
+/// is off by default and serves to show what the basis keeps (--view light).
 ///
 /// References
 /// [1] Ng, Ramamoorthi, Hanrahan, "All-Frequency Shadows Using Non-linear Wavelet Lighting
