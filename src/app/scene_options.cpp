@@ -89,9 +89,10 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
        "sh | wavelet: the basis of the transport. wavelet keeps each vertex's direct light in Haar wavelets on a "
        "cube (all-frequency: sharp shadows of small bright sources), its bounces in SH at --lmax",
        d.basis});
-  add({"--cube-size", "F", "wavelet basis: the cube's face size, a power of two from 8 to 128 (6 F^2 texels)",
+  add({"--cube-size", "F", "wavelet basis: the cube's face size, a power of two from 8 to 64 (6 F^2 texels)",
        std::to_string(d.cube_size)});
-  add({"--wavelet-terms", "N", "wavelet basis: coefficients kept per vertex, 1..6 F^2 (8 bytes each)",
+  add({"--wavelet-terms", "N",
+       "wavelet basis: coefficients kept per vertex, the 6 faces' means among them, 6..6 F^2 (4 bytes a detail)",
        std::to_string(d.wavelet_terms)});
   add({"--light-terms", "K",
        "wavelet basis: light coefficients kept per frame, the K most important (0: all), 0..6 F^2",
@@ -275,12 +276,12 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
   }
   if (has("--basis")) o.basis = args.Choice("--basis", d.basis, {"sh", "wavelet"});
   if (has("--cube-size")) {
-    o.cube_size = args.Int("--cube-size", d.cube_size, 8, 128);
+    o.cube_size = args.Int("--cube-size", d.cube_size, 8, 64);
     if (o.cube_size & (o.cube_size - 1))
-      args.Fail("--cube-size: " + std::to_string(o.cube_size) + " is not a power of two (expected 8, 16, 32, 64 or 128)");
+      args.Fail("--cube-size: " + std::to_string(o.cube_size) + " is not a power of two (expected 8, 16, 32 or 64)");
   }
   const int texels = 6 * o.cube_size * o.cube_size;
-  if (has("--wavelet-terms")) o.wavelet_terms = args.Int("--wavelet-terms", d.wavelet_terms, 1, texels);
+  if (has("--wavelet-terms")) o.wavelet_terms = args.Int("--wavelet-terms", d.wavelet_terms, 6, texels);
   if (has("--light-terms")) o.light_terms = args.Int("--light-terms", d.light_terms, 0, texels);
   o.wavelet_terms = std::min(o.wavelet_terms, texels);
   if (o.basis == "wavelet" && o.material.glossy)

@@ -24,9 +24,7 @@ double TruncationCost(const WaveletTransport& t, const Environment& env, int lig
   double num = 0.0, den = 0.0;
   for (std::size_t p = 0; p < t.probes.size(); ++p) {
     const glm::vec3 full = ShadeDense(t.probe_coeffs.data() + p * grid.texels(), light);
-    glm::vec4 kept(0.0f);
-    const std::uint32_t v = t.probes[p];
-    for (std::uint64_t j = t.offsets[v]; j < t.offsets[v + 1]; ++j) kept += t.value[j] * light.rgb[t.index[j]];
+    const glm::vec4 kept = DirectLight(t, t.probes[p], light);
     for (int c = 0; c < 3; ++c) num += std::pow(double(kept[c]) - full[c], 2.0), den += double(full[c]) * full[c];
   }
   return den > 0 ? std::sqrt(num / den) : 0.0;
@@ -46,7 +44,7 @@ WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const SceneOptions& opti
   TransportReport r;
   const WaveletTransport t = ComputeWaveletTransport(mesh, sh, w, &r);
   const std::size_t texels = std::size_t(6) * w.face_size * w.face_size;
-  const double kept = t.vertices ? double(t.index.size()) / double(t.vertices) : 0.0;
+  const double kept = t.vertices ? double(t.Kept()) / double(t.vertices) : 0.0;
   std::string line = std::string("transport: ") + TransportModeName(sh.mode) + " in Haar wavelets on a cube of 6 x " +
                      std::to_string(w.face_size) + "^2 texels (--cube-size " + std::to_string(w.face_size) + ")" +
                      Formatted(" [%.3f s]", t.seconds) + "; ";
@@ -56,7 +54,8 @@ WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const SceneOptions& opti
     line += std::to_string(w.split * w.split) + " jittered rays per texel, " + std::to_string(t.rays) +
             " rays (none below the horizon); ";
   line += "each vertex keeps its " + std::to_string(w.budget) + " most important of " + std::to_string(texels) +
-          " coefficients (--wavelet-terms, " + SelectionName(w.selection) + "-weighted)" +
+          " coefficients (--wavelet-terms; its 6 faces' means, then the details by " + SelectionName(w.selection) +
+          " weight, quantised to 16 bits)" +
           Formatted(": %.0f on average, %.2f%% of the transport's energy kept, %.0f bytes a vertex (%.1f MB)", kept,
                     100.0 * t.kept_energy, double(t.Bytes()) / double(std::max<std::size_t>(t.vertices, 1)),
                     double(t.Bytes()) / 1e6);

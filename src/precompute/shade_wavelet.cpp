@@ -15,6 +15,15 @@ WaveletLight PackWaveletLight(const CubeRgb& coeffs) {
   return light;
 }
 
+glm::vec4 DirectLight(const WaveletTransport& transport, std::size_t v, const WaveletLight& light) {
+  const std::size_t face = static_cast<std::size_t>(transport.face_size) * transport.face_size;
+  glm::vec4 means(0.0f), details(0.0f);
+  for (int f = 0; f < 6; ++f) means += transport.means[6 * v + f] * light.rgb[f * face];
+  for (std::uint64_t j = transport.offsets[v]; j < transport.offsets[v + 1]; ++j)
+    details += float(transport.value[j]) * light.rgb[transport.index[j]];
+  return means + transport.scale[v] * details;
+}
+
 std::vector<glm::vec3> ShadeWavelet(const Mesh& mesh, const WaveletTransport& transport, const WaveletLight& light,
                                     const ShRgb& sh_light, bool albedo) {
   const Transport& bounce = transport.bounce;
@@ -23,9 +32,7 @@ std::vector<glm::vec3> ShadeWavelet(const Mesh& mesh, const WaveletTransport& tr
   std::vector<glm::vec3> colors(mesh.vertex_count());
   ParallelFor(colors.size(), 1024, [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v) {
-      glm::vec4 direct(0.0f);
-      for (std::uint64_t j = transport.offsets[v]; j < transport.offsets[v + 1]; ++j)
-        direct += transport.value[j] * light.rgb[transport.index[j]];
+      const glm::vec4 direct = DirectLight(transport, v, light);
       glm::dvec3 sum(direct.x, direct.y, direct.z);
       for (int c = 0; c < 3 && bounced; ++c) {
         const float* t = bounce.at(v, c);

@@ -35,6 +35,9 @@ WaveletLight PackWaveletLight(const CubeRgb& coeffs);
 std::vector<glm::vec3> ShadeWavelet(const Mesh& mesh, const WaveletTransport& transport, const WaveletLight& light,
                                     const ShRgb& sh_light, bool albedo = true);
 
+/// Direct radiance (albedo 1, RGB and a zero) of vertex v's kept coefficients under `light`.
+glm::vec4 DirectLight(const WaveletTransport& transport, std::size_t v, const WaveletLight& light);
+
 /// Direct radiance (albedo 1) of one vertex's full coefficient vector `coeffs` (6 F^2 entries, a
 /// probe's unkept transport) under `light`.
 glm::vec3 ShadeDense(const float* coeffs, const WaveletLight& light);

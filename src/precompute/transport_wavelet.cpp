@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/error.h"
 #include "core/log.h"
 #include "core/parallel.h"
 #include "core/progress.h"
@@ -102,6 +103,9 @@ int Side(const CubeGrid& grid, std::size_t t, const std::vector<double>& dots) {
 WaveletTransport ComputeWaveletTransport(const Mesh& mesh, const TransportOptions& sh, const WaveletOptions& options,
                                          TransportReport* report) {
   const auto t0 = std::chrono::steady_clock::now();
+  if (options.face_size > kMaxWaveletFace)
+    throw Error("wavelet cube face size " + std::to_string(options.face_size) + ": at most " +
+                std::to_string(kMaxWaveletFace) + " (coefficient indices are 16-bit)");
   const CubeGrid grid(options.face_size);
   const std::size_t texels = grid.texels(), nv = mesh.vertex_count();
   WaveletTransport out;
@@ -130,8 +134,10 @@ WaveletTransport ComputeWaveletTransport(const Mesh& mesh, const TransportOption
 
   // Each vertex's kept coefficients into its own slot first (counts vary), then packed in
   // vertex order: the same result for any thread count.
-  std::vector<std::vector<std::uint32_t>> kept_index(nv);
-  std::vector<std::vector<float>> kept_value(nv);
+  std::vector<std::vector<std::uint16_t>> kept_index(nv);
+  std::vector<std::vector<std::int16_t>> kept_value(nv);
+  out.means.resize(6 * nv);
+  out.scale.resize(nv);
   std::vector<double> kept_energy(nv, 1.0);
   std::atomic<std::uint64_t> rays{0};
   Progress progress("wavelet transport", nv);
@@ -174,13 +180,25 @@ WaveletTransport ComputeWaveletTransport(const Mesh& mesh, const TransportOption
       const auto probe = std::find(out.probes.begin(), out.probes.end(), static_cast<std::uint32_t>(v));
       if (probe != out.probes.end())
         std::copy(t.begin(), t.end(), out.probe_coeffs.begin() + (probe - out.probes.begin()) * texels);
-      KeepLargest(t.data(), weights, static_cast<std::size_t>(options.budget), kept);
       double all = 0.0, part = 0.0;
       for (double x : t) all += x * x;
-      kept_index[v] = kept;
+      // The faces' means exactly, then the most important details, quantised.
+      for (int f = 0; f < 6; ++f) {
+        double& mean = t[f * grid.face_texels()];
+        out.means[6 * v + f] = static_cast<float>(mean);
+        part += mean * mean;
+        mean = 0.0;
+      }
+      KeepLargest(t.data(), weights, static_cast<std::size_t>(std::max(options.budget - 6, 0)), kept);
+      double largest = 0.0;
+      for (std::uint32_t k : kept) largest = std::max(largest, std::abs(t[k]));
+      const double step = largest / kQuantSteps;
+      out.scale[v] = static_cast<float>(step);
+      kept_index[v].resize(kept.size());
       kept_value[v].resize(kept.size());
       for (std::size_t j = 0; j < kept.size(); ++j) {
-        kept_value[v][j] = static_cast<float>(t[kept[j]]);
+        kept_index[v][j] = static_cast<std::uint16_t>(kept[j]);
+        kept_value[v][j] = static_cast<std::int16_t>(std::lround(t[kept[j]] / step));
         part += t[kept[j]] * t[kept[j]];
       }
       kept_energy[v] = all > 0.0 ? part / all : 1.0;
