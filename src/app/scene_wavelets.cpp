@@ -48,11 +48,15 @@ WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const SceneOptions& opti
   std::string line = std::string("transport: ") + TransportModeName(sh.mode) + " in Haar wavelets on a cube of 6 x " +
                      std::to_string(w.face_size) + "^2 texels (--cube-size " + std::to_string(w.face_size) + ")" +
                      Formatted(" [%.3f s]", t.seconds) + "; ";
-  if (sh.mode == TransportMode::kUnshadowed)
+  std::size_t hidden = 0;
+  for (std::uint8_t s : seen) hidden += s == 0;
+  if (sh.mode == TransportMode::kUnshadowed) {
     line += "no rays (nothing blocks); ";
-  else
-    line += std::to_string(w.split * w.split) + " jittered rays per texel, " + std::to_string(t.rays) +
-            " rays (none below the horizon); ";
+  } else {
+    line += std::to_string(w.split * w.split) + " jittered rays per texel" +
+            (hidden ? " (1 for the " + std::to_string(hidden) + " vertices no frame shows)" : std::string()) + ", " +
+            std::to_string(t.rays) + " rays (none below the horizon); ";
+  }
   line += "each vertex keeps its " + std::to_string(w.budget) + " most important of " + std::to_string(texels) +
           " coefficients (--wavelet-terms; its 6 faces' means, then the details by " + SelectionName(w.selection) +
           " weight, quantised to 16 bits)" +
