@@ -52,8 +52,8 @@ int BenchWavelet(Args& args) {
   const ShRgb light = ProjectLight(*sky, 16);
   const auto l4 = MakeShFrameLight(sh4, light, axis);
   const auto l16 = MakeShFrameLight(sh16, light, axis);
-  const auto lw = MakeWaveletFrameLight(wt, *sky, light, axis, 0, kWaveletSelection);
-  const auto lw256 = MakeWaveletFrameLight(wt, *sky, light, axis, 256, kWaveletSelection);
+  const auto lw = MakeWaveletFrameLight(wt, *sky, light, axis, 0, WaveletOptions{}.selection);
+  const auto lw256 = MakeWaveletFrameLight(wt, *sky, light, axis, 256, WaveletOptions{}.selection);
   double angle = 0.0;
   const auto frame = [&](FrameLight& l) {
     angle += 0.01;

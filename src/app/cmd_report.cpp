@@ -1,5 +1,6 @@
-// prt report: error against run time (report_sweep.h, report_write.h), or with --stability the
-// stiff and extreme cases (stability.h).
+// prt report: error against run time (report_sweep.h, report_write.h), with --basis wavelet SH
+// against Haar wavelets (report_wavelet.h), or with --stability the stiff and extreme cases
+// (stability.h).
 #include <algorithm>
 #include <cstdio>
 
@@ -12,6 +13,7 @@
 #include "report/report_glossy.h"
 #include "report/report_image.h"
 #include "report/report_sweep.h"
+#include "report/report_wavelet.h"
 #include "report/report_write.h"
 #include "report/stability.h"
 
@@ -37,8 +39,15 @@ CommandSpec ReportSpec() {
                        ""},
                       ReplaceOption(), QuietOption()}};
   OptionGroup scene = SceneOptionGroup(SceneOptions{}, {"--mesh", "--env", "--bounces", "--albedo", "--material",
-                                                         "--seed", "--threads", "--games202-faces", "--max-edge"});
+                                                         "--seed", "--threads", "--games202-faces", "--max-edge",
+                                                         "--basis"});
   scene.options[0].default_text = "a small torus knot on a 12 x 12 plane, about 2,700 vertices";
+  for (OptionSpec& o : scene.options)
+    if (o.name == "--basis")
+      o.help = "sh | wavelet: wavelet adds a section comparing SH at lmax 2, 4, 8, 16 with Haar wavelets at 64 .. "
+               "2048 terms (--quick: lmax 2, 4, 8 and 64, 256, 1024 terms), each one's error against prt reference "
+               "beside its memory and precompute time (DIR/basis_error.png too); --stability ignores it (its wavelet "
+               "cases run either way)";
   return {"prt report [scene options] --out DIR [--quick] [--stability]",
           "Error against run time: sweeps sampler (uniform, stratified, fibonacci) x directions per vertex (16 .. "
           "16384, doubling) x lmax (1..8, or 1..--max-lmax) x transport mode (unshadowed closed form, shadowed, interreflection), "
@@ -49,7 +58,11 @@ CommandSpec ReportSpec() {
           "phong:N,KS a glossy section follows: Phong lobes of N = 10, 100, 1000 and N, with KS, unshadowed and "
           "shadowed: the fixed-camera vector path's error against lmax and its precompute time, the lmax each N "
           "needs beside sqrt(N), and the transfer matrices against the vector path (DIR/glossy_error_vs_lmax.png "
-          "too).",
+          "too). With --basis wavelet a basis section follows, on the scene the wavelet basis was measured on (a knot "
+          "on a 40 x 40 ground, 5,521 vertices; on a 20 x 20 one, 1,593, with --quick; --mesh if given): SH at each "
+          "lmax and Haar wavelets at each budget, shadowed and with interreflection (shadowed only with --quick), "
+          "each one's error against prt reference beside its bytes per vertex and its precompute seconds "
+          "(DIR/basis_error.png).",
           {scene, report}};
 }
 
@@ -68,6 +81,8 @@ int RunReport(const std::vector<std::string>& tokens) {
   if (stability) plan.names.push_back("stability.csv");
   else plan.names.insert(plan.names.end(), {"report.csv", "error_vs_time.png"});
   if (!stability && scene.material.glossy) plan.names.push_back("glossy_error_vs_lmax.png");
+  const bool wavelet = !stability && scene.basis == "wavelet";
+  if (wavelet) plan.names.push_back("basis_error.png");
   OutputFolder folder(*out, plan);
 
   if (stability) {
@@ -123,6 +138,21 @@ int RunReport(const std::vector<std::string>& tokens) {
     const glm::dvec3 eye(ChooseCamera(mesh, picture).eye);
     data.glossy = RunGlossyStudy(mesh, *env, eye,
                                  MakeGlossyConfig(quick, scene.material.lobe.exponent, scene.material.ks, scene.seed));
+  }
+  if (wavelet) {
+    // The wavelet basis's own scene, fine enough for a small sun's shadow (report_wavelet.h).
+    Mesh sun_scene;
+    if (scene.mesh.empty()) {
+      sun_scene = quick ? MakeSunScene(96, 12, 20) : MakeSunScene();
+      ApplySceneEdits(sun_scene, scene);
+    }
+    WaveletStudyConfig wc = MakeWaveletStudyConfig(quick, scene.bounces, scene.seed);
+    wc.selection = WaveletOptions{}.selection;
+    data.wavelet = RunWaveletStudy(scene.mesh.empty() ? sun_scene : mesh, *env, wc);
+    data.wavelet->environment = scene.env;
+    data.wavelet->scene = !scene.mesh.empty() ? scene.mesh
+                          : quick ? "torus knot 96x12 on a 20x20 ground (--quick's smaller basis scene)"
+                                  : "torus knot 192x20 on a 40x40 ground";
   }
   // Visible noise: frame 0 as `render` draws it, per way of spending directions (report_noise.h).
   NoiseConfig noise;

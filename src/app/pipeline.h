@@ -92,10 +92,6 @@ void ReportBounces(const TransportReport& report, int channels);
 WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const SceneOptions& options, const Environment& env,
                                       const std::vector<std::uint8_t>& seen = {});
 
-/// The selection of wavelet coefficients prt uses (wavelet/selection.h): measured in
-/// precompute/transport_wavelet.h.
-inline constexpr Selection kWaveletSelection = Selection::kArea;
-
 /// Says on the run summary what the transfer matrices of `mesh` will take, and throws Error,
 /// naming the largest lmax that fits, when that is more than the memory available allows.
 void CheckMatrixMemory(const Mesh& mesh, const SceneOptions& options);

@@ -98,7 +98,7 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
   std::unique_ptr<FrameLight> frame_light;
   if (scene.basis == "wavelet") {
     wavelets = ComputeSceneWavelets(mesh, scene, *env, seen);
-    frame_light = MakeWaveletFrameLight(wavelets, *env, light, render.axis, scene.light_terms, kWaveletSelection);
+    frame_light = MakeWaveletFrameLight(wavelets, *env, light, render.axis, scene.light_terms, WaveletOptions{}.selection);
     Summary("rotation: the environment turned and resampled onto the wavelet cube each frame (each texel its mean "
             "radiance, the sun's energy kept exactly)" +
             std::string(wavelets.bounce.coeffs.empty() ? "" : "; the bounces' SH light turned by its band matrices"));

@@ -19,7 +19,7 @@ double TruncationCost(const WaveletTransport& t, const Environment& env, int lig
   CubeRgb rgb;
   LightCube(env, grid).Resample(glm::dmat3(1.0), rgb);
   CubeToHaar(grid.size(), rgb);
-  if (light_terms > 0) KeepLightTerms(SelectionWeights(grid.size(), kWaveletSelection), light_terms, rgb);
+  if (light_terms > 0) KeepLightTerms(SelectionWeights(grid.size(), WaveletOptions{}.selection), light_terms, rgb);
   const WaveletLight light = PackWaveletLight(rgb);
   double num = 0.0, den = 0.0;
   for (std::size_t p = 0; p < t.probes.size(); ++p) {
@@ -39,7 +39,7 @@ WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const SceneOptions& opti
   WaveletOptions w;
   w.face_size = options.cube_size;
   w.budget = options.wavelet_terms;
-  w.selection = kWaveletSelection;
+  w.selection = WaveletOptions{}.selection;
   w.light_terms = options.light_terms;
   TransportReport r;
   const WaveletTransport t = ComputeWaveletTransport(mesh, sh, w, &r);

@@ -72,22 +72,12 @@ Mesh MakeReportScene() {
   return scene;
 }
 
-namespace {
-/// A run shorter than this is repeated until the repeats together last this long, and its time
-/// is the fastest repeat: the timer's resolution and scheduling noise, which made runs of
-/// different sizes come out equally fast, then stay far below the times plotted (the quick
-/// sweep's shortest runs take about 4 ms).
-constexpr double kMinTimedSeconds = 0.05;
-/// At most this many repeats, so a trivially fast run (unshadowed) cannot loop for long.
-constexpr int kMaxRepeats = 50;
-}  // namespace
-
 Transport TimedTransport(const Mesh& mesh, const TransportOptions& o, double& seconds, int& directions,
                          double* bvh_seconds) {
   Transport t;
   double total = 0.0;
   seconds = std::numeric_limits<double>::infinity();
-  for (int repeat = 0; repeat < kMaxRepeats && total < kMinTimedSeconds; ++repeat) {
+  for (int repeat = 0; repeat < kMaxTimedRepeats && total < kMinTimedSeconds; ++repeat) {
     TransportReport r;
     const auto t0 = Clock::now();
     t = ComputeTransport(mesh, o, &r);

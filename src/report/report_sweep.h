@@ -29,6 +29,7 @@
 #include "render/render_options.h"
 #include "report/report_glossy.h"
 #include "report/report_noise.h"
+#include "report/report_wavelet.h"
 
 namespace prt {
 
@@ -54,7 +55,7 @@ struct SweepRow {
   int directions = 0;         ///< actually used (stratified: floor(sqrt)^2)
   int lmax = 0;
   /// Transport time of the run the row comes from: the fastest of repeated runs that together
-  /// last at least kMinTimedSeconds (report_sweep.cpp), so the clock's resolution plays no part.
+  /// last at least kMinTimedSeconds (below), so the clock's resolution plays no part.
   double seconds = 0;
   VertexError sampling, total;
   double psnr = 0;            ///< dB against the reference picture
@@ -97,7 +98,16 @@ struct ReportData {
   double bvh_seconds = 0;  ///< BVH build inside each sampled run (the fastest seen): a fixed cost
   std::optional<GlossyStudy> glossy;  ///< with --material phong:N,KS (report_glossy.h)
   std::optional<NoiseStudy> noise;    ///< the visible-noise study (report_noise.h)
+  std::optional<WaveletStudy> wavelet;  ///< with --basis wavelet: SH against wavelets (report_wavelet.h)
 };
+
+/// A run shorter than this is repeated until the repeats together last this long, and its time
+/// is the fastest repeat: the timer's resolution and scheduling noise, which made runs of
+/// different sizes come out equally fast, then stay far below the times plotted (the quick
+/// sweep's shortest runs take about 4 ms).
+inline constexpr double kMinTimedSeconds = 0.05;
+/// At most this many repeats, so a trivially fast run (unshadowed) cannot loop for long.
+inline constexpr int kMaxTimedRepeats = 50;
 
 /// The transport of `options`, timed: a run shorter than 0.05 s is repeated until the repeats
 /// together last that long, and `seconds` is the fastest repeat (the clock's resolution and

@@ -1,5 +1,6 @@
 #include "report/report_write.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -34,6 +35,15 @@ std::string Csv(const ReportData& d) {
     s += b;
   }
   if (d.glossy) s += GlossyCsvRows(*d.glossy);
+  if (d.wavelet) {
+    // Three more columns for the basis section's rows; every row above is an SH one.
+    std::string widened;
+    for (std::size_t begin = 0, end; begin < s.size(); begin = end + 1) {
+      end = std::min(s.find('\n', begin), s.size());
+      widened += s.substr(begin, end - begin) + (begin == 0 ? ",basis,budget,bytes_per_vertex\n" : ",sh,,\n");
+    }
+    s = widened + WaveletCsvRows(*d.wavelet);
+  }
   return s;
 }
 
@@ -119,11 +129,17 @@ std::string Markdown(const ReportData& d) {
     s += "| " + std::to_string(l.face_size) + " | " + std::to_string(l.supersample) + "^2 | " + F("%.4f", l.seconds) +
          " | " + F("%.3g", l.coeff_error) + " |\n";
   if (d.glossy) s += GlossyMarkdown(*d.glossy);
+  if (d.wavelet) s += WaveletMarkdown(*d.wavelet);
   if (d.noise) s += NoiseMarkdown(*d.noise);
   const std::size_t glossy_rows = d.glossy ? d.glossy->vector_rows.size() + d.glossy->matrix_rows.size() : 0;
-  s += "\n## All measurements\n\nSee report.csv (" + std::to_string(d.rows.size() + glossy_rows) +
-       " rows; the glossy ones have material phong:N,KS and path glossy-vector or glossy-matrices) and "
-       "error_vs_time.png" + (d.glossy ? ", glossy_error_vs_lmax.png" : "") + ".\n";
+  const std::size_t basis_rows = d.wavelet ? d.wavelet->rows.size() : 0;
+  s += "\n## All measurements\n\nSee report.csv (" + std::to_string(d.rows.size() + glossy_rows + basis_rows) +
+       " rows; the glossy ones have material phong:N,KS and path glossy-vector or glossy-matrices" +
+       (d.wavelet ? "; the basis section's have path basis-sh or basis-wavelet and the columns basis, budget and "
+                    "bytes_per_vertex"
+                  : "") +
+       ") and error_vs_time.png" + (d.glossy ? ", glossy_error_vs_lmax.png" : "") +
+       (d.wavelet ? ", basis_error.png" : "") + ".\n";
   return s;
 }
 
@@ -164,8 +180,10 @@ void WriteReport(OutputFolder& folder, const ReportData& d) {
   WriteFileAtomic(folder.Output("report.md"), Markdown(d));
   WritePng(folder.Output("error_vs_time.png"), Plot(d));
   if (d.glossy) WritePng(folder.Output("glossy_error_vs_lmax.png"), GlossyPlot(*d.glossy));
+  if (d.wavelet) WritePng(folder.Output("basis_error.png"), WaveletPlot(*d.wavelet));
   Summary("wrote " + folder.dir() + "/report.csv, report.md and error_vs_time.png" +
-          (d.glossy ? std::string(" and glossy_error_vs_lmax.png") : std::string()));
+          (d.glossy ? std::string(" and glossy_error_vs_lmax.png") : std::string()) +
+          (d.wavelet ? std::string(" and basis_error.png") : std::string()));
 }
 
 }  // namespace prt

@@ -16,6 +16,7 @@
 #include "precompute/light.h"
 #include "precompute/samplers.h"
 #include "precompute/transport.h"
+#include "report/report_wavelet.h"
 #include "report/stability_inputs.h"
 #include "sh/axis_rotation.h"
 #include "sh/basis.h"
@@ -287,6 +288,7 @@ std::vector<StabilityCase> RunStabilityCases() {
   DeepConcavity(out);
   BadTexels(out);
   GlossySharpLobe(out);
+  WaveletAgreementCases(out);
   return out;
 }
 

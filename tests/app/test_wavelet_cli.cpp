@@ -51,8 +51,9 @@ TEST_SUITE("app") {
     const std::string dir = ScratchDir("wavelet_summary");
     SampleScene(dir);
     const RunResult r = RunPrt("render --mesh " + Q(dir + "/scene.obj") +
-                               " --transport interreflection --basis wavelet --cube-size 16 --wavelet-terms 64 "
-                               "--light-terms 128 --size 32x24 --frames 2 --out " + Q(dir + "/out"));
+                               " --transport interreflection --samples 256 --hidden-samples 64 --basis wavelet "
+                               "--cube-size 16 --wavelet-terms 64 --light-terms 128 --size 32x24 --frames 2 --out " +
+                               Q(dir + "/out"));
     REQUIRE(r.exit_code == 0);
     CHECK(r.err.find("in Haar wavelets on a cube of 6 x 16^2 texels") != std::string::npos);
     CHECK(r.err.find("most important of 1536 coefficients") != std::string::npos);
@@ -79,7 +80,7 @@ TEST_SUITE("app") {
     const ImageF wrong = EquirectImage([&](const glm::dvec3& d) { return sky->Radiance(quarter * d); }, 1024, 512);
     WriteFileAtomic(dir + "/wrong.hdr", EncodeHdr(wrong));
     const std::string common = " --mesh " + Q(dir + "/scene.obj") +
-                               " --max-edge 2% --basis wavelet --cube-size 32 --size 96x72 --exposure -1 --ssaa 1 ";
+                               " --max-edge 4% --basis wavelet --cube-size 16 --size 96x72 --exposure -1 --ssaa 1 ";
     REQUIRE(RunPrt("render" + common + "--env " + Q(dir + "/sky.hdr") + " --frames 4 --out " + Q(dir + "/a")).exit_code == 0);
     REQUIRE(RunPrt("render" + common + "--env " + Q(dir + "/turned.hdr") + " --frames 1 --out " + Q(dir + "/b")).exit_code == 0);
     REQUIRE(RunPrt("render" + common + "--env " + Q(dir + "/wrong.hdr") + " --frames 1 --out " + Q(dir + "/c")).exit_code == 0);

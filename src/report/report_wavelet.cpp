@@ -1,0 +1,189 @@
+#include "report/report_wavelet.h"
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+
+#include "core/log.h"
+#include "core/text.h"
+#include "env/procedural.h"
+#include "geometry/mesh_ops.h"
+#include "geometry/procedural.h"
+#include "precompute/light.h"
+#include "precompute/reference.h"
+#include "precompute/shade.h"
+#include "precompute/shade_wavelet.h"
+#include "precompute/transport_wavelet.h"
+#include "report/report_sweep.h"
+#include "wavelet/light_cube.h"
+
+namespace prt {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// The wavelet transport, timed as TimedTransport times the SH one (report_sweep.h).
+WaveletTransport TimedWavelets(const Mesh& mesh, const TransportOptions& sh, const WaveletOptions& w, double& seconds) {
+  WaveletTransport t;
+  double total = 0.0;
+  seconds = std::numeric_limits<double>::infinity();
+  for (int repeat = 0; repeat < kMaxTimedRepeats && total < kMinTimedSeconds; ++repeat) {
+    const auto t0 = Clock::now();
+    t = ComputeWaveletTransport(mesh, sh, w, nullptr);
+    const double run = SecondsSince(t0);
+    total += run;
+    seconds = std::min(seconds, run);
+  }
+  return t;
+}
+
+double PerVertex(std::size_t bytes, std::size_t vertices) {
+  return double(bytes) / double(std::max<std::size_t>(vertices, 1));
+}
+
+}  // namespace
+
+WaveletStudyConfig MakeWaveletStudyConfig(bool quick, int bounces, std::uint64_t seed) {
+  WaveletStudyConfig c;
+  c.bounces = bounces;
+  c.seed = seed;
+  if (quick) {
+    c.modes = {TransportMode::kShadowed};
+    c.sh_lmax = {2, 4, 8};
+    c.sh_samples = 4096;
+    c.budgets = {64, 256, 1024};
+    c.reference_samples = 4096;
+  }
+  return c;
+}
+
+Mesh MakeSunScene(int segments, int sides, int ground) {
+  Mesh scene = MakeTorusKnot(2, 3, 0.16f, segments, sides, glm::vec3(0.80f, 0.30f, 0.20f));
+  StandUpright(scene, 2.0f, 0.05f);
+  AppendMesh(scene, MakePlane(8.0f, ground, 0.0f, glm::vec3(0.75f)));
+  return scene;
+}
+
+WaveletStudy RunWaveletStudy(const Mesh& mesh, const Environment& env, const WaveletStudyConfig& c) {
+  WaveletStudy study;
+  study.vertices = static_cast<int>(mesh.vertex_count());
+  study.config = c;
+  const int top_lmax = std::max(c.bounce_lmax, c.sh_lmax.empty() ? 0 : c.sh_lmax.back());
+  const ShRgb sh_light = ProjectLight(env, top_lmax);
+  // The cube light: every texel its mean radiance, every coefficient kept (--light-terms 0).
+  const CubeGrid grid(c.face_size);
+  CubeRgb cube;
+  LightCube(env, grid, c.split).Resample(glm::dmat3(1.0), cube);
+  CubeToHaar(grid.size(), cube);
+  const WaveletLight cube_light = PackWaveletLight(cube);
+
+  for (TransportMode mode : c.modes) {
+    ReferenceOptions ro;
+    ro.mode = mode;
+    ro.samples = c.reference_samples;
+    ro.bounces = c.bounces;
+    ro.seed = c.seed + 1000;
+    const auto t0 = Clock::now();
+    const Reference reference = ComputeReference(mesh, env, ro);
+    BasisReference base{mode, c.reference_samples, SecondsSince(t0),
+                        reference.rms_radiance > 0 ? reference.rms_error / reference.rms_radiance : 0.0};
+    study.references.push_back(base);
+    if (c.progress)
+      Summary(Formatted("report: basis study, %s reference, %d directions per vertex [%.2f s], own RMS error %.3g%%",
+                        TransportModeName(mode), base.samples, base.seconds, 100.0 * base.own_error));
+
+    TransportOptions to;
+    to.mode = mode;
+    to.sampler = Sampler::kFibonacci;
+    to.samples = c.sh_samples;
+    to.bounces = c.bounces;
+    to.seed = c.seed;
+    for (int l : c.sh_lmax) {
+      BasisRow row;
+      row.mode = mode;
+      row.lmax = l;
+      to.lmax = l;
+      const Transport t = TimedTransport(mesh, to, row.seconds, row.directions);
+      row.bytes_per_vertex = PerVertex(t.coeffs.size() * sizeof(float), mesh.vertex_count());
+      row.total = CompareVertices(ShadeVertices(mesh, t, FirstBands(sh_light, l)), reference.radiance);
+      study.rows.push_back(row);
+    }
+    to.lmax = c.bounce_lmax;
+    WaveletOptions w;
+    w.face_size = c.face_size;
+    w.split = c.split;
+    w.selection = c.selection;
+    for (int budget : c.budgets) {
+      BasisRow row;
+      row.mode = mode;
+      row.wavelet = true;
+      row.lmax = mode == TransportMode::kInterreflection ? c.bounce_lmax : 0;
+      row.budget = w.budget = budget;
+      const WaveletTransport t = TimedWavelets(mesh, to, w, row.seconds);
+      const std::size_t nv = std::max<std::size_t>(t.vertices, 1);
+      row.kept = double(t.Kept()) / double(nv);
+      row.kept_energy = t.kept_energy;
+      row.directions = static_cast<int>((t.rays + nv / 2) / nv);
+      row.bytes_per_vertex = PerVertex(t.Bytes() + t.bounce.coeffs.size() * sizeof(float), t.vertices);
+      row.total = CompareVertices(ShadeWavelet(mesh, t, cube_light, sh_light), reference.radiance);
+      study.rows.push_back(row);
+    }
+    if (c.progress)
+      Summary(Formatted("report: basis study, %s: SH at %zu lmax, wavelets at %zu budgets", TransportModeName(mode),
+                        c.sh_lmax.size(), c.budgets.size()));
+  }
+  return study;
+}
+
+void WaveletAgreementCases(std::vector<StabilityCase>& out) {
+  // The defaults `prt render --basis wavelet` uses: WaveletOptions' cube, budget, rays and
+  // selection.
+  const WaveletOptions defaults;
+  WaveletStudyConfig c;
+  c.sh_lmax = {};
+  c.budgets = {defaults.budget};
+  c.face_size = defaults.face_size;
+  c.split = defaults.split;
+  c.selection = defaults.selection;
+  // 4096 reference directions: their own error (0.25% shadowed, 0.57% with a bounce, adding in
+  // quadrature: 1.42% and 1.72% measured here) leaves the figures under the limits below, at a
+  // sixteenth of the time of the 65536 they were first measured with. The bounces' SH pass takes
+  // as many directions.
+  c.reference_samples = 4096;
+  c.sh_samples = 4096;
+  c.bounces = 1;
+  c.progress = false;
+  const Mesh mesh = MakeSunScene();
+  const auto env = MakeSky(SkyParams{});
+  const WaveletStudy s = RunWaveletStudy(mesh, *env, c);
+  for (const BasisRow& r : s.rows) {
+    const bool shadowed = r.mode == TransportMode::kShadowed;
+    const BasisReference& ref = *std::find_if(s.references.begin(), s.references.end(),
+                                              [&r](const BasisReference& b) { return b.mode == r.mode; });
+    // Limits: the error measured when the wavelet basis was added (1.39% shadowed, 1.62% with a
+    // bounce, against 65536-direction references) with about a tenth to a quarter for headroom
+    // (the reference's own noise, a changed BVH or ray offset); SH's best on this scene, lmax 16,
+    // was 3.9% shadowed, so a limit this tight still says the wavelets beat it by more than 2x.
+    const double limit = shadowed ? 0.015 : 0.020;
+    const std::string what = shadowed ? ", shadowed" : Formatted(", 1 bounce in SH at lmax %d", c.bounce_lmax);
+    StabilityCase k;
+    k.name = std::string("wavelet_sun_") + (shadowed ? "shadowed" : "one_bounce");
+    k.checks = Formatted("knot on a 40 x 40 ground under sky (2-degree sun), %d vertices, wavelets at the default "
+                         "budget (%d of 6 x %d^2, area-weighted, %d rays a texel)%s: relative RMS error against prt "
+                         "reference, %d directions (limit %.3g%%: %s)",
+                         s.vertices, r.budget, c.face_size, c.split * c.split,
+                         what.c_str(), ref.samples, 100.0 * limit,
+                         shadowed ? "1.39% measured against a 65536-direction reference, SH lmax 16 3.9%"
+                                  : "1.62% measured against a 65536-direction reference");
+    k.figure = r.total.relative;
+    k.limit = limit;
+    k.pass = k.figure <= k.limit;  // NaN fails
+    k.note = Formatted("reference's own error %.3g%% [%.1f s]; transport %.1f s, %.0f bytes a vertex, %.2f%% of the "
+                       "transport's energy kept; max vertex error %.3g",
+                       100.0 * ref.own_error, ref.seconds, r.seconds, r.bytes_per_vertex, 100.0 * r.kept_energy,
+                       r.total.max);
+    out.push_back(k);
+  }
+}
+
+}  // namespace prt
