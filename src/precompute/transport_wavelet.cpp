@@ -57,7 +57,8 @@ JitterSet MakeJitterSet(const CubeGrid& grid, int split, std::uint64_t seed, int
 }
 
 /// Integral over each texel of w dw (Arvo's vector irradiance): for a texel wholly above the
-/// horizon of n, the clamped cosine is n . phi_t.
+/// horizon of n, the clamped cosine is n . phi_t. With F even, every texel lies wholly on one
+/// side of each axis plane, so each component is a clamped cosine about that axis.
 std::vector<glm::dvec3> TexelVectors(const CubeGrid& grid) {
   std::vector<glm::dvec3> phi(grid.texels());
   for (std::size_t t = 0; t < grid.texels(); ++t) {
@@ -103,8 +104,9 @@ int Side(const CubeGrid& grid, std::size_t t, const std::vector<double>& dots) {
 WaveletTransport ComputeWaveletTransport(const Mesh& mesh, const TransportOptions& sh, const WaveletOptions& options,
                                          TransportReport* report) {
   const auto t0 = std::chrono::steady_clock::now();
-  if (options.face_size > kMaxWaveletFace)
-    throw Error("wavelet cube face size " + std::to_string(options.face_size) + ": at most " +
+  // From 2: then no texel straddles an axis plane (TexelVectors).
+  if (options.face_size < 2 || options.face_size > kMaxWaveletFace)
+    throw Error("wavelet cube face size " + std::to_string(options.face_size) + ": from 2 to " +
                 std::to_string(kMaxWaveletFace) + " (coefficient indices are 16-bit)");
   const CubeGrid grid(options.face_size);
   const std::size_t texels = grid.texels(), nv = mesh.vertex_count();
