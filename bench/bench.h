@@ -9,8 +9,24 @@
 #include <vector>
 
 #include "app/args.h"
+#include "geometry/mesh.h"
+#include "raster/rasterizer.h"
 
 namespace prt::bench {
+
+/// Draws `mesh` with per-vertex `colors` as render's default frame does (640x480, 2x2
+/// supersampling, the demo camera): what a render loop adds to a frame's shading.
+class DemoFrameDrawer {
+ public:
+  DemoFrameDrawer();
+  void Draw(const Mesh& mesh, const std::vector<glm::vec3>& colors);
+
+ private:
+  Camera camera_;
+  RasterOptions raster_;
+  int width_, height_;
+  Rasterizer rasterizer_;
+};
 
 /// Median wall-clock seconds of `runs` calls of `fn` (after one warm-up call).
 double MedianSeconds(int runs, const std::function<void()>& fn);

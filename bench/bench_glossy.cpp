@@ -30,6 +30,20 @@
 
 namespace prt::bench {
 
+DemoFrameDrawer::DemoFrameDrawer() {
+  const RenderOptions demo = WithDemoCamera({});
+  camera_.eye = glm::vec3(*demo.eye);
+  camera_.target = glm::vec3(*demo.target);
+  camera_.fov_deg = float(*demo.fov);
+  raster_.ssaa = demo.ssaa;
+  width_ = demo.width;
+  height_ = demo.height;
+}
+
+void DemoFrameDrawer::Draw(const Mesh& mesh, const std::vector<glm::vec3>& colors) {
+  rasterizer_.Draw(camera_, width_, height_, mesh.positions, mesh.triangles, colors, raster_);
+}
+
 void BenchGlossy(int runs, int threads, int samples, int lmax) {
   SetThreadCount(threads);
   Mesh mesh = MakeDemoScene();
@@ -72,17 +86,8 @@ void BenchGlossy(int runs, int threads, int samples, int lmax) {
   Print("frame_diffuse_shading_ms", 1e3 * frame.ours);
   Print("frame_matrix_shading_ms", 1e3 * frame.theirs);
   Print("ratio_matrix_frame_vs_diffuse_frame", frame.ratio);
-  const RenderOptions demo = WithDemoCamera({});
-  Camera camera;
-  camera.eye = glm::vec3(*demo.eye);
-  camera.target = glm::vec3(*demo.target);
-  camera.fov_deg = float(*demo.fov);
-  RasterOptions raster;
-  raster.ssaa = demo.ssaa;
-  Rasterizer rasterizer;
-  const auto draw = [&](const std::vector<glm::vec3>& colors) {
-    rasterizer.Draw(camera, demo.width, demo.height, mesh.positions, mesh.triangles, colors, raster);
-  };
+  DemoFrameDrawer drawer;
+  const auto draw = [&](const std::vector<glm::vec3>& colors) { drawer.Draw(mesh, colors); };
   const SideBySide drawn = TimeSideBySide(std::max(runs, 9), [&] { draw(ShadeVertices(mesh, d, light)); },
                                           [&] { draw(ShadeVertices(mesh, m, light, true, &eye)); });
   Print("frame_diffuse_with_raster_ms", 1e3 * drawn.ours);

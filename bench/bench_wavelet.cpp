@@ -14,15 +14,12 @@
 #include <algorithm>
 
 #include "app/pipeline.h"
-#include "app/render_args.h"
 #include "bench/bench.h"
 #include "core/parallel.h"
 #include "env/procedural.h"
 #include "geometry/procedural.h"
 #include "precompute/light.h"
 #include "precompute/transport_wavelet.h"
-#include "raster/camera.h"
-#include "raster/rasterizer.h"
 #include "render/frame_light.h"
 
 namespace prt::bench {
@@ -72,17 +69,8 @@ int BenchWavelet(Args& args) {
   Print("frame_wavelet_light_ms", 1e3 * MedianSeconds(n, [&] { angle += 0.01; lw->Turn(angle); }));
   Print("frame_wavelet_light_256_terms_ms", 1e3 * MedianSeconds(n, [&] { angle += 0.01; lw256->Turn(angle); }));
 
-  const RenderOptions demo = WithDemoCamera({});
-  Camera camera;
-  camera.eye = glm::vec3(*demo.eye);
-  camera.target = glm::vec3(*demo.target);
-  camera.fov_deg = float(*demo.fov);
-  RasterOptions raster;
-  raster.ssaa = demo.ssaa;
-  Rasterizer rasterizer;
-  const auto draw = [&](FrameLight& l) {
-    rasterizer.Draw(camera, demo.width, demo.height, mesh.positions, mesh.triangles, frame(l), raster);
-  };
+  DemoFrameDrawer drawer;
+  const auto draw = [&](FrameLight& l) { drawer.Draw(mesh, frame(l)); };
   const SideBySide drawn = TimeSideBySide(n, [&] { draw(*l16); }, [&] { draw(*lw); });
   Print("frame_sh16_with_raster_ms", 1e3 * drawn.ours);
   Print("frame_wavelet_with_raster_ms", 1e3 * drawn.theirs);

@@ -17,10 +17,8 @@ namespace {
 double TruncationCost(const WaveletTransport& t, const Environment& env, int light_terms) {
   const CubeGrid grid(t.face_size);
   CubeRgb rgb;
-  LightCube(env, grid).Resample(glm::dmat3(1.0), rgb);
-  CubeToHaar(grid.size(), rgb);
-  if (light_terms > 0) KeepLightTerms(SelectionWeights(grid.size(), WaveletOptions{}.selection), light_terms, rgb);
-  const WaveletLight light = PackWaveletLight(rgb);
+  const WaveletLight light = TurnedWaveletLight(LightCube(env, grid), glm::dmat3(1.0), light_terms,
+                                                SelectionWeights(grid.size(), WaveletOptions{}.selection), rgb);
   double num = 0.0, den = 0.0;
   for (std::size_t p = 0; p < t.probes.size(); ++p) {
     const glm::vec3 full = ShadeDense(t.probe_coeffs.data() + p * grid.texels(), light);

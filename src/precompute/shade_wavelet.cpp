@@ -24,6 +24,14 @@ glm::vec4 DirectLight(const WaveletTransport& transport, std::size_t v, const Wa
   return means + transport.scale[v] * details;
 }
 
+WaveletLight TurnedWaveletLight(const LightCube& cube, const glm::dmat3& turn, int light_terms,
+                                const std::vector<double>& weights, CubeRgb& coeffs) {
+  cube.Resample(turn, coeffs);
+  CubeToHaar(cube.grid().size(), coeffs);
+  if (light_terms > 0) KeepLightTerms(weights, static_cast<std::size_t>(light_terms), coeffs);
+  return PackWaveletLight(coeffs);
+}
+
 std::vector<glm::vec3> ShadeWavelet(const Mesh& mesh, const WaveletTransport& transport, const WaveletLight& light,
                                     const ShRgb& sh_light, bool albedo) {
   const Transport& bounce = transport.bounce;

@@ -29,6 +29,12 @@ struct WaveletLight {
 /// Packs Haar coefficients (CubeToHaar's output) for ShadeWavelet.
 WaveletLight PackWaveletLight(const CubeRgb& coeffs);
 
+/// A frame's light: `cube`'s environment turned by `turn`, in the Haar basis, cut to its
+/// `light_terms` most important coefficients by `weights` (0: all kept); the coefficients also
+/// in `coeffs`.
+WaveletLight TurnedWaveletLight(const LightCube& cube, const glm::dmat3& turn, int light_terms,
+                                const std::vector<double>& weights, CubeRgb& coeffs);
+
 /// Linear RGB radiance of every vertex (without `albedo`: as if every albedo were 1): the
 /// direct light from `light`, the bounced light from `sh_light` (bands beyond the bounce
 /// transport's are not used).

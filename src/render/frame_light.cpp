@@ -53,10 +53,7 @@ class WaveletFrameLight : public FrameLight {
   }
 
   void Turn(double angle) override {
-    cube_.Resample(AxisAngle(axis_, angle), kept_);
-    CubeToHaar(grid_.size(), kept_);
-    if (light_terms_ > 0) KeepLightTerms(weights_, static_cast<std::size_t>(light_terms_), kept_);
-    light_ = PackWaveletLight(kept_);
+    light_ = TurnedWaveletLight(cube_, AxisAngle(axis_, angle), light_terms_, weights_, kept_);
     CubeFromHaar(grid_.size(), kept_);  // the kept light back on the texels, for Kept()
     if (!sh_light_.empty()) lit_sh_ = rotation_.Rotate(sh_light_, angle);
   }

@@ -129,7 +129,7 @@ const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, Fram
 }
 
 const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport,
-                                  const ShRgb& light, const AxisRotation&, const Environment& env,
+                                  const ShRgb& light, const Environment& env,
                                   const Camera& camera, const RenderOptions& o, double angle, double view_scale) {
   const auto sh = MakeShFrameLight(transport, light, o.axis);
   return RasterizeFrame(rasterizer, mesh, *sh, env, camera, o, angle, view_scale);
@@ -153,7 +153,7 @@ double TransportViewScale(const Transport& transport, int index) {
 }
 
 ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                     const AxisRotation&, const Environment& env, const Camera& camera,
+                     const Environment& env, const Camera& camera,
                      const RenderOptions& o, double angle, double exposure_ev) {
   const double scale = o.view == "transport" ? TransportViewScale(transport, o.transport_index) : 0.0;
   const auto sh = MakeShFrameLight(transport, light, o.axis);

@@ -53,9 +53,9 @@ Camera ChooseCamera(const Mesh& mesh, const RenderOptions& options, std::string*
 const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, FrameLight& light, const Environment& env,
                                   const Camera& camera, const RenderOptions& options, double angle, double view_scale);
 
-/// The same for an SH transport (the rotation about options.axis; `rotation` is not read).
+/// The same for an SH transport, its light turned about options.axis.
 const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport,
-                                  const ShRgb& light, const AxisRotation& rotation, const Environment& env,
+                                  const ShRgb& light, const Environment& env,
                                   const Camera& camera, const RenderOptions& options, double angle,
                                   double view_scale);
 
@@ -66,7 +66,7 @@ ToneMapped ToneMapFrame(const RasterImage& frame, const RenderOptions& options, 
 /// One frame, RasterizeFrame then ToneMapFrame (for tests: RenderFrames does the same once per
 /// frame, with the scale computed once).
 ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                     const AxisRotation& rotation, const Environment& env, const Camera& camera,
+                     const Environment& env, const Camera& camera,
                      const RenderOptions& options, double angle, double exposure_ev);
 
 /// Renders all frames into `folder`, each named through folder.Output(), and hands each to

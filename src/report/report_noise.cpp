@@ -32,8 +32,7 @@ Image8 NoiseFrame(const Mesh& mesh, const Transport& transport, const ShRgb& lig
                   const RenderOptions& picture, std::optional<double>& ev) {
   Rasterizer rasterizer;
   const Camera camera = ChooseCamera(mesh, picture);
-  const AxisRotation rotation(picture.axis, transport.lmax);
-  const RasterImage& frame = RasterizeFrame(rasterizer, mesh, transport, light, rotation, env, camera, picture, 0.0, 1.0);
+  const RasterImage& frame = RasterizeFrame(rasterizer, mesh, transport, light, env, camera, picture, 0.0, 1.0);
   if (!ev) ev = AutoExposureEv(frame, picture.tonemap);
   return ToneMapFrame(frame, picture, *ev, 1.0).image;
 }

@@ -64,16 +64,15 @@ TEST_SUITE("render") {
       o.target = forward;
       for (const glm::dvec3& axis : {glm::dvec3(0, 0, -1), glm::dvec3(0, -1, 0), glm::dvec3(-1, 0, 0), glm::dvec3(-1, -2, -2)}) {
         o.axis = axis;
-        const AxisRotation rotation(axis, kLmax);
         const Camera camera = ChooseCamera(mesh, o);
         for (double angle : {1.1, -2.0}) {
           Rasterizer rasterizer;
           o.view = "light";
-          const RasterImage sh = RasterizeFrame(rasterizer, mesh, transport, light, rotation, env, camera, o, angle, 0.0);
+          const RasterImage sh = RasterizeFrame(rasterizer, mesh, transport, light, env, camera, o, angle, 0.0);
           Rasterizer rasterizer2;
           o.view = "radiance";
           o.env_background = true;
-          const RasterImage drawn = RasterizeFrame(rasterizer2, mesh, transport, light, rotation, env, camera, o, angle, 0.0);
+          const RasterImage drawn = RasterizeFrame(rasterizer2, mesh, transport, light, env, camera, o, angle, 0.0);
           double worst = 0.0;
           std::size_t background = 0;
           for (std::size_t i = 0; i < sh.image.pixels.size(); ++i) {

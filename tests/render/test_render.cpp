@@ -61,7 +61,7 @@ Scene MakeScene(TransportMode mode, int lmax, const std::string& material = "dif
 
 Image8 Draw(const Scene& s, const RenderOptions& o, double angle) {
   Rasterizer r;
-  return DrawFrame(r, s.mesh, s.transport, s.light, AxisRotation(o.axis, s.transport.lmax), *s.env,
+  return DrawFrame(r, s.mesh, s.transport, s.light, *s.env,
                    ChooseCamera(s.mesh, o), o, angle, *o.exposure)
       .image;
 }

@@ -113,8 +113,6 @@ TEST_SUITE("report") {
         CHECK(r.directions == c.sh_samples);
         // (lmax+1)^2 floats per channel, exactly.
         CHECK(r.bytes_per_vertex == double(prt::CoeffCount(r.lmax) * channels * sizeof(float)));
-        CHECK(std::isfinite(r.seconds));
-        CHECK(r.seconds > 0);
         CHECK(r.total.relative > 0);
         CHECK(r.total.relative <= previous * (1 + kWobble));
         previous = r.total.relative;
@@ -136,7 +134,6 @@ TEST_SUITE("report") {
         const double bounce = m ? 3.0 * prt::CoeffCount(c.bounce_lmax) * sizeof(float) : 0.0;
         CHECK(r.bytes_per_vertex == doctest::Approx(WaveletBytes(r.budget) + bounce).epsilon(1e-12));
         CHECK(r.lmax == (m ? c.bounce_lmax : 0));
-        CHECK(r.seconds > 0);
         CHECK(r.total.relative <= previous * (1 + kWobble));
         previous = r.total.relative;
       }

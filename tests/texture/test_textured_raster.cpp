@@ -253,7 +253,7 @@ Image8 DrawScene(const Mesh& mesh, const Environment& env, const RenderOptions& 
   const Transport transport = ComputeTransport(mesh, t, nullptr);
   const ShRgb light = ProjectLight(env, 2);
   Rasterizer r;
-  return DrawFrame(r, mesh, transport, light, AxisRotation(o.axis, transport.lmax), env, ChooseCamera(mesh, o), o,
+  return DrawFrame(r, mesh, transport, light, env, ChooseCamera(mesh, o), o,
                    0.0, *o.exposure)
       .image;
 }
