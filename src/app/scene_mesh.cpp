@@ -2,10 +2,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <memory>
 #include <limits>
 
 #include <glm/geometric.hpp>
 
+#include "app/option_table.h"
 #include "app/pipeline.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -15,6 +18,8 @@
 #include "geometry/procedural.h"
 #include "geometry/subdivide.h"
 #include "io/obj_loader.h"
+#include "texture/albedo_limit.h"
+#include "geometry/mesh_texture.h"
 
 namespace prt {
 namespace {
@@ -59,7 +64,7 @@ void SplitLongTriangles(Mesh& mesh, const SceneOptions& options) {
 
 // The textures of a textured mesh for its summary line: each file with its size and mip levels,
 // how many materials use a plain Kd, and how the frames shade them.
-std::string DescribeTextures(const Mesh& mesh) {
+std::string DescribeTextures(const Mesh& mesh, bool shading = true) {
   std::string files;
   std::size_t solid = 0;
   for (const auto& t : mesh.textures) {
@@ -71,7 +76,45 @@ std::string DescribeTextures(const Mesh& mesh) {
              std::to_string(t->height()) + ", " + std::to_string(t->level_count()) + " mip levels)";
   }
   if (solid > 0) files += (files.empty() ? "" : "; ") + std::to_string(solid) + " plain colours (Kd)";
+  if (!shading) return files;
   return files + "; frames shade each pixel as the texture's albedo times the interpolated irradiance";
+}
+
+// The materials' summary line: the libraries read, the fields used and ignored, the gloss offered.
+std::string DescribeMaterials(const LoadedMesh& loaded, const SceneOptions& options) {
+  std::string libraries;
+  for (std::size_t i = 1; i < loaded.files_read.size(); ++i)
+    libraries += (libraries.empty() ? "" : ", ") + std::filesystem::path(loaded.files_read[i]).filename().string();
+  MaterialUse use;
+  use.colour_replaced = options.albedo.has_value();
+  use.texture_replaced = !options.texture.empty();
+  use.glossy = options.material.glossy;
+  use.textured = loaded.mesh.textured() && !options.albedo;
+  if (options.albedo) use.brightest_kd = static_cast<float>(std::max({options.albedo->x, options.albedo->y, options.albedo->z}));
+  else
+    for (const glm::vec3& a : loaded.mesh.albedo) use.brightest_kd = std::max({use.brightest_kd, a.x, a.y, a.z});
+  const std::string fields = DescribeMaterialFields(loaded.material_fields, use);
+  return libraries.empty() || fields.empty() ? "" : libraries + ": " + fields;
+}
+
+// The per-texel energy rule (texture/albedo_limit.h) on every texture of a glossy mesh, with one
+// warning naming each texture that had texels above 1 - KS.
+void FitTexturesBesideCoat(Mesh& mesh, const Material& material, const std::string& mesh_name) {
+  const float limit = static_cast<float>(1.0 - material.ks);
+  std::string changed;
+  for (auto& texture : mesh.textures) {
+    std::size_t scaled = 0;
+    auto fitted = std::make_shared<const Texture>(LimitAlbedo(*texture, limit, scaled));
+    if (scaled == 0) continue;
+    const std::size_t texels = static_cast<std::size_t>(texture->width()) * static_cast<std::size_t>(texture->height());
+    changed += (changed.empty() ? "" : ", ") + std::to_string(scaled) + " of " + std::to_string(texels) +
+               (texels == 1 ? " texel of '" : " texels of '") + texture->name() + "'";
+    texture = std::move(fitted);
+  }
+  if (changed.empty()) return;
+  SetVertexAlbedoFromTextures(mesh);
+  Warn(mesh_name + ": " + material.Name() + " keeps albedo + KS <= 1 per texel: texels brighter than 1 - KS = " +
+       ShortestFloat(limit) + " were scaled down to it, hue kept (" + changed + ")");
 }
 
 }  // namespace
@@ -79,23 +122,31 @@ std::string DescribeTextures(const Mesh& mesh) {
 Mesh LoadSceneMesh(const SceneOptions& options, OutputFolder* folder) {
   const auto t0 = std::chrono::steady_clock::now();
   Mesh mesh;
-  std::string what;
+  std::string what, materials;
   OrientationReport orientation;
   if (options.mesh.empty()) {
     mesh = MakeDemoScene();
     what = "embedded demo scene (torus knot on a ground plane)";
   } else {
     LoadedMesh loaded = LoadObj(options.mesh, options.texture);
-    if (folder)
+    if (folder) {
       for (const std::string& file : loaded.files_read) folder->KeepInput(file);
+      for (const std::string& file : loaded.texture_files) folder->KeepInput(file);
+    }
     for (const auto& w : loaded.report.warnings) Warn(w);
     what = options.mesh + LoadNotes(loaded.report);
+    materials = DescribeMaterials(loaded, options);
     orientation = OrientMesh(loaded.mesh, loaded.normal_from_file);
     mesh = std::move(loaded.mesh);
   }
   Summary("mesh: " + what + ": " + std::to_string(mesh.vertex_count()) + " vertices, " +
           std::to_string(mesh.triangle_count()) + " triangles" + Formatted(" [%.3f s]", SecondsSince(t0)));
-  if (mesh.textured()) Summary("texture: " + DescribeTextures(mesh));
+  if (!materials.empty()) Summary("materials: " + materials);
+  if (mesh.textured() && options.albedo)
+    Summary("texture: not used: --albedo " + VecText(*options.albedo) + " replaces the textures of " + options.mesh +
+            " (" + DescribeTextures(mesh, false) + ")");
+  else if (mesh.textured())
+    Summary("texture: " + DescribeTextures(mesh));
   if (!orientation.fixed.empty()) Summary("orientation: " + orientation.fixed);
   if (!orientation.warning.empty()) Warn(options.mesh + ": " + orientation.warning);
   ApplySceneEdits(mesh, options);
@@ -104,11 +155,11 @@ Mesh LoadSceneMesh(const SceneOptions& options, OutputFolder* folder) {
 
 void ApplySceneEdits(Mesh& mesh, const SceneOptions& options) {
   if (options.albedo) SetUniformAlbedo(mesh, glm::vec3(*options.albedo));
-  if (options.material.glossy) {  // before any long work: the mesh's own albedo with KS
+  if (options.material.glossy && mesh.textured()) {
+    FitTexturesBesideCoat(mesh, options.material, options.mesh);
+  } else if (options.material.glossy) {  // before any long work: the mesh's own albedo with KS
     float brightest = 0.0f;
     for (const glm::vec3& a : mesh.albedo) brightest = std::max({brightest, a.x, a.y, a.z});
-    for (const auto& texture : mesh.textures)
-      for (const glm::vec3& a : texture->level(0).pixels) brightest = std::max({brightest, a.x, a.y, a.z});
     CheckMaterialEnergy(options.material, brightest,
                         options.albedo ? "--albedo" : options.mesh.empty() ? "the demo scene" : "the brightest Kd of " + options.mesh);
   }

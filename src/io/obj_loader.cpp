@@ -119,7 +119,7 @@ LoadedMesh LoadObj(const std::string& path, const std::string& texture) {
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
   std::vector<tinyobj::material_t> materials;
-  MaterialLibraries libraries(path);
+  MaterialLibraries libraries(path, scan.mtllib_lines);
   std::string raw_warnings, raw_errors;
   {
     SlicedText buffer(text, [&](std::size_t n) { progress.Advance(n * kParseWeight); });
@@ -139,6 +139,7 @@ LoadedMesh LoadObj(const std::string& path, const std::string& texture) {
   if (texture.empty())  // --texture replaces every material's colour: none is missing then
     WarnMissingMaterials(path, scan.faces_by_material, materials, libraries, not_found, out.report.warnings);
   const std::vector<glm::vec3> albedos = MaterialAlbedos(materials, path, out.report.warnings);
+  out.material_fields = FindMaterialFields(libraries, materials, scan.faces_by_material);
   auto albedo_of = [&](int id) {
     return id < 0 || static_cast<std::size_t>(id) >= albedos.size() ? glm::vec3(kDefaultAlbedo)
                                                                      : albedos[static_cast<std::size_t>(id)];
@@ -191,7 +192,8 @@ LoadedMesh LoadObj(const std::string& path, const std::string& texture) {
         for (int c = 0; c < 3; ++c) {
           const int t = idx[f * 3 + c].texcoord_index;
           has_uv = has_uv && t >= 0 && t < texcoord_count;
-          soup.uv.push_back(has_uv ? glm::vec2(attrib.texcoords[2 * t], attrib.texcoords[2 * t + 1]) : glm::vec2(0.f));
+          soup.uv.push_back(has_uv ? textures.MapUv(material, glm::vec2(attrib.texcoords[2 * t], attrib.texcoords[2 * t + 1]))
+                                   : glm::vec2(0.f));
         }
         soup.texture.push_back(textures.ForFace(material, has_uv));
       }
@@ -232,7 +234,7 @@ LoadedMesh LoadObj(const std::string& path, const std::string& texture) {
     out.mesh.textures = textures.TakeTextures();
     SetVertexAlbedoFromTextures(out.mesh);
     for (std::string& w : textures.Warnings()) out.report.warnings.push_back(std::move(w));
-    for (std::string& file : textures.Files()) out.files_read.push_back(std::move(file));
+    out.texture_files = textures.Files();
   }
   out.normal_from_file = std::move(welded.normal_from_file);
   if (out.mesh.triangles.empty())

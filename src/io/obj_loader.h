@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "geometry/mesh.h"
+#include "io/obj_materials.h"
 
 namespace prt {
 
@@ -44,6 +45,11 @@ struct LoadedMesh {
   std::vector<std::uint8_t> normal_from_file;
   /// The files read: the OBJ, then the material libraries it named that could be read.
   std::vector<std::string> files_read;
+  /// The texture files read (obj_textures.h), apart from the OBJ and its libraries: --albedo
+  /// replaces them in the frames although they were read.
+  std::vector<std::string> texture_files;
+  /// What the libraries wrote beyond the colour, for the run summary (obj_materials.h).
+  MaterialFields material_fields;
 };
 
 /// Corners without a file normal closer than this fraction of the bounding-box diagonal are one

@@ -1,5 +1,6 @@
 #include "io/obj_materials.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <glm/common.hpp>
 
 #include "geometry/mesh_ops.h"
+#include "material/material.h"
 
 #include "core/text.h"
 
@@ -26,20 +28,36 @@ std::string Join(const std::vector<std::string>& items, const char* last) {
 
 }  // namespace
 
-MaterialLibraries::MaterialLibraries(const std::string& obj_path)
-    : folder_(fs::path(obj_path).parent_path().string()) {}
+MaterialLibraries::MaterialLibraries(const std::string& obj_path, std::vector<std::string> mtllib_lines)
+    : folder_(fs::path(obj_path).parent_path().string()), mtllib_lines_(std::move(mtllib_lines)) {}
 
 bool MaterialLibraries::operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                                    std::map<std::string, int>* names, std::string* /*warn*/, std::string* err) {
   if (name.empty()) return false;  // tinyobjloader's split of "mtllib a.mtl " ends with ""
+  // The first word of a line of several: the whole line may be one name with spaces.
+  for (const std::string& whole : mtllib_lines_)
+    if (whole.size() > name.size() && whole.compare(0, name.size(), name) == 0 &&
+        (whole[name.size()] == ' ' || whole[name.size()] == '\t') && Read(whole, materials, names, err, true))
+      return true;
+  return Read(name, materials, names, err, false);
+}
+
+bool MaterialLibraries::Read(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                             std::map<std::string, int>* names, std::string* err, bool quiet_if_missing) {
   const fs::path path = fs::path(folder_) / name;
   std::error_code ec;
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
   if (in && !fs::is_directory(path, ec)) text << in.rdbuf();
   if (!in || fs::is_directory(path, ec) || in.bad()) {
-    unread_.push_back(name + (fs::exists(path, ec) ? " could not be read" : " was not found"));
+    if (!quiet_if_missing) unread_.push_back(name + (fs::exists(path, ec) ? " could not be read" : " was not found"));
     return false;
+  }
+  std::istringstream words(text.str());
+  for (std::string line; std::getline(words, line);) {
+    std::istringstream fields(line);
+    std::string keyword;
+    if (fields >> keyword && keyword[0] != '#') keywords_.insert(keyword);
   }
   std::istringstream stream(text.str());
   std::string remarks;
@@ -92,6 +110,54 @@ void WarnMissingMaterials(const std::string& path, const std::map<std::string, s
     warnings.push_back(path + ": material '" + name + "' is not defined" + where + "; " +
                        (faces == 1 ? "its 1 face uses " : "its " + std::to_string(faces) + " faces use ") + albedo);
   }
+}
+
+MaterialFields FindMaterialFields(const MaterialLibraries& libraries, const std::vector<tinyobj::material_t>& materials,
+                                  const std::map<std::string, std::size_t>& faces_by_material) {
+  MaterialFields out;
+  out.keywords = libraries.keywords();
+  std::map<std::string, std::size_t> last_definition;
+  for (std::size_t m = 0; m < materials.size(); ++m) last_definition[materials[m].name] = m;
+  std::size_t most = 0;
+  for (const auto& [name, faces] : faces_by_material) {
+    const auto it = last_definition.find(name);
+    if (it == last_definition.end() || faces <= most) continue;
+    const auto& m = materials[it->second];
+    const glm::vec3 ks(m.specular[0], m.specular[1], m.specular[2]);
+    if (!(std::max({ks.x, ks.y, ks.z}) > 0.0f) || !std::isfinite(ks.x + ks.y + ks.z + m.shininess)) continue;
+    most = faces, out.gloss_material = name, out.ks = ks, out.ns = m.shininess;
+  }
+  return out;
+}
+
+std::string DescribeMaterialFields(const MaterialFields& fields, const MaterialUse& use) {
+  if (fields.keywords.empty()) return {};
+  std::vector<std::string> used, ignored;
+  for (const std::string& k : fields.keywords) {
+    if (k == "newmtl") continue;
+    const bool colour = k == "Kd" || k == "map_Kd";
+    if (colour && !use.colour_replaced && !(k == "map_Kd" && use.texture_replaced)) used.push_back(k);
+    else if (colour) ignored.push_back(k + (use.colour_replaced ? " (--albedo)" : " (--texture)"));
+    else ignored.push_back(k);
+  }
+  std::string out = "used " + (used.empty() ? std::string("none") : Join(used, ", "));
+  if (!ignored.empty()) out += "; ignored " + Join(ignored, ", ");
+  // The gloss the file describes, as the nearest --material (the same exponent and weight).
+  if (use.glossy || fields.gloss_material.empty() || !fields.keywords.count("Ns")) return out;
+  const int n = static_cast<int>(std::lround(std::clamp(double(fields.ns), double(kMinPhongExponent),
+                                                        double(kMaxPhongExponent))));
+  double ks = std::clamp((fields.ks.x + fields.ks.y + fields.ks.z) / 3.0, 0.0, 1.0);
+  std::string fit;
+  if (!use.textured && use.brightest_kd + ks > 1.0) {
+    // Down to two decimals, less a rounding margin: Kd 0.8 read as a float is 0.800000012.
+    ks = std::floor((1.0 - use.brightest_kd) * 100.0 + 1e-4) / 100.0;
+    fit = ", KS lowered to fit beside the brightest Kd " + ShortestFloat(use.brightest_kd);
+  }
+  ks = std::round(ks * 100.0) / 100.0;
+  if (!(ks > 0.0)) return out;
+  return out + " (shading comes from --material: material '" + fields.gloss_material + "' (Ks " +
+         ShortestFloat(float((fields.ks.x + fields.ks.y + fields.ks.z) / 3.0)) + ", Ns " + ShortestFloat(fields.ns) +
+         ") as a glossy coat is --material phong:" + std::to_string(n) + "," + ShortestFloat(float(ks)) + fit + ")";
 }
 
 std::vector<std::string> TinyObjLines(const std::string& text) {

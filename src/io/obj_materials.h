@@ -3,10 +3,19 @@
 /// The OBJ loader's materials: reading the `mtllib` files for tinyobjloader [1], turning Kd into
 /// albedo, and saying in prt's words what is missing.
 ///
-/// Lookup. A `mtllib NAME ...` line names one or more libraries; tinyobjloader asks for them in
-/// turn and keeps the first that can be read. NAME is looked up in the OBJ's folder (an absolute
-/// NAME as it is), the way tinyobjloader's own file reader does with the folder as search path;
-/// here prt reads the file, so it knows which library was read, which was missing and why.
+/// Lookup. A `mtllib NAME ...` line names one or more libraries; tinyobjloader splits the line at
+/// its blanks, asks for the names in turn and keeps the first that can be read. Exporters also
+/// write one name with spaces (Blender names the library after the .blend: `mtllib My
+/// Scene.mtl`), so when asked for the first word of a line, the whole rest of the line is tried
+/// first, as map_Kd reads it. NAME is looked up in the OBJ's folder (an absolute NAME as it is),
+/// the way tinyobjloader's own file reader does with the folder as search path; here prt reads the
+/// file, so it knows which library was read, which was missing and why.
+///
+/// Fields. prt reads a material's colour (Kd, or the texture of map_Kd: obj_textures.h); the
+/// rest of what an exporter writes (Ka, Ks, Ns, d, illum, Ni, Ke, other maps) describes shading
+/// prt takes from --material instead. Each library's statement keywords are recorded so the run
+/// summary can say once which fields were used and which were ignored, and the gloss of the
+/// material most faces use (Ks and Ns) is offered as the nearest `--material phong:N,KS`.
 ///
 /// Definitions. The last definition of a name wins, over all libraries read (obj_loader.h says
 /// why); Kd outside [0, 1] is clamped, a non-finite Kd gives the default albedo.
@@ -31,8 +40,9 @@ namespace prt {
 /// Reads the material libraries of one OBJ file when tinyobjloader meets its `mtllib` lines.
 class MaterialLibraries : public tinyobj::MaterialReader {
  public:
-  /// `obj_path` is the OBJ file; libraries are looked up in its folder.
-  explicit MaterialLibraries(const std::string& obj_path);
+  /// `obj_path` is the OBJ file; libraries are looked up in its folder. `mtllib_lines`: the whole
+  /// rest of each of its `mtllib` lines (ObjScan), tried before their first word.
+  MaterialLibraries(const std::string& obj_path, std::vector<std::string> mtllib_lines);
 
   /// Called by tinyobjloader with one library name: reads it into `materials` and `names`,
   /// returns false when it does not exist or cannot be read.
@@ -50,11 +60,44 @@ class MaterialLibraries : public tinyobj::MaterialReader {
   const std::vector<std::string>& material_folders() const { return material_folders_; }
   /// tinyobjloader's remarks on the libraries' content, each prefixed with the library's path.
   const std::vector<std::string>& remarks() const { return remarks_; }
+  /// Every statement keyword the libraries read contain (`newmtl`, `Kd`, `Ns`, ...).
+  const std::set<std::string>& keywords() const { return keywords_; }
 
  private:
+  bool Read(const std::string& name, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* names,
+            std::string* err, bool quiet_if_missing);
+
   std::string folder_;
+  std::vector<std::string> mtllib_lines_;
   std::vector<std::string> read_, read_paths_, unread_, remarks_, material_folders_;
+  std::set<std::string> keywords_;
 };
+
+/// The material fields of a mesh's libraries, for the run summary (see the file comment).
+struct MaterialFields {
+  std::set<std::string> keywords;  ///< MaterialLibraries::keywords()
+  std::string gloss_material;      ///< the material with Ks > 0 that most faces use; empty if none
+  glm::vec3 ks{0.0f};              ///< its Ks
+  float ns = 0.0f;                 ///< its Ns (the Phong exponent of the MTL model)
+};
+
+/// The gloss of the most used material with a non-zero Ks (ties: the first defined).
+MaterialFields FindMaterialFields(const MaterialLibraries& libraries, const std::vector<tinyobj::material_t>& materials,
+                                  const std::map<std::string, std::size_t>& faces_by_material);
+
+/// How the run uses a mesh's material colours, for DescribeMaterialFields.
+struct MaterialUse {
+  bool colour_replaced = false;  ///< --albedo: neither Kd nor map_Kd is used
+  bool texture_replaced = false; ///< --texture: map_Kd is not used
+  bool glossy = false;           ///< --material already gives a glossy coat: no offer
+  float brightest_kd = 0.0f;     ///< untextured: the largest Kd channel, which KS must fit beside
+  bool textured = false;         ///< textured: the texels are fitted instead (scene_mesh.cpp)
+};
+
+/// One clause for the run summary, e.g. `used Kd, map_Kd; ignored Ka, Ks, Ns, d, illum (shading
+/// comes from --material: Ks 0.5 and Ns 200 of material 'coat' read as --material phong:200,0.5)`.
+/// Empty when no library was read.
+std::string DescribeMaterialFields(const MaterialFields& fields, const MaterialUse& use);
 
 /// Albedo for each tinyobjloader material id: the Kd of the LAST definition of its name,
 /// clamped to [0, 1] (with a warning naming the material), the default albedo where Kd is not

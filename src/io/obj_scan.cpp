@@ -114,6 +114,12 @@ class Pass {
       material_faces_ = &scan_.faces_by_material[std::string(n, m)];
     } else if (key == "mtllib" && std::all_of(k, e, IsBlank)) {
       Skip(s, e);  // no file name: nothing to read
+    } else if (key == "mtllib") {
+      const char* n = k;
+      const char* m = e;
+      while (n < m && IsBlank(*n)) ++n;
+      while (m > n && IsBlank(m[-1])) --m;
+      scan_.mtllib_lines.emplace_back(n, m);
     } else if (std::find(std::begin(kOtherStatements), std::end(kOtherStatements), key) ==
                std::end(kOtherStatements)) {
       Skip(s, e);

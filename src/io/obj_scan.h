@@ -20,7 +20,8 @@
 ///  - any other keyword that is not an OBJ statement, and `mtllib` without a file name, is
 ///    counted as not understood; comments and blank lines are fine.
 /// It also counts the faces of each `usemtl` name, so that a missing material is reported once,
-/// with the number of faces it leaves at the default albedo (obj_materials.h).
+/// with the number of faces it leaves at the default albedo (obj_materials.h), and keeps each
+/// `mtllib` line whole.
 ///
 /// Line numbers follow tinyobjloader's: a line ends at `\n`, `\r\n` or a lone `\r`.
 ///
@@ -33,6 +34,7 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace prt {
 
@@ -43,6 +45,10 @@ struct ObjScan {
   std::string first_skipped_text;      ///< cut to kQuotedLineLength bytes, printable
   /// Faces after each `usemtl NAME`, until the next `usemtl` (faces before the first have none).
   std::map<std::string, std::size_t> faces_by_material;
+  /// The whole rest of each `mtllib` line, blanks trimmed at both ends, in file order: a library
+  /// whose name has spaces (`mtllib My Scene.mtl`, as Blender names it after the .blend), which
+  /// tinyobjloader splits into names at the blanks (obj_materials.h).
+  std::vector<std::string> mtllib_lines;
 };
 
 /// Longest excerpt of a line quoted in messages, in bytes (then "...").

@@ -6,6 +6,59 @@
 #include "texture/load_texture.h"
 
 namespace prt {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool IsFile(const fs::path& p) {
+  std::error_code ec;
+  return fs::exists(p, ec) && !fs::is_directory(p, ec);
+}
+
+/// Where map_Kd `name` of a library in `folder` is (the file comment's order); `how` says which
+/// fallback found it (empty: as written). Empty when none exists.
+std::string FindTextureFile(const std::string& folder, const std::string& name, std::string& how) {
+  how.clear();
+  if (IsFile(fs::path(folder) / name)) return (fs::path(folder) / name).string();
+  std::string slashed = name;
+  for (char& c : slashed) c = c == '\\' ? '/' : c;
+  const std::size_t cut = slashed.find_last_of('/');
+  const std::string file = cut == std::string::npos ? slashed : slashed.substr(cut + 1);
+  const bool windows_drive = slashed.size() > 1 && slashed[1] == ':';
+  if (slashed != name && !windows_drive && IsFile(fs::path(folder) / slashed)) {
+    how = "with '\\' read as '/'";
+    return (fs::path(folder) / slashed).string();
+  }
+  if (file.empty()) return {};
+  if (IsFile(fs::path(folder) / file)) {
+    how = "beside the .mtl";
+    return (fs::path(folder) / file).string();
+  }
+  if (IsFile(fs::path(folder) / "textures" / file)) {
+    how = "in textures/ beside the .mtl";
+    return (fs::path(folder) / "textures" / file).string();
+  }
+  return {};
+}
+
+/// The names of the options of `o` that differ from their defaults and that prt ignores.
+std::vector<std::string> IgnoredOptions(const tinyobj::texture_option_t& o) {
+  std::vector<std::string> out;
+  if (o.clamp) out.push_back("-clamp");
+  if (o.brightness != 0 || o.contrast != 1) out.push_back("-mm");
+  if (o.sharpness != 1) out.push_back("-boost");
+  if (o.turbulence[0] != 0 || o.turbulence[1] != 0 || o.turbulence[2] != 0) out.push_back("-t");
+  if (o.texture_resolution != -1) out.push_back("-texres");
+  if (o.imfchan != 'm') out.push_back("-imfchan");
+  if (!o.blendu) out.push_back("-blendu");
+  if (!o.blendv) out.push_back("-blendv");
+  if (o.type != tinyobj::TEXTURE_TYPE_NONE) out.push_back("-type");
+  if (!o.colorspace.empty()) out.push_back("-colorspace");
+  if (o.bump_multiplier != 1) out.push_back("-bm");
+  return out;
+}
+
+}  // namespace
 
 ObjTextures::ObjTextures(const std::vector<tinyobj::material_t>& materials, const std::vector<std::string>& folders,
                          const std::vector<glm::vec3>& albedos, const std::string& override_path,
@@ -16,6 +69,40 @@ ObjTextures::ObjTextures(const std::vector<tinyobj::material_t>& materials, cons
   for (const auto& m : materials) last_definition_.push_back(last[m.name]);
   active_ = !override_.empty();
   for (int m : last_definition_) active_ = active_ || !materials[static_cast<std::size_t>(m)].diffuse_texname.empty();
+  if (override_.empty()) WarnIgnoredOptions();
+}
+
+void ObjTextures::WarnIgnoredOptions() {
+  std::string list;
+  for (std::size_t m = 0; m < materials_.size(); ++m) {
+    if (last_definition_[m] != static_cast<int>(m) || materials_[m].diffuse_texname.empty()) continue;
+    const std::vector<std::string> ignored = IgnoredOptions(materials_[m].diffuse_texopt);
+    if (ignored.empty()) continue;
+    std::string names;
+    for (const std::string& o : ignored) names += (names.empty() ? "" : " ") + o;
+    list += (list.empty() ? "" : ", ") + names + " of material '" + materials_[m].name + "'";
+  }
+  if (!list.empty())
+    warnings_.push_back(obj_path_ + ": map_Kd options ignored (prt reads -s and -o): " + list);
+}
+
+glm::vec2 ObjTextures::MapUv(int id, glm::vec2 uv) const {
+  if (!override_.empty() || id < 0 || static_cast<std::size_t>(id) >= materials_.size()) return uv;
+  const auto& o = materials_[static_cast<std::size_t>(last_definition_[static_cast<std::size_t>(id)])].diffuse_texopt;
+  return glm::vec2(o.scale[0] * uv.x + o.origin_offset[0], o.scale[1] * uv.y + o.origin_offset[1]);
+}
+
+const std::string& ObjTextures::FileOf(int m) {
+  const auto [it, inserted] = file_of_.emplace(m, std::string());
+  if (!inserted) return it->second;
+  const auto& material = materials_[static_cast<std::size_t>(m)];
+  std::string how;
+  it->second = FindTextureFile(folders_[static_cast<std::size_t>(m)], material.diffuse_texname, how);
+  if (!it->second.empty() && !how.empty())
+    warnings_.push_back(obj_path_ + ": texture '" + material.diffuse_texname + "' of material '" + material.name +
+                        "' is not at that path; using " + fs::path(it->second).filename().string() + " " + how +
+                        " (" + it->second + ")");
+  return it->second;
 }
 
 std::uint32_t ObjTextures::Add(std::shared_ptr<const Texture> texture) {
@@ -37,12 +124,10 @@ std::uint32_t ObjTextures::ForFace(int id, bool has_uv) {
   // The file this face's texture comes from, if any.
   std::string path = override_;
   if (path.empty() && m >= 0 && !materials_[static_cast<std::size_t>(m)].diffuse_texname.empty()) {
-    namespace fs = std::filesystem;
-    const std::string& name = materials_[static_cast<std::size_t>(m)].diffuse_texname;
-    path = (fs::path(folders_[static_cast<std::size_t>(m)]) / name).string();
-    std::error_code ec;
-    if (!fs::exists(path, ec)) {
-      ++missing_[path + "' of material '" + material];
+    path = FileOf(m);
+    if (path.empty()) {
+      const std::string& name = materials_[static_cast<std::size_t>(m)].diffuse_texname;
+      ++missing_[(fs::path(folders_[static_cast<std::size_t>(m)]) / name).string() + "' of material '" + material];
       return Solid(kd, "Kd of material " + material);
     }
   }
@@ -65,7 +150,8 @@ std::uint32_t ObjTextures::ForFace(int id, bool has_uv) {
 std::vector<std::string> ObjTextures::Warnings() const {
   std::vector<std::string> out = warnings_;
   for (const auto& [what, faces] : missing_)
-    out.push_back(obj_path_ + ": texture '" + what + "' was not found; its " + std::to_string(faces) +
+    out.push_back(obj_path_ + ": texture '" + what + "' was not found (nor its file name beside the .mtl or in " +
+                  "textures/ there); its " + std::to_string(faces) +
                   (faces == 1 ? " face uses" : " faces use") + " the material's Kd");
   if (faces_without_uv_ > 0)
     out.push_back(obj_path_ + ": " + std::to_string(faces_without_uv_) +

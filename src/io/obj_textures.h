@@ -13,6 +13,19 @@
 /// corner) a 1 x 1 texture of the texture's mean, counted in one warning. A map_Kd file that does
 /// not exist is a warning (its faces keep Kd, as a missing material keeps the default); one that
 /// exists but cannot be decoded is an error. Each file is read once however many materials name it.
+///
+/// Where a map_Kd file is found. Exporters write the path the artist's machine had: an absolute
+/// `C:\Users\art\tex\checker.png` or `/home/x/tex/checker.png`, or a relative path with `\`
+/// separators. As most viewers do, the name is tried as written (relative to the .mtl's folder),
+/// then with `\` read as a separator, then its file name beside the .mtl, then in a `textures/`
+/// folder beside the .mtl; a file found by a fallback is named in one warning per map.
+///
+/// Options. `map_Kd -s u v w -o u v w FILE` scales and offsets the texture coordinates,
+/// (u, v) -> (s_u u + o_u, s_v v + o_v), as three.js's MTLLoader (repeat and offset) and
+/// Blender's importer (mapping scale and location) read them; w has no meaning on a surface.
+/// tinyobjloader parses the options apart from the file name. The other options (-clamp, -mm,
+/// -boost, -t, -texres, -imfchan, -blendu, -blendv, -type, -colorspace, -bm) are ignored, said
+/// in one warning naming them and their materials.
 
 #include <cstdint>
 #include <map>
@@ -20,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <tiny_obj_loader.h>
 
@@ -39,6 +53,8 @@ class ObjTextures {
   /// The texture index of a face of material `id` (-1: none), whose corners all have texture
   /// coordinates when `has_uv`. Reads the texture on first use.
   std::uint32_t ForFace(int id, bool has_uv);
+  /// The texture coordinates of a face of material `id` as its map_Kd options place them.
+  glm::vec2 MapUv(int id, glm::vec2 uv) const;
   /// The textures ForFace numbered, and the warnings (missing files, faces without coordinates).
   std::vector<std::shared_ptr<const Texture>> TakeTextures() { return std::move(textures_); }
   std::vector<std::string> Warnings() const;
@@ -52,6 +68,9 @@ class ObjTextures {
  private:
   std::uint32_t Add(std::shared_ptr<const Texture> texture);
   std::uint32_t Solid(const glm::vec3& albedo, const std::string& name);
+  /// The file material m's map_Kd names, found as the file comment says; empty if nowhere.
+  const std::string& FileOf(int m);
+  void WarnIgnoredOptions();
 
   const std::vector<tinyobj::material_t>& materials_;
   std::vector<std::string> folders_;
@@ -64,6 +83,7 @@ class ObjTextures {
   std::vector<std::shared_ptr<const Texture>> textures_;
   std::vector<std::string> warnings_;
   std::map<std::string, std::size_t> missing_;       ///< map_Kd path -> faces
+  std::map<int, std::string> file_of_;               ///< per material id (last definition): FileOf
   std::size_t faces_without_uv_ = 0;
 };
 

@@ -73,8 +73,8 @@ TEST_CASE("textured OBJ: map_Kd relative to the .mtl, a plain Kd beside it, and 
   CHECK(left.mean() == glm::vec3(1.f, 0.f, 0.f));
   CHECK(right.width() == 1);
   CHECK(right.mean() == glm::vec3(0.f, 0.f, 1.f));
-  CHECK(std::find(loaded.files_read.begin(), loaded.files_read.end(),
-                  (std::filesystem::path(obj).parent_path() / "mtl/textures/red.png").string()) != loaded.files_read.end());
+  CHECK(std::find(loaded.texture_files.begin(), loaded.texture_files.end(),
+                  (std::filesystem::path(obj).parent_path() / "mtl/textures/red.png").string()) != loaded.texture_files.end());
   // Vertex 1 (position 2 of the file, x = 1, z = 0) is a corner on both sides with its own vt.
   std::vector<glm::vec2> seen;
   for (std::size_t t = 0; t < m.triangle_count(); ++t)
