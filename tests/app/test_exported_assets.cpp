@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "core/atomic_file.h"
@@ -60,6 +61,9 @@ void CheckQuadrant(const Image8& frame, int q, const glm::ivec3& rgb) {
 }
 
 float Linear(std::uint8_t code) { return static_cast<float>(SrgbToLinear(code / 255.0)); }
+
+// --vertex-radiance writes 9 significant digits.
+constexpr float kRadianceFileRounding = 1e-6f;
 
 glm::ivec3 Code(const std::uint8_t* rgb) { return glm::ivec3(rgb[0], rgb[1], rgb[2]); }
 
@@ -212,6 +216,24 @@ TEST_SUITE("app") {
     int brightest = 0;
     for (std::uint8_t v : frame.rgb) brightest = std::max(brightest, int(v));
     CHECK(brightest <= EncodeSrgb8(0.5f));
+
+    // The vertices' albedo (bounces, --vertex-radiance, prt reference) is rebuilt from the fitted
+    // texels: a white texture gives 0.7 + KS g toward the camera at each vertex, never above 1.
+    Image8 white_texels(4, 4);
+    std::fill(white_texels.rgb.begin(), white_texels.rgb.end(), std::uint8_t(255));
+    WritePng(dir + "/white.png", white_texels);
+    WriteFileAtomic(dir + "/coat.mtl", "newmtl coat\nKd 1 1 1\nmap_Kd white.png\n");
+    const test::RunResult white = RenderSquare(obj, dir + "/out_white", "--material phong:10,0.3 --vertex-radiance " +
+                                                                        test::Q(dir + "/white.txt"));
+    REQUIRE_MESSAGE(white.exit_code == 0, white.err);
+    std::ifstream rows(dir + "/white.txt");
+    std::size_t vertices = 0, values = 0;
+    rows >> vertices;
+    for (float v; rows >> v; ++values) {
+      CHECK(v <= 1.0f + kRadianceFileRounding);
+      CHECK(v >= (1 - kKs) + kKs * kLobeFurnaceLow);
+    }
+    CHECK(values == 6 * 3);  // two triangles, three corners, R G B
   }
 
   TEST_CASE("exported assets: textured mary renders glossy, the texture named in the energy warning" * test::NeedsSharedData()) {
