@@ -38,6 +38,16 @@ std::string FindTextureFile(const std::string& folder, const std::string& name, 
     how = "in textures/ beside the .mtl";
     return (fs::path(folder) / "textures" / file).string();
   }
+  // An option tinyobjloader does not know (`-foo 1 tex.png`) reaches here as part of the name:
+  // the longest tail after a blank that names a file is the file, the words before it ignored.
+  if (name[0] == '-')
+    for (std::size_t blank = name.find(' '); blank != std::string::npos; blank = name.find(' ', blank + 1)) {
+      const std::string tail = name.substr(blank + 1);
+      if (!tail.empty() && IsFile(fs::path(folder) / tail)) {
+        how = "after the unknown option '" + name.substr(0, blank) + "' (ignored)";
+        return (fs::path(folder) / tail).string();
+      }
+    }
   return {};
 }
 

@@ -25,7 +25,9 @@
 /// Blender's importer (mapping scale and location) read them; w has no meaning on a surface.
 /// tinyobjloader parses the options apart from the file name. The other options (-clamp, -mm,
 /// -boost, -t, -texres, -imfchan, -blendu, -blendv, -type, -colorspace, -bm) are ignored, said
-/// in one warning naming them and their materials.
+/// in one warning naming them and their materials. An option tinyobjloader does not know stays
+/// in the name it hands over (`-foo 1 tex.png`); the longest tail of it after a blank that names
+/// a file is taken, the words before it named as ignored.
 
 #include <cstdint>
 #include <map>

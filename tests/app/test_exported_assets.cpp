@@ -101,6 +101,7 @@ TEST_SUITE("app") {
                  {"/home/nobody/tex/quadrants.png", "using quadrants.png beside the .mtl"},
                  {"D:\\textures\\only_here.png", "using only_here.png in textures/ beside the .mtl"},
                  {"textures\\only_here.png", "using only_here.png with '\\' read as '/'"},
+                 {"-halo 2 quadrants.png", "using quadrants.png after the unknown option '-halo 2' (ignored)"},
                  {"quadrants.png", ""}};
     for (const Case& c : cases) {
       CAPTURE(c.map_kd);
