@@ -20,16 +20,17 @@ for v in light:view_light.png irradiance:view_irradiance.png transport:0:view_tr
   cp "$tmp/demo/frame_0000.png" "$out/${v##*:}"
 done
 # Glossy transfer: a highlight sliding as the camera orbits (transfer matrices), then the lobe
-# term alone (--view glossy) for a few exponents N and band limits lmax.
+# term alone (--view glossy, with the raw light: the ringing is what they show) for a few
+# exponents N and band limits lmax.
 glossy="--material phong:100,0.5 --albedo 0.3,0.3,0.3 --exposure 0 --size 320x240"
 "$prt" render $glossy --lmax 10 --orbit 60 --turns 0 --frames 3 --out "$tmp/orbit" --quiet
 for i in 0 1 2; do cp "$tmp/orbit/frame_000$i.png" "$out/glossy_orbit_$i.png"; done
 for lmax in 2 6 12; do
-  "$prt" render $glossy --lmax $lmax --view glossy --frames 1 --out "$tmp/lmax$lmax" --quiet
+  "$prt" render $glossy --lmax $lmax --view glossy --window none --frames 1 --out "$tmp/lmax$lmax" --quiet
   cp "$tmp/lmax$lmax/frame_0000.png" "$out/glossy_n100_lmax$lmax.png"
 done
 for n in 10 1000; do
-  "$prt" render ${glossy/phong:100/phong:$n} --lmax 12 --view glossy --frames 1 --out "$tmp/n$n" --quiet
+  "$prt" render ${glossy/phong:100/phong:$n} --lmax 12 --view glossy --window none --frames 1 --out "$tmp/n$n" --quiet
   cp "$tmp/n$n/frame_0000.png" "$out/glossy_n${n}_lmax12.png"
 done
 echo "wrote $(ls "$out" | wc -l) images to $out"

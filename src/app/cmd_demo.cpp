@@ -9,6 +9,7 @@ SceneOptions DemoScene() {
   s.transport = "interreflection";
   s.bounces = 1;
   s.lmax = 4;  // samples: the sample rule's default for lmax 4, 1024
+  s.window = kDefaultWindow;
   return s;
 }
 

@@ -6,6 +6,7 @@
 
 #include <unistd.h>
 
+#include "app/seen_ringing.h"
 #include "core/atomic_file.h"  // WriteProblem
 #include "core/error.h"
 #include "core/log.h"
@@ -70,6 +71,31 @@ std::string GlossyLine(const TransportOptions& o, const TransportReport& r, cons
   return line + Formatted(" [%.3f s]", r.glossy_seconds);
 }
 
+/// Applies --window auto to `light`; its run-summary clause (sh/dering.h).
+std::string ApplyAutoWindow(ShRgb& light) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const AutoWindow choice = ChooseAutoWindow(light);
+  ApplyWeights(choice.weights, light);
+  return choice.Describe() + Formatted(" [%.3f s]", SecondsSince(t0));
+}
+
+/// kDefaultWindow for the frames of `view`: the auto window when they would show the light's
+/// ringing (FindSeenRinging), else none; the run-summary clause ("" when nothing was checked).
+std::string DefaultWindow(ShRgb& light, const SceneOptions& options, const std::string& view) {
+  // The wavelet basis keeps the direct light in Haar wavelets; its SH light feeds only the
+  // bounces, which keep the raw light. (kMaxLmax <= kMaxAutoWindowLmax: auto takes any lmax here.)
+  static_assert(kMaxLmax <= kMaxAutoWindowLmax);
+  if (options.basis != "sh") return "";
+  const auto t0 = std::chrono::steady_clock::now();
+  const SeenRinging seen = FindSeenRinging(light, options.material, view);
+  if (seen.what.empty()) return "";  // --view albedo or transport shows no light
+  if (!seen.rings)
+    return "; no window needed (" + seen.what + " stays non-negative" + Formatted(") [%.3f s]", SecondsSince(t0));
+  const double share = seen.peak > 0 ? seen.lowest / seen.peak : 0.0;
+  return "; window auto (default: " + seen.what + Formatted(" goes down to %.3g, %.3g%% of its peak", seen.lowest, 100.0 * share) +
+         "; --window none keeps the raw light): " + ApplyAutoWindow(light);
+}
+
 }  // namespace
 
 std::unique_ptr<Environment> LoadSceneEnvironment(const SceneOptions& options, OutputFolder* folder) {
@@ -81,17 +107,16 @@ std::unique_ptr<Environment> LoadSceneEnvironment(const SceneOptions& options, O
   return env;
 }
 
-ShRgb ComputeLight(const Environment& env, const SceneOptions& options) {
+ShRgb ComputeLight(const Environment& env, const SceneOptions& options, const std::string& view) {
   const auto t0 = std::chrono::steady_clock::now();
   ShRgb light = ProjectLight(env, options.lmax);
   std::string line = "light: lmax " + std::to_string(options.lmax) + " (" +
                      std::to_string(CoeffCount(options.lmax)) + " coefficients)" +
                      Formatted(" [%.3f s]", SecondsSince(t0));
-  if (options.window == "auto") {
-    const auto t1 = std::chrono::steady_clock::now();
-    const AutoWindow choice = ChooseAutoWindow(light);
-    ApplyWeights(choice.weights, light);
-    line += "; window auto: " + choice.Describe() + Formatted(" [%.3f s]", SecondsSince(t1));
+  if (options.window == kDefaultWindow) {
+    line += DefaultWindow(light, options, view);
+  } else if (options.window == "auto") {
+    line += "; window auto: " + ApplyAutoWindow(light);
   } else if (options.window != "none") {
     ApplyWindow(WindowFromName(options.window), light);
     line += "; window " + options.window;

@@ -43,7 +43,10 @@ void ReportAutoExposure(double ev, const std::string& what);
 
 /// The environment's SH coefficients for bands 0..options.lmax, windowed as asked
 /// (`auto` picks the mildest window that keeps the reconstruction non-negative and says why).
-ShRgb ComputeLight(const Environment& env, const SceneOptions& options);
+/// kDefaultWindow is resolved for the frames of `view` (app/seen_ringing.h): the auto window
+/// where they would show the light's ringing, said on the run summary with what went negative,
+/// else none; the wavelet basis keeps its SH bounce light unwindowed.
+ShRgb ComputeLight(const Environment& env, const SceneOptions& options, const std::string& view = "radiance");
 
 /// The mesh of `--mesh` (or the embedded demo scene): an inside-out mesh turned right way out
 /// where that is unambiguous (geometry/orientation.h), `--albedo` applied, triangles split by

@@ -60,7 +60,8 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
        "independent direction sets the vertices draw from, 1..1024: many give independent per-vertex noise, 1 "
        "gives smooth, correlated error",
        std::to_string(d.direction_sets)});
-  add({"--albedo", "R,G,B", "override the material colour, each channel in [0, 1]", albedo});
+  add({"--albedo", "R,G,B", "override the material colour, each channel in [0, 1] (on a textured mesh, its textures too)",
+       albedo});
   add({"--texture", "FILE",
        "one albedo texture for every face of --mesh, by its texture coordinates (png/jpg as sRGB, hdr/exr "
        "linear); it replaces the materials' Kd and map_Kd",
@@ -68,7 +69,8 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
   add({"--material", "M",
        "diffuse: f = albedo/pi | phong:N[,KS]: f = albedo/pi + KS (N+2)/(2 pi) max(0, r.s)^N, r the view direction "
        "mirrored about the normal, s the light direction, N an integer 1..1000, KS 0..1 (default 0.5); the "
-       "outgoing radiance is the integral of L V f max(0, n.s); albedo + KS must not exceed 1",
+       "outgoing radiance is the integral of L V f max(0, n.s); albedo + KS must not exceed 1 (a texture's "
+       "texels above 1 - KS are scaled down to it)",
        d.material.Name()});
   add({"--seed", "S", "random seed; the same seed gives the same bytes for any --threads", std::to_string(d.seed)});
   add({"--threads", "N", "worker threads, 1..1024; results do not depend on it",
@@ -79,8 +81,9 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
        ""});
   add({"--window", "W",
        "none | hann | lanczos | auto: SH windowing against ringing (auto: the least blurring window whose "
-       "reconstruction is non-negative)",
-       d.window});
+       "reconstruction is non-negative; render and demo choose it by default where the irradiance, a glossy "
+       "lobe's light or --view light would go negative)",
+       d.window == kDefaultWindow ? "auto where the frames would show ringing, else none" : d.window});
   add({"--max-edge", "L",
        "split triangles until no edge is longer than L world units (`2%`: 2 % of the bounding-box diagonal), so "
        "per-vertex transport can show shadows inside large triangles",
@@ -108,7 +111,8 @@ std::string DidYouMean(const std::string& path) {
 
 /// Refuses --mesh and --env values that name nothing or cannot be read, before any of them is
 /// loaded: the mesh file exists; a cubemap folder has its six faces, square and of one size (from
-/// their headers); a built-in's parameters parse. A path that does not exist is a failure (exit
+/// their headers); an image file is not one face of a cubemap (RefuseCubemapFace); a built-in's
+/// parameters parse. A path that does not exist is a failure (exit
 /// 1); a malformed built-in is a usage error (exit 2), an unknown one names the nearest.
 void CheckInputs(Args& args, const SceneOptions& o) {
   namespace fs = std::filesystem;
@@ -129,7 +133,10 @@ void CheckInputs(Args& args, const SceneOptions& o) {
     CheckCubemapFolder(o.env);
     return;
   }
-  if (fs::exists(o.env, ec)) return;  // an image file: its header is read when it is loaded
+  if (fs::exists(o.env, ec)) {
+    RefuseCubemapFace(o.env);  // an image file: its header is read when it is loaded
+    return;
+  }
   const std::string name = o.env.substr(0, o.env.find(':'));
   const auto& builtins = BuiltinEnvironmentNames();
   if (std::find(builtins.begin(), builtins.end(), name) == builtins.end()) {
@@ -261,7 +268,8 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
   }
   if (has("--threads")) o.threads = args.Int("--threads", d.threads, 1, 1024);
   if (has("--games202-faces") && args.Flag("--games202-faces")) o.layout = CubeLayout::kGames202;
-  if (has("--window")) o.window = args.Choice("--window", d.window, {"none", "hann", "lanczos", "auto"});
+  if (has("--window") && args.Has("--window"))  // not given: the default stays, kDefaultWindow included
+    o.window = args.Choice("--window", d.window, {"none", "hann", "lanczos", "auto"});
   if (has("--max-edge")) {
     if (const auto text = args.String("--max-edge")) {
       const bool relative = text->back() == '%';

@@ -19,6 +19,11 @@
 
 namespace prt {
 
+/// The `--window` of render and demo when none is given: auto where the frames would show the
+/// light's ringing, else none (app/seen_ringing.h), resolved by ComputeLight once the light is
+/// projected. Not accepted on the command line; precompute and light keep "none".
+inline const std::string kDefaultWindow = "default";
+
 struct SceneOptions {
   std::string mesh;                  ///< OBJ path; empty = the embedded demo scene
   std::string texture;               ///< --texture: one albedo texture for every face; empty = map_Kd
@@ -42,7 +47,7 @@ struct SceneOptions {
   std::uint64_t seed = 1;
   int threads = 0;                   ///< 0 = all cores
   CubeLayout layout = CubeLayout::kStandard;  ///< --games202-faces selects the course's
-  std::string window = "none";       ///< none | hann | lanczos | auto
+  std::string window = "none";       ///< none | hann | lanczos | auto, or kDefaultWindow (render, demo)
   bool lmax_auto = false;            ///< --lmax auto: lmax chosen by --tolerance (report_auto_lmax.h)
   double tolerance = 0.01;           ///< --tolerance: relative irradiance error for --lmax auto
   /// --max-edge: split triangles until no edge is longer than this (0: keep the mesh as it is);

@@ -1,6 +1,7 @@
 #include "env/cubemap.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 
@@ -172,14 +173,20 @@ std::unique_ptr<CubemapEnvironment> CubemapFromFunction(const std::function<glm:
 
 namespace {
 
-/// The one file folder/<name>.<ext> for a face; Error if none or several.
-std::string FindFace(const std::string& folder, const char* name) {
+/// Every file folder/<name>.<ext> with an extension a face may have.
+std::vector<std::string> FaceFiles(const std::string& folder, const char* name) {
   std::vector<std::string> found;
   for (const char* ext : {".jpg", ".jpeg", ".png", ".hdr", ".exr", ".JPG", ".PNG", ".HDR", ".EXR"}) {
     const fs::path p = fs::path(folder) / (std::string(name) + ext);
     std::error_code ec;
     if (fs::exists(p, ec)) found.push_back(p.string());
   }
+  return found;
+}
+
+/// The one file folder/<name>.<ext> for a face; Error if none or several.
+std::string FindFace(const std::string& folder, const char* name) {
+  const std::vector<std::string> found = FaceFiles(folder, name);
   if (found.empty())
     throw Error(folder + ": missing face '" + name +
                 "' (expected posx negx posy negy posz negz as .jpg, .png, .hdr or .exr)");
@@ -189,7 +196,29 @@ std::string FindFace(const std::string& folder, const char* name) {
   return found[0];
 }
 
+/// The index in kFaceNames of the face named `stem` in any case, or -1.
+int FaceIndex(std::string stem) {
+  for (char& c : stem) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (int k = 0; k < 6; ++k)
+    if (stem == kFaceNames[k]) return k;
+  return -1;
+}
+
 }  // namespace
+
+void RefuseCubemapFace(const std::string& path) {
+  const int face = FaceIndex(fs::path(path).stem().string());
+  if (face < 0) return;
+  std::string folder = fs::path(path).parent_path().string();
+  if (folder.empty()) folder = ".";
+  for (int k = 0; k < 6; ++k)
+    if (k != face && FaceFiles(folder, kFaceNames[k]).empty()) return;  // not beside its five siblings
+  int w = 0, h = 0;
+  ImageSize(path, w, h);
+  if (w != h) return;  // a panorama that happens to be named like a face
+  throw Error(path + ": is the " + kFaceNames[face] + " face of the cubemap in " + folder +
+              " (expected the folder: --env " + folder + ")");
+}
 
 std::array<std::string, 6> CheckCubemapFolder(const std::string& folder, int* face_size) {
   std::array<std::string, 6> paths;

@@ -62,6 +62,14 @@ std::unique_ptr<CubemapEnvironment> CubemapFromFunction(const std::function<glm:
 /// Throws Error as LoadCubemap does; decodes no pixel.
 std::array<std::string, 6> CheckCubemapFolder(const std::string& folder, int* face_size = nullptr);
 
+/// Refuses one face of a cubemap given where an image environment is expected: `path` is a
+/// square image whose file stem is a face name (kFaceNames, any case) and whose folder holds the
+/// five other faces as LoadCubemap finds them. Read as an equirectangular panorama it would be a
+/// stretched, wrong light, so this throws Error `<path>: is the posx face of the cubemap in
+/// <folder> (expected the folder: --env <folder>)`. Any other file (a lone square posx.png, a
+/// non-square one) passes; only the header of a face-named file with siblings is read.
+void RefuseCubemapFace(const std::string& path);
+
 /// Loads `folder/{posx,negx,posy,negy,posz,negz}.{jpg,png,hdr,exr}`. Throws Error naming the
 /// folder or face for a missing or ambiguous face, faces of different sizes, non-square or
 /// oversized faces (checked before decoding), or an unreadable image. LDR faces are decoded

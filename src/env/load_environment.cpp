@@ -72,7 +72,10 @@ BuiltinEnvironment ParseBuiltinEnvironment(const std::string& spec) {
 std::unique_ptr<Environment> LoadEnvironment(const std::string& spec, CubeLayout layout) {
   std::error_code ec;
   if (fs::is_directory(spec, ec)) return LoadCubemap(spec, layout);
-  if (fs::exists(spec, ec)) return LoadEquirect(spec);
+  if (fs::exists(spec, ec)) {
+    RefuseCubemapFace(spec);  // one face of a cubemap is no panorama
+    return LoadEquirect(spec);
+  }
   const BuiltinEnvironment b = ParseBuiltinEnvironment(spec);
   return b.name == "furnace" ? MakeFurnace(b.furnace) : MakeSky(b.sky);
 }

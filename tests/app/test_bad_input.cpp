@@ -14,6 +14,7 @@
 
 #include <unistd.h>
 
+#include "io/png_io.h"
 #include "tests/test_support.h"
 
 namespace prt {
@@ -330,6 +331,34 @@ TEST_SUITE("app") {
                   {"tetra_no_normals.obj", "no texture coordinates"});
     CHECK(!fs::exists(dir + "/out/frame_0000.png"));
     ExpectSuccess(render + " --mesh " + Q(dir + "/square.obj") + " --texture " + Q(Image("rgba8.png")));
+  }
+
+  TEST_CASE("bad input: one face of a cubemap as --env is refused before any work (pass the folder)") {
+    const std::string dir = test::ScratchDir("cube_face_env");
+    const std::string cube = dir + "/GraceCathedral", lone = dir + "/lone";
+    fs::create_directories(cube);
+    fs::create_directories(lone);
+    Image8 square(4, 4);  // grey
+    for (auto& v : square.rgb) v = 128;
+    for (const char* face : {"posx", "negx", "posy", "negy", "posz", "negz"}) WritePng(cube + "/" + face + ".png", square);
+    const std::string out = dir + "/out";
+    const std::string render = "render --frames 1 --size 8x8 --transport unshadowed --mesh " + Q(Obj("quad.obj")) +
+                               " --out " + Q(out) + " --env ";
+    const auto r = test::RunPrt(render + Q(cube + "/posx.png"));
+    CAPTURE(r.err);
+    CHECK(r.exit_code == 1);
+    // The one line says which face it is and the folder to pass instead.
+    CHECK(r.err == "prt: error: " + cube + "/posx.png: is the posx face of the cubemap in " + cube +
+                       " (expected the folder: --env " + cube + ")\n");
+    // Refused by the early input check: no output folder made, no mesh read (a check only at the
+    // environment's loading would come after both).
+    CHECK_FALSE(fs::exists(out));
+    ExpectFailure(Light(cube + "/negz.png"), 1, {"is the negz face", "--env " + cube});
+    // The folder itself is the cubemap; a lone square posx.png beside nothing is an image.
+    ExpectSuccess(Light(cube));
+    WritePng(lone + "/posx.png", square);
+    ExpectSuccess(render + Q(lone + "/posx.png"));
+    CHECK(fs::exists(out + "/frame_0000.png"));
   }
 }
 
