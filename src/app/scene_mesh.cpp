@@ -3,8 +3,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <memory>
 #include <limits>
+#include <memory>
 
 #include <glm/geometric.hpp>
 
@@ -14,12 +14,12 @@
 #include "core/log.h"
 #include "core/text.h"
 #include "geometry/mesh_ops.h"
+#include "geometry/mesh_texture.h"
 #include "geometry/orientation.h"
 #include "geometry/procedural.h"
 #include "geometry/subdivide.h"
 #include "io/obj_loader.h"
 #include "texture/albedo_limit.h"
-#include "geometry/mesh_texture.h"
 
 namespace prt {
 namespace {
@@ -63,8 +63,8 @@ void SplitLongTriangles(Mesh& mesh, const SceneOptions& options) {
 }
 
 // The textures of a textured mesh for its summary line: each file with its size and mip levels,
-// how many materials use a plain Kd, and how the frames shade them.
-std::string DescribeTextures(const Mesh& mesh, bool shading = true) {
+// and how many materials use a plain Kd.
+std::string DescribeTextures(const Mesh& mesh) {
   std::string files;
   std::size_t solid = 0;
   for (const auto& t : mesh.textures) {
@@ -76,8 +76,7 @@ std::string DescribeTextures(const Mesh& mesh, bool shading = true) {
              std::to_string(t->height()) + ", " + std::to_string(t->level_count()) + " mip levels)";
   }
   if (solid > 0) files += (files.empty() ? "" : "; ") + std::to_string(solid) + " plain colours (Kd)";
-  if (!shading) return files;
-  return files + "; frames shade each pixel as the texture's albedo times the interpolated irradiance";
+  return files;
 }
 
 // The materials' summary line: the libraries read, the fields used and ignored, the gloss offered.
@@ -104,12 +103,12 @@ void FitTexturesBesideCoat(Mesh& mesh, const Material& material, const std::stri
   std::string changed;
   for (auto& texture : mesh.textures) {
     std::size_t scaled = 0;
-    auto fitted = std::make_shared<const Texture>(LimitAlbedo(*texture, limit, scaled));
-    if (scaled == 0) continue;
+    std::optional<Texture> fitted = LimitAlbedo(*texture, limit, scaled);
+    if (!fitted) continue;
     const std::size_t texels = static_cast<std::size_t>(texture->width()) * static_cast<std::size_t>(texture->height());
     changed += (changed.empty() ? "" : ", ") + std::to_string(scaled) + " of " + std::to_string(texels) +
                (texels == 1 ? " texel of '" : " texels of '") + texture->name() + "'";
-    texture = std::move(fitted);
+    texture = std::make_shared<const Texture>(std::move(*fitted));
   }
   if (changed.empty()) return;
   SetVertexAlbedoFromTextures(mesh);
@@ -144,9 +143,10 @@ Mesh LoadSceneMesh(const SceneOptions& options, OutputFolder* folder) {
   if (!materials.empty()) Summary("materials: " + materials);
   if (mesh.textured() && options.albedo)
     Summary("texture: not used: --albedo " + VecText(*options.albedo) + " replaces the textures of " + options.mesh +
-            " (" + DescribeTextures(mesh, false) + ")");
+            " (" + DescribeTextures(mesh) + ")");
   else if (mesh.textured())
-    Summary("texture: " + DescribeTextures(mesh));
+    Summary("texture: " + DescribeTextures(mesh) +
+            "; frames shade each pixel as the texture's albedo times the interpolated irradiance");
   if (!orientation.fixed.empty()) Summary("orientation: " + orientation.fixed);
   if (!orientation.warning.empty()) Warn(options.mesh + ": " + orientation.warning);
   ApplySceneEdits(mesh, options);

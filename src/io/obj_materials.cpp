@@ -53,13 +53,15 @@ bool MaterialLibraries::Read(const std::string& name, std::vector<tinyobj::mater
     if (!quiet_if_missing) unread_.push_back(name + (fs::exists(path, ec) ? " could not be read" : " was not found"));
     return false;
   }
-  std::istringstream words(text.str());
-  for (std::string line; std::getline(words, line);) {
+  const std::string content = text.str();
+  std::istringstream stream(content);
+  for (std::string line; std::getline(stream, line);) {
     std::istringstream fields(line);
     std::string keyword;
     if (fields >> keyword && keyword[0] != '#') keywords_.insert(keyword);
   }
-  std::istringstream stream(text.str());
+  stream.clear();
+  stream.seekg(0);
   std::string remarks;
   tinyobj::LoadMtl(names, materials, &stream, &remarks, err);
   material_folders_.resize(materials->size(), path.parent_path().string());

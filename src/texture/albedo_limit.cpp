@@ -7,7 +7,13 @@
 
 namespace prt {
 
-Texture LimitAlbedo(const Texture& texture, float limit, std::size_t& scaled) {
+std::optional<Texture> LimitAlbedo(const Texture& texture, float limit, std::size_t& scaled) {
+  const auto above = [limit](const glm::vec3& p) { return std::max({p.x, p.y, p.z}) > limit; };
+  const auto& texels = texture.level(0).pixels;
+  if (std::none_of(texels.begin(), texels.end(), above)) {
+    scaled = 0;
+    return std::nullopt;
+  }
   ImageF image = texture.level(0);
   scaled = 0;
   for (glm::vec3& p : image.pixels) {

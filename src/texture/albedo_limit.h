@@ -12,13 +12,15 @@
 /// texels (texture/texture.h), so every filtered value obeys the limit too.
 
 #include <cstddef>
+#include <optional>
 
 #include "texture/texture.h"
 
 namespace prt {
 
 /// `texture` with every texel's largest channel at most `limit` (the rule above); `scaled` is
-/// set to the number of level-0 texels that were scaled. The name stays the original's.
-Texture LimitAlbedo(const Texture& texture, float limit, std::size_t& scaled);
+/// set to the number of level-0 texels that were scaled. The name stays the original's. Empty
+/// when no texel is above the limit: then the texture serves as it is, and no pyramid is rebuilt.
+std::optional<Texture> LimitAlbedo(const Texture& texture, float limit, std::size_t& scaled);
 
 }  // namespace prt

@@ -260,7 +260,9 @@ TEST_CASE("albedo limit: texels above the limit keep their hue at the limit, the
   ImageF image(2, 1);
   image.pixels = {glm::vec3(1.0f, 0.5f, 0.25f), glm::vec3(0.6f, 0.1f, 0.0f)};
   std::size_t scaled = 0;
-  const Texture fitted = LimitAlbedo(Texture(image, "t"), 0.7f, scaled);
+  const std::optional<Texture> limited = LimitAlbedo(Texture(image, "t"), 0.7f, scaled);
+  REQUIRE(limited.has_value());
+  const Texture& fitted = *limited;
   CHECK(scaled == 1);
   CHECK(fitted.level(0).pixels[0].x == doctest::Approx(0.7f));
   CHECK(fitted.level(0).pixels[0].y == doctest::Approx(0.35f));   // the ratios 1 : 0.5 : 0.25 stay
@@ -268,6 +270,9 @@ TEST_CASE("albedo limit: texels above the limit keep their hue at the limit, the
   CHECK(fitted.level(0).pixels[1] == glm::vec3(0.6f, 0.1f, 0.0f));
   CHECK(fitted.mean().x <= 0.7f);  // the pyramid is rebuilt from the fitted texels
   CHECK(fitted.name() == "t");
+  // Nothing above the limit: nothing to rebuild.
+  CHECK_FALSE(LimitAlbedo(fitted, 0.7f, scaled).has_value());
+  CHECK(scaled == 0);
 }
 }
 

@@ -2,6 +2,7 @@
 // Helpers for the environment tests: environments sampled from a function, in memory.
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -11,8 +12,26 @@
 #include "env/cubemap.h"
 #include "env/equirect.h"
 #include "io/hdr_writer.h"
+#include "io/png_io.h"
 
 namespace prt::test {
+
+/// Writes `path` (its folder created) as a w x h PNG of one grey level; returns `path`.
+inline std::string WriteGreyPng(const std::string& path, int w, int h, std::uint8_t level = 128) {
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  Image8 image(w, h);
+  for (auto& v : image.rgb) v = level;
+  WritePng(path, image);
+  return path;
+}
+
+/// Writes a cube map folder `dir` of six size^2 grey PNG faces (kFaceNames), leaving out the
+/// face named `skip`; returns `dir`.
+inline std::string WritePngCube(const std::string& dir, int size, const std::string& skip = "") {
+  for (const char* face : kFaceNames)
+    if (skip != face) WriteGreyPng(dir + "/" + face + ".png", size, size);
+  return dir;
+}
 
 using RadianceFn = std::function<glm::dvec3(const glm::dvec3&)>;
 

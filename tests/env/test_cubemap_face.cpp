@@ -10,7 +10,7 @@
 #include "env/cube_faces.h"
 #include "env/cubemap.h"
 #include "env/load_environment.h"
-#include "io/png_io.h"
+#include "tests/env/env_test_util.h"
 #include "tests/test_support.h"
 
 using namespace prt;
@@ -20,18 +20,11 @@ namespace {
 
 /// Writes dir/<name> as a grey width x height PNG; returns its path.
 std::string WriteImage(const std::string& dir, const std::string& name, int width, int height) {
-  fs::create_directories(dir);
-  Image8 image(width, height);
-  for (auto& v : image.rgb) v = 128;
-  WritePng(dir + "/" + name, image);
-  return dir + "/" + name;
+  return test::WriteGreyPng(dir + "/" + name, width, height);
 }
 
 /// Writes the six 4 x 4 faces of a cubemap folder `dir` as PNG files; returns `dir`.
-std::string WriteCubeFolder(const std::string& dir) {
-  for (const char* face : kFaceNames) WriteImage(dir, std::string(face) + ".png", 4, 4);
-  return dir;
-}
+std::string WriteCubeFolder(const std::string& dir) { return test::WritePngCube(dir, 4); }
 
 /// The message RefuseCubemapFace throws for `path`, or "" when it passes.
 std::string Refusal(const std::string& path) {

@@ -7,7 +7,6 @@
 #include <string>
 
 #include <glm/geometric.hpp>
-#include <stb_image_write.h>
 
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfRgbaFile.h>
@@ -27,18 +26,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Writes a w x h PNG of one grey level.
-void WritePngFace(const std::string& path, int w, int h, unsigned char level = 128) {
-  std::vector<unsigned char> px(3 * std::size_t(w) * h, level);
-  REQUIRE(stbi_write_png(path.c_str(), w, h, 3, px.data(), 3 * w));
-}
-
-/// A folder with six PNG faces of `size`; `skip` names a face to leave out.
+/// A scratch folder `name` with six PNG faces of `size`; `skip` names a face to leave out.
 std::string MakeCubeFolder(const std::string& name, int size, const std::string& skip = "") {
-  const std::string dir = test::ScratchDir(name);
-  for (const char* face : {"posx", "negx", "posy", "negy", "posz", "negz"})
-    if (skip != face) WritePngFace(dir + "/" + face + ".png", size, size);
-  return dir;
+  return test::WritePngCube(test::ScratchDir(name), size, skip);
 }
 
 /// Writes an EXR (half floats) with the given compression; `value(x, y)` gives every channel.
@@ -74,15 +64,15 @@ TEST_SUITE("env") {
     CHECK(ErrorOf(missing).find("missing face 'negy'") != std::string::npos);
 
     const std::string mixed = MakeCubeFolder("cube_mixed", 4);
-    WritePngFace(mixed + "/posz.png", 8, 8);
+    test::WriteGreyPng(mixed + "/posz.png", 8, 8);
     CHECK(ErrorOf(mixed).find("expected six faces of one size") != std::string::npos);
 
     const std::string oblong = MakeCubeFolder("cube_oblong", 4);
-    WritePngFace(oblong + "/negx.png", 4, 6);
+    test::WriteGreyPng(oblong + "/negx.png", 4, 6);
     CHECK(ErrorOf(oblong).find("expected a square face") != std::string::npos);
 
     const std::string twice = MakeCubeFolder("cube_twice", 4);
-    WritePngFace(twice + "/posx.jpg", 4, 4);  // stb writes a PNG, the name is what matters here
+    test::WriteGreyPng(twice + "/posx.jpg", 4, 4);  // a PNG inside, the name is what matters here
     CHECK(ErrorOf(twice).find("several formats") != std::string::npos);
 
     const std::string truncated = MakeCubeFolder("cube_truncated", 16);
