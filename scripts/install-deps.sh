@@ -8,8 +8,10 @@ packages=(g++ cmake make pkg-config
           zlib1g-dev libglm-dev libstb-dev libtinyobjloader-dev libnanoflann-dev doctest-dev libopenexr-dev)
 # `bash scripts/install-deps.sh test`: also what the tests run besides prt. The --video tests
 # encode .mp4 and .webm and decode every video with Debian's ffmpeg (prt itself needs it only for
-# those two formats, and says so when it is missing).
-[ "${1:-}" = test ] && packages+=(ffmpeg)
+# those two formats, and says so when it is missing). The report tests render the Markdown tables
+# prt writes with Debian's cmark-gfm, GitHub's own Markdown renderer, to check every row keeps its
+# columns (prt itself never runs it).
+[ "${1:-}" = test ] && packages+=(ffmpeg cmark-gfm)
 [ -n "${PRT_EXTRA_PACKAGES:-}" ] && read -r -a extra <<<"$PRT_EXTRA_PACKAGES" && packages+=("${extra[@]}")
 
 missing=()

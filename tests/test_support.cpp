@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -57,6 +58,14 @@ std::optional<std::string> Ffmpeg() {
 }
 
 doctest::skip NeedsFfmpeg() { return doctest::skip(!Ffmpeg().has_value()); }
+
+std::optional<std::string> CmarkGfm() { return FindProgram("cmark-gfm"); }
+
+doctest::skip NeedsCmarkGfm() {
+  const char* required = std::getenv("PRT_REQUIRE_CMARK_GFM");
+  const bool require = required && *required && std::strcmp(required, "0") != 0;
+  return doctest::skip(!require && !CmarkGfm().has_value());
+}
 
 std::string PrtBinary() {
   const char* binary = std::getenv("PRT_BINARY");

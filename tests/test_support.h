@@ -38,6 +38,15 @@ std::optional<std::string> Ffmpeg();
 /// runner, without it (PRT_REQUIRE_FFMPEG=1, which CI sets, makes its absence an error).
 doctest::skip NeedsFfmpeg();
 
+/// Debian's cmark-gfm program (GitHub's own Markdown renderer) if it is on PATH: the report
+/// tests render the Markdown tables prt writes with it (`cmark-gfm -e table`) and read the HTML.
+std::optional<std::string> CmarkGfm();
+
+/// The decorator of a test case that needs CmarkGfm(): skipped, and counted as skipped by the
+/// runner, without it. With PRT_REQUIRE_CMARK_GFM=1 (CI sets it) the test is never skipped, so
+/// the program's absence fails it (the test REQUIREs CmarkGfm()).
+doctest::skip NeedsCmarkGfm();
+
 /// The `prt` binary the command-line tests run: $PRT_BINARY if set, else the one built beside
 /// the tests (its path is compiled in, so the tests need no runner to find it).
 std::string PrtBinary();

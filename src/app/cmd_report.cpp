@@ -3,12 +3,14 @@
 // (stability.h).
 #include <algorithm>
 #include <cstdio>
+#include <set>
 
 #include "app/commands.h"
 #include "app/pipeline.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/text.h"
 #include "render/render_frames.h"
 #include "report/report_glossy.h"
 #include "report/report_image.h"
@@ -24,6 +26,29 @@ std::string Fmt(double v) {
   std::snprintf(b, sizeof b, "%.3g", v);
   return b;
 }
+
+/// What --stability reads: its cases are fixed, so every scene and sweep option would be ignored.
+const std::set<std::string> kStabilityOptions = {"--stability", "--out", "--replace", "--quiet", "--threads"};
+
+/// The report scene under a coat of `ks`: albedo + KS <= 1 kept per vertex as a textured mesh
+/// keeps it per texel (texture/albedo_limit.h): a vertex whose largest channel m is above
+/// 1 - KS is scaled by (1 - KS) / m, hue kept. Returns the summary line, empty if none was.
+std::string FitReportSceneToCoat(Mesh& mesh, double ks) {
+  const float limit = static_cast<float>(1.0 - ks);
+  std::size_t scaled = 0;
+  glm::vec3 example(0.f), fitted(0.f);
+  for (glm::vec3& a : mesh.albedo) {
+    const float m = std::max({a.x, a.y, a.z});
+    if (m <= limit) continue;
+    if (scaled++ == 0) example = a, fitted = a * (limit / m);
+    a *= limit / m;
+  }
+  if (!scaled) return "";
+  return Formatted("report: the report scene's albedo fitted to the coat: albedo + KS <= 1 kept per vertex, "
+                   "%zu vertices brighter than 1 - KS = %.3g scaled down to it with their hue (e.g. %.3g,%.3g,%.3g -> "
+                   "%.3g,%.3g,%.3g); --albedo sets another",
+                   scaled, double(limit), example.x, example.y, example.z, fitted.x, fitted.y, fitted.z);
+}
 }  // namespace
 
 CommandSpec ReportSpec() {
@@ -35,7 +60,8 @@ CommandSpec ReportSpec() {
                        "8; 4 with --quick"},
                       {"--stability", "",
                        "run the stiff and extreme cases instead: DIR/stability.csv and DIR/report.md, pass/fail on "
-                       "stderr; exit 1 if any fails",
+                       "stderr; exit 1 if any fails. Its cases are fixed: it takes --out, --replace, --quiet and "
+                       "--threads, and refuses every other option",
                        ""},
                       ReplaceOption(), QuietOption()}};
   OptionGroup scene = SceneOptionGroup(SceneOptions{}, {"--mesh", "--env", "--bounces", "--albedo", "--material",
@@ -46,7 +72,7 @@ CommandSpec ReportSpec() {
     if (o.name == "--basis")
       o.help = "sh | wavelet: wavelet adds a section comparing SH at lmax 2, 4, 8, 16 with Haar wavelets at 64 .. "
                "2048 terms (--quick: lmax 2, 4, 8 and 64, 256, 1024 terms), each one's error against prt reference "
-               "beside its memory and precompute time (DIR/basis_error.png too); --stability ignores it (its wavelet "
+               "beside its memory and precompute time (DIR/basis_error.png too); not with --stability (its wavelet "
                "cases run either way)";
   return {"prt report [scene options] --out DIR [--quick] [--stability]",
           "Error against run time: sweeps sampler (uniform, stratified, fibonacci) x directions per vertex (16 .. "
@@ -68,6 +94,9 @@ CommandSpec ReportSpec() {
 
 int RunReport(const std::vector<std::string>& tokens) {
   Args args("report", tokens, ReportSpec());
+  if (args.Has("--stability"))
+    args.RejectOutside(kStabilityOptions, "not used by report --stability, whose cases are fixed (it takes --out, "
+                                          "--replace, --quiet and --threads)");
   const SceneOptions scene = ReadSceneOptions(args);
   const auto out = args.String("--out");
   const bool quick = args.Flag("--quick");
@@ -106,10 +135,11 @@ int RunReport(const std::vector<std::string>& tokens) {
   std::string scene_name;
   if (scene.mesh.empty()) {
     mesh = MakeReportScene();
-    if (!scene.albedo) {  // ApplySceneEdits would name the demo scene
-      float brightest = 0.0f;
-      for (const glm::vec3& a : mesh.albedo) brightest = std::max({brightest, a.x, a.y, a.z});
-      CheckMaterialEnergy(scene.material, brightest, "the report scene's knot");
+    // Our own scene takes the coat: its albedo is fitted rather than the run refused (--albedo,
+    // checked against KS when read, replaces it).
+    if (!scene.albedo && scene.material.glossy) {
+      const std::string fitted = FitReportSceneToCoat(mesh, scene.material.ks);
+      if (!fitted.empty()) Summary(fitted);
     }
     ApplySceneEdits(mesh, scene);
     scene_name = "report scene (torus knot 128x16 on a 24x24 plane)";

@@ -77,6 +77,7 @@ Transport ComputeTraced(const Mesh& mesh, const TransportOptions& options, Trans
   const bool keep_hits = bounces || (options.material.glossy && options.matrices);
   DirectResult direct = ComputeDirect(mesh, bvh, plan, options.lmax, keep_hits);
   r.rays = direct.rays;
+  r.basis_evaluations = direct.basis_evaluations;
   for (std::size_t v = 0; v < counted; ++v) r.closed_form_vertices += direct.unoccluded[v];
   r.direct_seconds = SecondsSince(t0);
 

@@ -125,7 +125,7 @@ void RunPass(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lm
   const int count = CoeffCount(lmax);
   const float scene_scale = bvh.SceneScale();
   const double weight = 4.0 / double(pool.size());  // (4 pi / N) * (1 / pi)
-  std::atomic<std::uint64_t> rays{0};
+  std::atomic<std::uint64_t> rays{0}, evaluations{0};
   Progress progress(what, vertices.size());
 
   // Any-hit rays: the directions of each set as three arrays, so that the horizon test of all
@@ -164,7 +164,7 @@ void RunPass(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lm
     std::vector<double> dots, table;
     std::vector<std::uint32_t> list;
     std::size_t table_set = std::numeric_limits<std::size_t>::max();
-    std::uint64_t local_rays = 0;
+    std::uint64_t local_rays = 0, local_evaluations = 0;
     for (std::size_t o = begin; o < end; ++o) {
       const std::size_t v = order[o];
       const std::size_t set = pool.SetOf(v);
@@ -187,12 +187,14 @@ void RunPass(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lm
             for (std::size_t i = 0; i < size; ++i)
               EvalBasis(lmax, glm::dvec3(xyz[i], xyz[size + i], xyz[2 * size + i]), table.data() + i * count);
             table_set = set;
+            local_evaluations += size;
           }
           SubtractBlocked(count, t.data(), weight, dots.data(), list.data(), blocked_above, table.data());
         } else {  // a table would be too large: each blocked direction's basis as it comes
           for (std::size_t j = 0; j < blocked_above; ++j) {
             const std::size_t i = list[j];
             EvalBasis(lmax, dirs[i], y.data());
+            ++local_evaluations;
             const double wc = weight * dots[i];
             for (int k = 0; k < count; ++k) t[k] -= wc * y[k];
           }
@@ -217,6 +219,7 @@ void RunPass(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lm
         if (!is_blocked) continue;
         any_blocked = true;
         EvalBasis(lmax, dirs[i], y.data());
+        ++local_evaluations;
         for (int k = 0; k < count; ++k) t[k] -= weight * c * y[k];
         const Hit& h = *hits[i];
         result.hits[v].push_back({h.triangle, h.u, h.v, static_cast<std::uint32_t>(i),
@@ -230,9 +233,11 @@ void RunPass(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lm
       std::copy(t.begin(), t.end(), result.transfer.begin() + v * count);
     }
     rays += local_rays;
+    evaluations += local_evaluations;
     progress.Advance(end - begin);
   });
   result.rays += rays;
+  result.basis_evaluations += evaluations;
 }
 
 }  // namespace

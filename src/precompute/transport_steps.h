@@ -46,6 +46,9 @@ struct DirectResult {
   std::vector<std::uint8_t> sees_sky;          ///< per vertex: some direction above it is open
   std::vector<std::uint8_t> unoccluded;        ///< per vertex: nothing blocked (the closed form)
   std::uint64_t rays = 0;
+  /// Directions whose basis was evaluated ((lmax+1)^2 values each): the blocked ones, or a
+  /// whole set at once where its table is built.
+  std::uint64_t basis_evaluations = 0;
 };
 
 /// Shadowed transfer of every vertex (control-variate estimator), each from the set of its pool

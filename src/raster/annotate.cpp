@@ -30,12 +30,18 @@ void FillRect(Image8& image, int x0, int y0, int x1, int y1, glm::vec3 color) {
 // The legend panel takes at most this fraction of the image width while the text can shrink.
 constexpr double kMaxLegendWidth = 0.5;
 
+// Quads stb_easy_font draws for one character at most ('X': 11, counted over all printable
+// ASCII), each 4 vertices of 16 bytes. stb's own "about 270 bytes a character" is an average:
+// a buffer sized by it cut the last stroke off a lone "8" (the lower left one), which then read
+// as a 9 on the glossy plot's lmax axis.
+constexpr std::size_t kMaxQuadsPerChar = 11, kQuadBytes = 64;
+
 // The ink rectangles of `text` at `scale`, relative to its top-left corner (stb_easy_font's
 // quads have whole-pixel corners).
 std::vector<PixelRect> Glyphs(const std::string& text, int scale) {
   std::vector<char> buffer(text.begin(), text.end());
   buffer.push_back('\0');
-  std::vector<unsigned char> quads(text.size() * 270 + 256);  // stb: about 270 bytes a character
+  std::vector<unsigned char> quads((text.size() + 1) * kMaxQuadsPerChar * kQuadBytes);
   unsigned char rgba[4] = {255, 255, 255, 255};
   const int n = stb_easy_font_print(0, 0, buffer.data(), rgba, quads.data(), static_cast<int>(quads.size()));
   std::vector<PixelRect> rects;

@@ -49,8 +49,12 @@ std::vector<double> AxisValues(const std::vector<PlotSeries>& series, bool use_x
   std::vector<double> values;
   for (const auto& s : series)
     for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i)
-      if (s.x[i] > 0 && s.y[i] > 0 && std::isfinite(s.x[i]) && std::isfinite(s.y[i]))
+      if (s.x[i] > 0 && s.y[i] > 0 && std::isfinite(s.x[i]) && std::isfinite(s.y[i])) {
         values.push_back(use_x ? s.x[i] : s.y[i]);
+        if (use_x && i < s.x_min.size() && i < s.x_max.size())
+          for (double v : {s.x_min[i], s.x_max[i]})
+            if (v > 0 && std::isfinite(v)) values.push_back(v);
+      }
   return values;
 }
 
@@ -73,7 +77,63 @@ bool Labelled(const LogRange& r, int m) {
   return m == 1 || (span < 100.0 && (m == 2 || m == 5)) || span < 3.0;
 }
 
+/// A marker of `shape` centred on (x, y), about 7 pixels across; hollow: its outline only.
+void Marker(Image8& im, double cx, double cy, PlotMarker shape, bool hollow, glm::vec3 c) {
+  const int x = static_cast<int>(std::lround(cx)), y = static_cast<int>(std::lround(cy));
+  constexpr int r = 3;
+  const auto inside = [shape](int dx, int dy, int rad) {
+    switch (shape) {
+      case PlotMarker::kSquare: return std::abs(dx) <= rad && std::abs(dy) <= rad;
+      case PlotMarker::kCircle: return dx * dx + dy * dy <= rad * rad + rad;
+      case PlotMarker::kTriangle: return dy <= rad && dy >= -rad && 2 * std::abs(dx) <= dy + rad + 1;
+      case PlotMarker::kDiamond: return std::abs(dx) + std::abs(dy) <= rad + 1;
+    }
+    return false;
+  };
+  for (int dy = -r - 1; dy <= r + 1; ++dy)
+    for (int dx = -r - 1; dx <= r + 1; ++dx) {
+      if (!inside(dx, dy, r)) continue;
+      const bool edge = !inside(dx - 1, dy, r) || !inside(dx + 1, dy, r) || !inside(dx, dy - 1, r) ||
+                        !inside(dx, dy + 1, r);
+      Put(im, x + dx, y + dy, hollow && !edge ? glm::vec3(1.f) : c);
+    }
+}
+
 }  // namespace
+
+std::vector<std::pair<double, std::string>> LogAxisLabels(const LogRange& r, double min_gap) {
+  const double l0 = std::log10(r.lo), span = std::log10(r.hi) - l0;
+  const auto pos = [&](double v) { return span > 0 ? (std::log10(v) - l0) / span : 0.0; };
+  std::vector<std::pair<double, std::string>> at;
+  ForEachTick(r, [&](int m, int e, double v) {
+    if (Labelled(r, m)) at.emplace_back(v, TickLabel(m, e));
+  });
+  // The two ends, where not crowding a label already there.
+  ForEachTick(r, [&](int m, int e, double v) {
+    const bool end = std::abs(v / r.lo - 1) < 1e-9 || std::abs(v / r.hi - 1) < 1e-9;
+    if (!end || Labelled(r, m)) return;
+    for (const auto& [w, text] : at)
+      if (std::abs(pos(w) - pos(v)) < min_gap) return;
+    at.emplace_back(v, TickLabel(m, e));
+  });
+  std::sort(at.begin(), at.end());
+  return at;
+}
+
+Image8 StackVertically(const std::vector<Image8>& panels) {
+  int width = 1, height = 0;
+  for (const Image8& p : panels) width = std::max(width, p.width), height += p.height;
+  Image8 out(width, std::max(height, 1));
+  std::fill(out.rgb.begin(), out.rgb.end(), std::uint8_t{255});
+  int top = 0;
+  for (const Image8& p : panels) {
+    for (int y = 0; y < p.height; ++y)
+      std::copy_n(p.rgb.begin() + 3 * static_cast<std::size_t>(y) * p.width, 3 * static_cast<std::size_t>(p.width),
+                  out.rgb.begin() + 3 * (static_cast<std::size_t>(top + y) * width));
+    top += p.height;
+  }
+  return out;
+}
 
 glm::vec3 PlotColor(int i) {
   static const glm::vec3 palette[10] = {{0.12f, 0.47f, 0.71f}, {1.00f, 0.50f, 0.05f}, {0.17f, 0.63f, 0.17f},
@@ -114,36 +174,21 @@ Image8 DrawLogLogPlot(const std::vector<PlotSeries>& series, const PlotOptions& 
   auto px = [&](double x) { return left + (std::log10(x) - xl) / (xh - xl) * (right - left); };
   auto py = [&](double y) { return bottom - (std::log10(y) - yl) / (yh - yl) * (bottom - top); };
 
-  // Grid, ticks and tick labels: every m 10^e inside the range, powers of ten darker. The two
-  // ends are labelled too where that does not crowd a neighbouring label.
-  const auto labels = [](const LogRange& r, const auto& pos, int min_gap) {
-    std::vector<std::pair<double, std::string>> at;  // (pixel, text)
-    ForEachTick(r, [&](int m, int e, double v) {
-      if (Labelled(r, m)) at.emplace_back(pos(v), TickLabel(m, e));
-    });
-    ForEachTick(r, [&](int m, int e, double v) {
-      const bool end = std::abs(v / r.lo - 1) < 1e-9 || std::abs(v / r.hi - 1) < 1e-9;
-      if (!end || Labelled(r, m)) return;
-      for (const auto& [p, text] : at)
-        if (std::abs(p - pos(v)) < min_gap) return;
-      at.emplace_back(pos(v), TickLabel(m, e));
-    });
-    return at;
-  };
+  // Grid, ticks and tick labels: every m 10^e inside the range, powers of ten darker.
   ForEachTick(xr, [&](int m, int, double v) {
     const int x = static_cast<int>(std::lround(px(v)));
     Rect(im, x, top, x + 1, bottom, m == 1 ? grey : glm::vec3(0.94f));
     Rect(im, x, bottom, x + 1, bottom + (m == 1 ? 7 : 4), black);
   });
-  for (const auto& [x, text] : labels(xr, px, 40))
-    DrawText(im, static_cast<int>(std::lround(x)) - TextWidth(text, 1) / 2, bottom + 10, text, black);
+  for (const auto& [v, text] : LogAxisLabels(xr, 40.0 / (right - left)))
+    DrawText(im, static_cast<int>(std::lround(px(v))) - TextWidth(text, 1) / 2, bottom + 10, text, black);
   ForEachTick(yr, [&](int m, int, double v) {
     const int y = static_cast<int>(std::lround(py(v)));
     Rect(im, left, y, right, y + 1, m == 1 ? grey : glm::vec3(0.94f));
     Rect(im, left - (m == 1 ? 7 : 4), y, left, y + 1, black);
   });
-  for (const auto& [y, text] : labels(yr, py, 14))
-    DrawText(im, left - 10 - TextWidth(text, 1), static_cast<int>(std::lround(y)) - 4, text, black);
+  for (const auto& [v, text] : LogAxisLabels(yr, 14.0 / (bottom - top)))
+    DrawText(im, left - 10 - TextWidth(text, 1), static_cast<int>(std::lround(py(v))) - 4, text, black);
   // Axes and titles.
   Rect(im, left, top, left + 1, bottom + 1, black);
   Rect(im, left, bottom, right + 1, bottom + 1, black);
@@ -151,7 +196,16 @@ Image8 DrawLogLogPlot(const std::vector<PlotSeries>& series, const PlotOptions& 
   DrawText(im, 6, top - 22, o.y_label, black, 2);
   DrawText(im, (left + right - TextWidth(o.title, 2)) / 2 + 60, 6, o.title, black, 2);
 
-  // Series: polylines with square markers.
+  // Series: range bars first, then polylines, then markers on top.
+  const auto shown = [](double x, double y) { return x > 0 && y > 0 && std::isfinite(x) && std::isfinite(y); };
+  for (const auto& s : series)
+    for (std::size_t i = 0; i < std::min({s.x.size(), s.y.size(), s.x_min.size(), s.x_max.size()}); ++i) {
+      if (!shown(s.x[i], s.y[i]) || !shown(s.x_min[i], s.y[i]) || !shown(s.x_max[i], s.y[i])) continue;
+      const double y = py(s.y[i]), x0 = px(s.x_min[i]), x1 = px(s.x_max[i]);
+      const int yi = static_cast<int>(std::lround(y));
+      Rect(im, static_cast<int>(std::lround(x0)), yi, static_cast<int>(std::lround(x1)) + 1, yi + 1, s.color);
+      for (double xe : {x0, x1}) Rect(im, static_cast<int>(std::lround(xe)), yi - 3, static_cast<int>(std::lround(xe)) + 1, yi + 4, s.color);
+    }
   for (const auto& s : series) {
     bool have_prev = false;
     double x0 = 0, y0 = 0;
@@ -162,17 +216,26 @@ Image8 DrawLogLogPlot(const std::vector<PlotSeries>& series, const PlotOptions& 
       }
       const double x = px(s.x[i]), y = py(s.y[i]);
       if (have_prev) Line(im, x0, y0, x, y, s.color, s.dashed);
-      Rect(im, int(x) - 2, int(y) - 2, int(x) + 3, int(y) + 3, s.color);
       x0 = x, y0 = y, have_prev = true;
     }
   }
+  for (const auto& s : series)
+    for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i)
+      if (shown(s.x[i], s.y[i])) Marker(im, px(s.x[i]), py(s.y[i]), s.marker, s.hollow, s.color);
 
-  // Legend: a short line and the label per series.
+  // Legend: a short line with the marker and the label per series, then the notes.
   int ly = top;
   for (const auto& s : series) {
     if (ly > im.height - 16) break;
     Line(im, right + 12, ly + 4, right + 36, ly + 4, s.color, s.dashed);
+    Marker(im, right + 24, ly + 5, s.marker, s.hollow, s.color);
     DrawText(im, right + 42, ly, s.label, black);
+    ly += 14;
+  }
+  ly += 8;
+  for (const std::string& note : o.notes) {
+    if (ly > im.height - 16) break;
+    DrawText(im, right + 12, ly, note, black);
     ly += 14;
   }
   return im;

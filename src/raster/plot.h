@@ -2,7 +2,10 @@
 /// \file
 /// A log-log line plot drawn by the program itself (no plotting library): white canvas, axes
 /// with a tick and label at every power of ten (and unlabelled minor ticks at 2..9 times it),
-/// axis titles, a title, one polyline with square markers per series, and a legend.
+/// axis titles, a title, one polyline with markers per series, and a legend. A series is told
+/// apart by its colour and its marker's shape (and may be dashed, or hollow-marked for points
+/// that stand for something else, e.g. a time borrowed from another run); a point may carry a
+/// horizontal range (its x's min and max), drawn as a bar with end caps.
 ///
 /// Data are mapped by u = (log10 x - log10 x_lo) / (log10 x_hi - log10 x_lo). The axis range is
 /// the data range widened only to the nearest ticks m 10^e (m = 1..9) outside it, so it begins
@@ -19,6 +22,7 @@
 ///     powers of ten).
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -27,16 +31,24 @@
 
 namespace prt {
 
+enum class PlotMarker { kSquare, kCircle, kTriangle, kDiamond };
+
 struct PlotSeries {
   std::string label;
   std::vector<double> x, y;  ///< same length
   glm::vec3 color{0.f};      ///< display RGB in [0, 1]
   bool dashed = false;
+  PlotMarker marker = PlotMarker::kSquare;
+  bool hollow = false;       ///< markers drawn as outlines
+  /// Empty, or one [x_min, x_max] per point: a horizontal bar through the marker.
+  std::vector<double> x_min, x_max;
 };
 
 struct PlotOptions {
   int width = 960, height = 640;
   std::string title, x_label, y_label;
+  /// Lines of text under the legend (what the markers mean, where a value comes from).
+  std::vector<std::string> notes;
 };
 
 /// The range [lo, hi] of a log axis holding `values` (those > 0 and finite; [1, 10] if none):
@@ -47,8 +59,18 @@ struct LogRange {
 };
 LogRange LogAxisRange(const std::vector<double>& values);
 
+/// The labelled ticks of a log axis over `range`, in increasing order: (value, text). Powers of
+/// ten always; 2 and 5 times them under two decades; every tick under a factor 3; and each end
+/// of the axis when its label would not crowd a neighbour's (`min_gap` in units of the axis,
+/// 0..1, measured in log10 of the value over log10 of the range).
+std::vector<std::pair<double, std::string>> LogAxisLabels(const LogRange& range, double min_gap);
+
 /// The plot of `series` (see above). Sizes below 200 x 150 are raised to it.
 Image8 DrawLogLogPlot(const std::vector<PlotSeries>& series, const PlotOptions& options);
+
+/// `panels` one above the other on a white canvas as wide as the widest (e.g. one plot per
+/// transport mode in one file).
+Image8 StackVertically(const std::vector<Image8>& panels);
 
 /// A distinguishable colour for series i (a fixed qualitative palette, repeating after 10).
 glm::vec3 PlotColor(int i);

@@ -5,6 +5,7 @@
 
 #include "core/text.h"
 #include "raster/plot.h"
+#include "report/markdown_table.h"
 #include "report/report_glossy.h"
 
 namespace prt {
@@ -38,9 +39,10 @@ std::string GlossyMarkdown(const GlossyStudy& d) {
                  "part's share of the shadowed radiance (RMS). The references' own error is their two halves' "
                  "estimate, relative to their RMS radiance.\n\n",
                  100.0 * kLobeTarget);
-  s += "| N | sqrt(N) | 90% energy | unshadowed: needed | needed / sqrt(N) | lowest lobe error (lmax) | shadowed: "
-       "needed | lowest lobe error (lmax) | lobe / radiance | reference seconds | reference own error |\n"
-       "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  s += MarkdownHeader({"N", "sqrt(N)", "90% energy", "unshadowed: needed", "needed / sqrt(N)",
+                       "lowest lobe error (lmax)", "shadowed: needed", "lowest lobe error (lmax)", "lobe / radiance",
+                       "reference seconds (unshadowed)", "reference seconds (shadowed)",
+                       "reference own error (unshadowed)", "reference own error (shadowed)"});
   const int top = d.vector_rows.empty() ? 0 : d.vector_rows.back().lmax;
   const auto needed = [top](const GlossyNeed& n) {
     return n.needed_lmax >= 0 ? std::to_string(n.needed_lmax) : "> " + std::to_string(top);
@@ -51,11 +53,11 @@ std::string GlossyMarkdown(const GlossyStudy& d) {
     const GlossyNeed &u = e.unshadowed, &h = e.shadowed;
     const std::string ratio = u.needed_lmax >= 0 ? Formatted("%.2f", u.needed_lmax / root) : "-";
     if (u.needed_lmax >= 0) ratios += (ratios.empty() ? "" : ", ") + ratio + Formatted(" at N = %d", e.exponent);
-    s += Formatted("| %d | %.3g | %d | ", e.exponent, root, e.share_lmax) + needed(u) + " | " + ratio + " | " +
-         Percent(u.best_lobe_error) + Formatted(" (%d) | ", u.best_lmax) + needed(h) + " | " + Percent(h.best_lobe_error) +
-         Formatted(" (%d) | ", h.best_lmax) + Percent(h.lobe_share) +
-         Formatted(" | %.2f + %.2f | ", u.reference_seconds, h.reference_seconds) + Percent(u.reference_rms_error) + ", " +
-         Percent(h.reference_rms_error) + " |\n";
+    s += MarkdownRow({std::to_string(e.exponent), Formatted("%.3g", root), std::to_string(e.share_lmax), needed(u), ratio,
+                      Percent(u.best_lobe_error) + Formatted(" (%d)", u.best_lmax), needed(h),
+                      Percent(h.best_lobe_error) + Formatted(" (%d)", h.best_lmax), Percent(h.lobe_share),
+                      Formatted("%.2f", u.reference_seconds), Formatted("%.2f", h.reference_seconds),
+                      Percent(u.reference_rms_error), Percent(h.reference_rms_error)});
   }
   s += "\nUnshadowed lmax needed / sqrt(N): " +
        (ratios.empty() ? std::string("no exponent reached the target within the sweep") : ratios) +
@@ -64,11 +66,12 @@ std::string GlossyMarkdown(const GlossyStudy& d) {
        "worse than no lobe at all (error above 100%): the ringing, blurred sun lights vertices the true highlight "
        "misses.\n\n";
 
-  s += "### Vector path: error and precompute time against lmax\n\n| mode | N | lmax | precompute seconds | total error "
-       "| lobe error | lobe energy in bands |\n|---|---|---|---|---|---|---|\n";
+  s += "### Vector path: error and precompute time against lmax\n\n" +
+       MarkdownHeader({"mode", "N", "lmax", "precompute seconds", "total error", "lobe error", "lobe energy in bands"});
   for (const auto& r : d.vector_rows)
-    s += Formatted("| %s | %d | %d | %.3g | ", TransportModeName(r.mode), r.exponent, r.lmax, r.seconds) +
-         Percent(r.total.relative) + " | " + Percent(r.lobe.relative) + " | " + Percent(r.band_share) + " |\n";
+    s += MarkdownRow({TransportModeName(r.mode), std::to_string(r.exponent), std::to_string(r.lmax),
+                      Formatted("%.3g", r.seconds), Percent(r.total.relative), Percent(r.lobe.relative),
+                      Percent(r.band_share)});
 
   s += "\n### Fixed-camera vector against transfer matrices (shadowed)\n\nThe vector G integrates the lobe against the "
        "full visibility and cosine and truncates only the light to lmax, so it is exact for the band-limited light; "
@@ -76,17 +79,18 @@ std::string GlossyMarkdown(const GlossyStudy& d) {
        "ringing incident light, and the two differ until the bands hold the lobe. Both share the diffuse transfer, "
        "so their difference is all in the lobe. `matrices vs vector`: the RMS difference of the rendered radiance "
        "relative to the vector path's RMS radiance (frame 0, same eye); `lobe parts`: the same for the lobe's part "
-       "alone. Matrix seconds are one run per lmax (the matrices do not depend on the lobe).\n\n| N | lmax | vector "
-       "total error | matrix total error | vector lobe error | matrix lobe error | matrices vs vector | lobe parts | "
-       "matrix seconds | matrix MiB |\n|---|---|---|---|---|---|---|---|---|---|\n";
+       "alone. Matrix seconds are one run per lmax (the matrices do not depend on the lobe).\n\n" +
+       MarkdownHeader({"N", "lmax", "vector total error", "matrix total error", "vector lobe error", "matrix lobe error",
+                       "matrices vs vector", "lobe parts", "matrix seconds", "matrix MiB"});
   std::map<std::pair<int, int>, const GlossyVectorRow*> vec;
   for (const auto& r : d.vector_rows)
     if (r.mode == TransportMode::kShadowed) vec[{r.exponent, r.lmax}] = &r;
   for (const auto& r : d.matrix_rows) {
     const GlossyVectorRow* v = vec.at({r.exponent, r.lmax});
-    s += Formatted("| %d | %d | ", r.exponent, r.lmax) + Percent(v->total.relative) + " | " + Percent(r.total.relative) +
-         " | " + Percent(v->lobe.relative) + " | " + Percent(r.lobe.relative) + " | " + Percent(r.vs_vector.relative) +
-         " | " + Percent(r.lobe_vs_vector.relative) + Formatted(" | %.3g | %.3g |\n", r.seconds, double(r.bytes) / 1048576.0);
+    s += MarkdownRow({std::to_string(r.exponent), std::to_string(r.lmax), Percent(v->total.relative),
+                      Percent(r.total.relative), Percent(v->lobe.relative), Percent(r.lobe.relative),
+                      Percent(r.vs_vector.relative), Percent(r.lobe_vs_vector.relative), Formatted("%.3g", r.seconds),
+                      Formatted("%.3g", double(r.bytes) / 1048576.0)});
   }
   s += "\nglossy_error_vs_lmax.png plots the lobe errors against lmax: per exponent, unshadowed vector (solid), "
        "shadowed vector (dashed) and shadowed matrices (light solid).\n";

@@ -9,6 +9,7 @@
 #include "precompute/light.h"
 #include "precompute/sample_rule.h"
 #include "precompute/shade.h"
+#include "report/markdown_table.h"
 #include "raster/exposure.h"
 #include "render/render_frames.h"
 #include "render/seen_vertices.h"
@@ -129,12 +130,14 @@ std::string NoiseMarkdown(const NoiseStudy& s) {
       "interleaved).\n\n",
       TransportModeName(s.config.mode), s.config.lmax, s.exposure, s.config.converged_samples, s.seen_vertices,
       s.vertices, s.config.repeats);
-  md += "| method | largest difference (levels) | pixels > 1 level | RMS error (seen vertices) | rays | seconds |\n";
-  md += "|---|---:|---:|---:|---:|---:|\n";
+  const MarkdownAlign right = MarkdownAlign::kRight;
+  md += MarkdownHeader({"method", "largest difference (levels)", "pixels > 1 level", "RMS error (seen vertices)", "rays",
+                        "seconds"},
+                       {MarkdownAlign::kDefault, right, right, right, right, right});
   for (const NoiseRow& r : s.rows)
-    md += Formatted("| %s | %d | %.3f%% | %.3f%% | %llu | %.3f |\n", r.method.name.c_str(), r.frame.max_abs,
-                    100.0 * PixelShare(r.frame.pixels_over_one, s.pixels), 100.0 * r.rms_error, static_cast<unsigned long long>(r.rays),
-                    r.seconds);
+    md += MarkdownRow({r.method.name, std::to_string(r.frame.max_abs),
+                       Formatted("%.3f%%", 100.0 * PixelShare(r.frame.pixels_over_one, s.pixels)),
+                       Formatted("%.3f%%", 100.0 * r.rms_error), std::to_string(r.rays), Formatted("%.3f", r.seconds)});
   return md + "\n";
 }
 

@@ -4,6 +4,7 @@
 
 #include "core/text.h"
 #include "precompute/sample_rule.h"
+#include "report/markdown_table.h"
 
 namespace prt {
 namespace {
@@ -49,24 +50,23 @@ std::string SampleRuleSection(const ReportData& d) {
     if (!base || by_lmax.empty()) continue;
     const Sampler sampler = SamplerFromName(key.second);
     const std::vector<int>& counts = by_lmax.begin()->second.samples;
-    s += "\n" + key.first + ", " + key.second + " (rule: " + SampleRuleText(sampler) + ")\n\n| lmax | truncation |";
-    for (int n : counts) s += " " + std::to_string(n) + " |";
-    s += " measured need | rule min | rule default |\n|---|---|";
-    for (std::size_t i = 0; i < counts.size(); ++i) s += "---|";
-    s += "---|---|---|\n";
+    std::vector<std::string> head = {"lmax", "truncation"};
+    for (int n : counts) head.push_back(std::to_string(n));
+    head.insert(head.end(), {"measured need", "rule min", "rule default"});
+    s += "\n" + key.first + ", " + key.second + " (rule: " + SampleRuleText(sampler) + ")\n\n" + MarkdownHeader(head);
     for (const auto& [lmax, column] : by_lmax) {
       if (lmax >= static_cast<int>(base->truncation.size())) continue;
       const double truncation = base->truncation[lmax];
-      s += "| " + std::to_string(lmax) + " | " + Percent(truncation) + " |";
-      for (double e : column.error) s += " " + Percent(e) + (e < truncation ? "*" : "") + " |";
+      std::vector<std::string> row = {std::to_string(lmax), Percent(truncation)};
+      for (double e : column.error) row.push_back(Percent(e) + (e < truncation ? "*" : ""));
       const int need = SmallestBelow(column.samples, column.error, truncation);
       // The sweep's smallest count already below: the need is at most that, not exactly it.
       const std::string need_text = !need                           ? "> " + std::to_string(column.samples.back())
                                     : need == column.samples.front() ? "<= " + std::to_string(need)
                                                                      : std::to_string(need);
-      s += " " + need_text + " | " +
-           std::to_string(MinimumSamples(lmax, sampler)) + " | " + std::to_string(DefaultSamples(lmax, sampler)) +
-           " |\n";
+      row.insert(row.end(), {need_text, std::to_string(MinimumSamples(lmax, sampler)),
+                             std::to_string(DefaultSamples(lmax, sampler))});
+      s += MarkdownRow(row);
     }
   }
   return s;

@@ -3,9 +3,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
+#include <memory>
 #include <limits>
 
 #include "core/log.h"
+#include "core/text.h"
 #include "env/cubemap.h"
 #include "geometry/mesh_ops.h"
 #include "geometry/procedural.h"
@@ -92,6 +95,20 @@ Transport TimedTransport(const Mesh& mesh, const TransportOptions& o, double& se
   return t;
 }
 
+bool TimesTrusted(const ReportData& d) {
+  return d.order_violations.empty() && LargestSpread(d).first <= kTrustedSpread;
+}
+
+std::pair<double, std::string> LargestSpread(const ReportData& d) {
+  std::pair<double, std::string> worst{0.0, ""};
+  for (const SweepRow& r : d.rows)
+    if (r.sampler != "closed-form" && r.lmax == r.timed_lmax && r.time.Spread() > worst.first)
+      worst = {r.time.Spread(), r.mode + " " + r.sampler + " " + std::to_string(r.directions) + " directions"};
+  for (const LightRow& l : d.light)
+    if (l.time.Spread() > worst.first) worst = {l.time.Spread(), "light projection, face " + std::to_string(l.face_size)};
+  return worst;
+}
+
 ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::string& env_spec,
                           const ReportConfig& c, const RenderOptions& picture) {
   ReportData data;
@@ -100,6 +117,25 @@ ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::s
   data.max_lmax = c.max_lmax;
   const ShRgb light = ProjectLight(env, c.max_lmax);
   const Camera camera = ChooseCamera(mesh, picture);
+  // What the round robin times at the end: one run of each configuration, and the rows (first,
+  // count) of data.rows its time goes to.
+  struct Job {
+    std::function<void()> run;
+    std::size_t first = 0, count = 0;
+  };
+  std::vector<Job> jobs;
+  const auto scored = [&](const TransportOptions& o, SweepRow row, const Transport* converged, const Scorer& scorer) {
+    TransportReport r;
+    const Transport t = ComputeTransport(mesh, o, &r);
+    row.directions = r.directions_per_vertex;
+    row.rays = r.rays;
+    row.basis_evaluations = r.basis_evaluations;
+    row.timed_lmax = c.max_lmax;
+    if (r.bvh_built) data.bvh_seconds = data.bvh_seconds > 0 ? std::min(data.bvh_seconds, r.bvh_seconds) : r.bvh_seconds;
+    const std::size_t first = data.rows.size();
+    scorer.Score(t, converged, row, c.max_lmax, data.rows);
+    jobs.push_back({[&mesh, o] { ComputeTransport(mesh, o, nullptr); }, first, data.rows.size() - first});
+  };
 
   std::vector<TransportMode> modes = {TransportMode::kUnshadowed};
   for (TransportMode m : c.modes)
@@ -136,21 +172,20 @@ ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::s
       SweepRow row;
       row.mode = base.mode;
       row.sampler = "closed-form";
-      const Transport t = TimedTransport(mesh, to, row.seconds, row.directions);
-      scorer.Score(t, nullptr, row, c.max_lmax, data.rows);
+      scored(to, row, nullptr, scorer);
       data.baselines.push_back(base);
       continue;
     }
-    // The converged transport, and a half-size run to bound its own noise.
+    // The converged transport, and a half-size run to bound its own noise: one run each.
     to.sampler = Sampler::kFibonacci;
     to.samples = c.converged_samples;
-    int dirs = 0;
-    const Transport converged = TimedTransport(mesh, to, base.converged_seconds, dirs);
+    t0 = Clock::now();
+    const Transport converged = ComputeTransport(mesh, to, nullptr);
+    base.converged_seconds = SecondsSince(t0);
     base.converged_samples = c.converged_samples;
     to.samples = c.converged_samples / 2;
     to.seed = c.seed + 7;
-    double half_seconds = 0;
-    const Transport half = TimedTransport(mesh, to, half_seconds, dirs);
+    const Transport half = ComputeTransport(mesh, to, nullptr);
     base.converged_self_error =
         CompareVertices(ShadeVertices(mesh, half, light), ShadeVertices(mesh, converged, light)).relative;
     to.seed = c.seed;
@@ -170,28 +205,51 @@ ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::s
         row.mode = base.mode;
         row.sampler = SamplerName(s);
         row.samples = n;
-        double bvh = 0.0;
-        const Transport t = TimedTransport(mesh, to, row.seconds, row.directions, &bvh);
-        data.bvh_seconds = data.bvh_seconds > 0 ? std::min(data.bvh_seconds, bvh) : bvh;
-        scorer.Score(t, &converged, row, c.max_lmax, data.rows);
+        scored(to, row, &converged, scorer);
       }
       Summary("report: " + base.mode + " " + SamplerName(s) + " swept");
     }
   }
 
-  // Light projection against cubemap resolution.
+  // Light projection against cubemap resolution: the cubemaps built first, their projection
+  // timed with the rest.
+  std::vector<std::shared_ptr<const Environment>> cubes;
   for (int size : c.face_sizes) {
     LightRow row;
     row.face_size = size;
     row.supersample = LightSupersample(size);
-    const auto cube = CubemapFromFunction([&env](const glm::dvec3& d) { return env.Radiance(d); }, size,
-                                          CubeLayout::kStandard, row.supersample);
-    const auto t0 = Clock::now();
-    const ShRgb projected = ProjectLight(*cube, c.max_lmax);
-    row.seconds = SecondsSince(t0);
-    row.coeff_error = RelativeL2(projected, light);
+    cubes.push_back(CubemapFromFunction([&env](const glm::dvec3& d) { return env.Radiance(d); }, size,
+                                        CubeLayout::kStandard, row.supersample));
+    row.coeff_error = RelativeL2(ProjectLight(*cubes.back(), c.max_lmax), light);
     data.light.push_back(row);
   }
+
+  // Every configuration timed together, interleaved (round_robin_timing.h).
+  std::vector<std::function<void()>> runs;
+  for (const Job& j : jobs) runs.push_back(j.run);
+  for (const auto& cube : cubes) runs.push_back([&cube, &c] { ProjectLight(*cube, c.max_lmax); });
+  data.timed_configurations = static_cast<int>(runs.size());
+  Summary("report: timing " + std::to_string(runs.size()) + " configurations in round robin, at least " +
+          std::to_string(data.timing.min_rounds) + " rounds");
+  const std::vector<TimingStats> times = TimeRoundRobin(runs, data.timing);
+  std::vector<TimedWork> order;
+  for (std::size_t j = 0; j < jobs.size(); ++j) {
+    for (std::size_t k = 0; k < jobs[j].count; ++k) data.rows[jobs[j].first + k].time = times[j];
+    const SweepRow& r = data.rows[jobs[j].first];
+    if (r.sampler != "closed-form")
+      order.push_back({r.mode + " " + r.sampler, std::to_string(r.directions) + " directions", double(r.rays), times[j]});
+  }
+  for (std::size_t i = 0; i < data.light.size(); ++i) {
+    LightRow& l = data.light[i];
+    l.time = times[jobs.size() + i];
+    order.push_back({"light projection", "face " + std::to_string(l.face_size), 6.0 * l.face_size * l.face_size, l.time});
+  }
+  data.order_violations = CheckWorkOrder(order);
+  const auto [spread, whose] = LargestSpread(data);
+  Summary("report: timed in " + std::to_string(times.empty() ? 0 : times[0].samples) + " rounds; largest spread " +
+          Formatted("%.0f%%", 100.0 * spread) + (whose.empty() ? "" : " (" + whose + ")") + "; " +
+          (data.order_violations.empty() ? std::string("time grows with work")
+                                         : std::to_string(data.order_violations.size()) + " pairs out of work order"));
   return data;
 }
 

@@ -4,9 +4,10 @@
 ///
 /// For each transport mode, sampler (uniform, stratified, fibonacci) and directions per vertex
 /// (doubling from `min_samples` to `max_samples`) the transport is computed once at `max_lmax`
-/// and timed. Its bands 0..L are exactly what a run at lmax L would compute with the same
+/// and scored; its bands 0..L are exactly what a run at lmax L would compute with the same
 /// directions (each coefficient is its own sum over the same rays), so every lmax L <= max_lmax
-/// is evaluated from that one run; the seconds recorded are that run's, and the report says so.
+/// is evaluated from that one run, and its time and work are that run's (`timed_lmax`; the
+/// report and its plot say so).
 /// Each (mode, sampler, samples, lmax) is scored by
 ///   (a) sampling error: vertex radiance against the converged transport at the same lmax
 ///       (fibonacci, `converged_samples` directions), i.e. the Monte Carlo noise alone;
@@ -14,6 +15,11 @@
 ///       included;
 ///   and the PSNR of its picture against the reference picture (report/report_image.h).
 /// Unshadowed transport is closed form: one row per lmax, truncation error only.
+/// Times: after every configuration is scored, all of them (the sampled runs, the closed form
+/// and the light projections) are timed together in round robin (round_robin_timing.h), each
+/// as the median and range of at least 5 samples, and the work order is checked: twice the
+/// rays (or texels) never faster beyond the spread. Work is counted beside the seconds: rays
+/// traced and basis evaluations per run.
 /// Light projection is measured separately: the sky averaged into cubemaps of growing face size,
 /// projected (timed) and compared coefficient by coefficient with its exact projection.
 
@@ -29,6 +35,7 @@
 #include "render/render_options.h"
 #include "report/report_glossy.h"
 #include "report/report_noise.h"
+#include "report/round_robin_timing.h"
 #include "report/report_wavelet.h"
 
 namespace prt {
@@ -54,9 +61,10 @@ struct SweepRow {
   int samples = 0;            ///< requested directions per vertex
   int directions = 0;         ///< actually used (stratified: floor(sqrt)^2)
   int lmax = 0;
-  /// Transport time of the run the row comes from: the fastest of repeated runs that together
-  /// last at least kMinTimedSeconds (below), so the clock's resolution plays no part.
-  double seconds = 0;
+  int timed_lmax = 0;         ///< lmax of the run timed: the sweep's max_lmax (its bands reused)
+  TimingStats time;           ///< transport seconds of that run (round_robin_timing.h)
+  std::uint64_t rays = 0;     ///< rays that run traced (0: closed form)
+  std::uint64_t basis_evaluations = 0;  ///< directions whose basis it evaluated
   VertexError sampling, total;
   double psnr = 0;            ///< dB against the reference picture
 };
@@ -84,7 +92,7 @@ struct ModeBaseline {
 struct LightRow {
   int face_size = 0;
   int supersample = 1;         ///< sub-texel samples per side of each texel
-  double seconds = 0;          ///< ProjectLight on the cubemap
+  TimingStats time;            ///< ProjectLight on the cubemap (round robin with the sweep)
   double coeff_error = 0;      ///< relative L2 error of all coefficients (bands 0..max_lmax)
 };
 
@@ -96,15 +104,29 @@ struct ReportData {
   std::vector<LightRow> light;
   int max_lmax = 0;
   double bvh_seconds = 0;  ///< BVH build inside each sampled run (the fastest seen): a fixed cost
+  RoundRobinPlan timing;   ///< how the times were taken
+  int timed_configurations = 0;
+  std::vector<OrderViolation> order_violations;  ///< CheckWorkOrder of the sweep and the light rows
   std::optional<GlossyStudy> glossy;  ///< with --material phong:N,KS (report_glossy.h)
   std::optional<NoiseStudy> noise;    ///< the visible-noise study (report_noise.h)
   std::optional<WaveletStudy> wavelet;  ///< with --basis wavelet: SH against wavelets (report_wavelet.h)
 };
 
-/// A run shorter than this is repeated until the repeats together last this long, and its time
-/// is the fastest repeat: the timer's resolution and scheduling noise, which made runs of
-/// different sizes come out equally fast, then stay far below the times plotted (the quick
-/// sweep's shortest runs take about 4 ms).
+/// Spread ((max - min) / median) of a configuration's times above which the report calls its
+/// times noisy: it then says so at its top and fits no slope to seconds. Half the median: on
+/// this project's 2-core machine, idle runs spread by a few per cent and runs beside two busy
+/// processes by about (measured: see the closing note of the timing change) ...
+inline constexpr double kTrustedSpread = 0.5;
+
+/// Whether the sweep's times can carry slopes: no order violation and no spread above
+/// kTrustedSpread among the sampled rows and light rows.
+bool TimesTrusted(const ReportData& data);
+/// The largest spread among the sampled rows and light rows, and whose it is.
+std::pair<double, std::string> LargestSpread(const ReportData& data);
+
+/// The glossy and wavelet studies' times (not the sweep's): a run shorter than this is repeated
+/// until the repeats together last this long, and its time is the fastest repeat, so the
+/// timer's resolution plays no part.
 inline constexpr double kMinTimedSeconds = 0.05;
 /// At most this many repeats, so a trivially fast run (unshadowed) cannot loop for long.
 inline constexpr int kMaxTimedRepeats = 50;

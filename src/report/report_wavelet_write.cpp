@@ -4,6 +4,7 @@
 
 #include "core/text.h"
 #include "raster/plot.h"
+#include "report/markdown_table.h"
 #include "report/report_wavelet.h"
 
 namespace prt {
@@ -65,16 +66,17 @@ std::string WaveletMarkdown(const WaveletStudy& d) {
        "Seconds: the whole transport (BVH build, rays, transform and selection, bounce pass), the fastest of repeats "
        "lasting 0.05 s together. The light is the unturned environment with every coefficient kept. basis_error.png "
        "plots the error against bytes per vertex (left) and against seconds (right).\n\n";
-  s += "| mode | reference directions | reference seconds | reference own error |\n|---|---|---|---|\n";
+  s += MarkdownHeader({"mode", "reference directions", "reference seconds", "reference own error"});
   for (const auto& r : d.references)
-    s += Formatted("| %s | %d | %.2f | ", TransportModeName(r.mode), r.samples, r.seconds) + Percent(r.own_error) + " |\n";
-  s += "\n| mode | basis | lmax / budget | coefficients kept per vertex | bytes per vertex | precompute seconds | "
-       "relative RMS error | max error | transport energy kept |\n|---|---|---|---|---|---|---|---|---|\n";
+    s += MarkdownRow({TransportModeName(r.mode), std::to_string(r.samples), Formatted("%.2f", r.seconds),
+                      Percent(r.own_error)});
+  s += "\n" + MarkdownHeader({"mode", "basis", "lmax / budget", "coefficients kept per vertex", "bytes per vertex",
+                              "precompute seconds", "relative RMS error", "max error", "transport energy kept"});
   for (const auto& r : d.rows) {
     const std::string kept = r.wavelet ? Formatted("%.0f", r.kept) : std::to_string(CoeffCount(r.lmax));
-    s += Formatted("| %s | %s | ", TransportModeName(r.mode), r.wavelet ? "wavelet" : "SH") + Setting(r) + " | " + kept +
-         Formatted(" | %.0f | %.3g | ", r.bytes_per_vertex, r.seconds) + Percent(r.total.relative) +
-         Formatted(" | %.3g | ", r.total.max) + (r.wavelet ? Percent(r.kept_energy) : std::string("-")) + " |\n";
+    s += MarkdownRow({TransportModeName(r.mode), r.wavelet ? "wavelet" : "SH", Setting(r), kept,
+                      Formatted("%.0f", r.bytes_per_vertex), Formatted("%.3g", r.seconds), Percent(r.total.relative),
+                      Formatted("%.3g", r.total.max), r.wavelet ? Percent(r.kept_energy) : std::string("-")});
   }
   s += "\n";
   for (TransportMode mode : c.modes) {

@@ -10,8 +10,10 @@
 #include "core/log.h"
 #include "io/png_io.h"
 #include "raster/plot.h"
+#include "report/markdown_table.h"
 #include "report/report_noise.h"
 #include "report/report_sample_rule.h"
+#include "report/report_time_plot.h"
 
 namespace prt {
 namespace {
@@ -24,13 +26,28 @@ std::string F(const char* fmt, double v) {
 
 constexpr double kTarget = 0.01;  // "1% error": relative RMS
 
+/// Where a "time to 1%" cell begins: the run's median time and range, then its work; only the
+/// work when the times are not trusted.
+std::string When(const SweepRow& r, bool trusted) { return trusted ? TimeWithRange(r.time) + ", " : ""; }
+
+/// The timing columns, last on every line (empty on the glossy and basis rows, whose times are
+/// single runs of their own studies).
+constexpr const char* kTimingColumns = "seconds_min,seconds_max,timing_samples,timed_lmax,rays,basis_evaluations";
+
+std::string TimingFields(const SweepRow& r) {
+  char b[200];
+  std::snprintf(b, sizeof b, "%.6g,%.6g,%d,%d,%llu,%llu", r.time.min, r.time.max, r.time.samples, r.timed_lmax,
+                static_cast<unsigned long long>(r.rays), static_cast<unsigned long long>(r.basis_evaluations));
+  return b;
+}
+
 std::string Csv(const ReportData& d) {
   std::string s = "mode,sampler,samples,directions,lmax,seconds,sampling_rms,sampling_max,sampling_relative,"
                   "total_rms,total_max,total_relative,psnr_db,material,path,lobe_relative,vs_vector_relative,matrix_bytes\n";
   for (const auto& r : d.rows) {
     char b[400];
     std::snprintf(b, sizeof b, "%s,%s,%d,%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,diffuse,diffuse,,,\n", r.mode.c_str(),
-                  r.sampler.c_str(), r.samples, r.directions, r.lmax, r.seconds, r.sampling.rms, r.sampling.max,
+                  r.sampler.c_str(), r.samples, r.directions, r.lmax, r.time.median, r.sampling.rms, r.sampling.max,
                   r.sampling.relative, r.total.rms, r.total.max, r.total.relative, r.psnr);
     s += b;
   }
@@ -44,7 +61,15 @@ std::string Csv(const ReportData& d) {
     }
     s = widened + WaveletCsvRows(*d.wavelet);
   }
-  return s;
+  // The timing columns: the sweep's rows are lines 1..rows.size(), in order.
+  std::string timed;
+  std::size_t line = 0;
+  for (std::size_t begin = 0, end; begin < s.size(); begin = end + 1, ++line) {
+    end = std::min(s.find('\n', begin), s.size());
+    const std::string fields = line == 0 ? kTimingColumns : line <= d.rows.size() ? TimingFields(d.rows[line - 1]) : ",,,,,";
+    timed += s.substr(begin, end - begin) + "," + fields + "\n";
+  }
+  return timed;
 }
 
 const ModeBaseline* BaselineOf(const ReportData& d, const std::string& mode) {
@@ -55,43 +80,47 @@ const ModeBaseline* BaselineOf(const ReportData& d, const std::string& mode) {
 
 std::string Markdown(const ReportData& d) {
   const int l2 = std::min(2, d.max_lmax);
-  std::string s = "# prt report: error against run time\n\n";
+  std::string s = "# prt report: error against run time\n\n" + TimingWarning(d);
   s += "Scene: " + d.scene + " (" + std::to_string(d.vertices) + " vertices), environment `" + d.environment +
        "`. Errors are relative RMS over vertices and channels of the outgoing radiance (`sampling`: against the "
        "converged transport at the same lmax; `total`: against the ground truth, SH truncation included). Seconds "
        "are measured transport time of the run at lmax " +
        std::to_string(d.max_lmax) +
        "; lower lmax rows reuse its first (l+1)^2 coefficients, which a run at that lmax computes identically "
-       "from the same directions. Each time is the fastest of repeated runs that together last at least 0.05 s, "
-       "so the clock's resolution plays no part; what remains flat at the smallest counts is fixed cost (the BVH "
-       "build, " + F("%.3g s", d.bvh_seconds) + " of every sampled run, and starting the threads), so there the "
-       "first points of a curve in error_vs_time.png crowd together at nearly one time.\n\n";
-  s += "## Baselines\n\n| mode | reference directions | reference seconds | reference own RMS error | converged "
-       "directions | converged seconds | converged vs half-size run |\n|---|---|---|---|---|---|---|\n";
+       "from the same directions, and so its time and rays (hollow markers in error_vs_time.png). What remains "
+       "flat at the smallest counts is fixed cost (the BVH build, " + F("%.3g s", d.bvh_seconds) +
+       " of every sampled run, and starting the threads), so there the first points of a curve crowd together at "
+       "nearly one time.\n" + TimingMarkdown(d) + "\n";
+  s += "## Baselines\n\n" + MarkdownHeader({"mode", "reference directions", "reference seconds",
+                                              "reference own RMS error", "converged directions", "converged seconds",
+                                              "converged vs half-size run"});
   for (const auto& b : d.baselines)
-    s += "| " + b.mode + " | " + std::to_string(b.reference_samples) + " | " + F("%.2f", b.reference_seconds) + " | " +
-         F("%.3g%%", 100.0 * b.reference_rms_error / std::max(b.reference_rms_radiance, 1e-300)) + " | " +
-         (b.converged_samples ? std::to_string(b.converged_samples) : std::string("closed form")) + " | " +
-         F("%.2f", b.converged_seconds) + " | " + F("%.3g%%", 100.0 * b.converged_self_error) + " |\n";
+    s += MarkdownRow({b.mode, std::to_string(b.reference_samples), F("%.2f", b.reference_seconds),
+                      F("%.3g%%", 100.0 * b.reference_rms_error / std::max(b.reference_rms_radiance, 1e-300)),
+                      b.converged_samples ? std::to_string(b.converged_samples) : std::string("closed form"),
+                      F("%.2f", b.converged_seconds), F("%.3g%%", 100.0 * b.converged_self_error)});
 
-  // Slopes and time to 1%, per mode and sampler.
+  // Slopes and time to 1%, per mode and sampler; against seconds only when the times hold.
+  const bool trusted = TimesTrusted(d);
   std::map<std::pair<std::string, std::string>, std::vector<const SweepRow*>> groups;
   for (const auto& r : d.rows)
     if (r.lmax == l2 && r.sampler != "closed-form") groups[{r.mode, r.sampler}].push_back(&r);
   s += "\n## Convergence at lmax " + std::to_string(l2) +
        "\n\nSlopes: least-squares fit of log(sampling error) against log(seconds) and log(directions), over rows "
        "whose error is at least 3x the converged result's own noise. Time to 1%: the first measured run whose "
-       "relative error is at most 1%.\n\n| mode | sampler | slope vs seconds | slope vs directions | time to 1% "
-       "sampling error | time to 1% total error (any lmax) |\n|---|---|---|---|---|---|\n";
+       "relative error is at most 1%, its median time with the range of its samples (only its directions when the "
+       "times are untrusted).\n\n" +
+       MarkdownHeader({"mode", "sampler", "slope vs seconds", "slope vs directions", "time to 1% sampling error",
+                       "time to 1% total error (any lmax)"});
   for (const auto& [key, rows] : groups) {
     const ModeBaseline* b = BaselineOf(d, key.first);
     const double floor = b ? 3.0 * b->converged_self_error : 0.0;
     std::vector<double> t, n, e;
     std::string to_sampling = "not reached";
     for (const SweepRow* r : rows) {
-      if (r->sampling.relative >= floor) t.push_back(r->seconds), n.push_back(r->directions), e.push_back(r->sampling.relative);
+      if (r->sampling.relative >= floor) t.push_back(r->time.median), n.push_back(r->directions), e.push_back(r->sampling.relative);
       if (to_sampling == "not reached" && r->sampling.relative <= kTarget)
-        to_sampling = F("%.3g s", r->seconds) + " (" + std::to_string(r->directions) + " dirs)";
+        to_sampling = When(*r, trusted) + std::to_string(r->directions) + " dirs";
     }
     std::string to_total = "not reached";
     double best = std::numeric_limits<double>::infinity();
@@ -99,23 +128,29 @@ std::string Markdown(const ReportData& d) {
       if (r.mode == key.first && r.sampler == key.second) {
         best = std::min(best, r.total.relative);
         if (r.total.relative <= kTarget && to_total == "not reached")
-          to_total = F("%.3g s", r.seconds) + " (" + std::to_string(r.directions) + " dirs, lmax " + std::to_string(r.lmax) + ")";
+          to_total = When(r, trusted) + std::to_string(r.directions) + " dirs, lmax " + std::to_string(r.lmax);
       }
     if (to_total == "not reached") to_total += F(" (lowest %.3g%%)", 100.0 * best);
-    s += "| " + key.first + " | " + key.second + " | " + F("%.2f", LogLogSlope(t, e)) + " | " +
-         F("%.2f", LogLogSlope(n, e)) + " | " + to_sampling + " | " + to_total + " |\n";
+    s += MarkdownRow({key.first, key.second, trusted ? F("%.2f", LogLogSlope(t, e)) : "left out (times untrusted)",
+                      F("%.2f", LogLogSlope(n, e)), to_sampling, to_total});
   }
 
-  s += "\n## Truncation: total error against lmax (highest sample count of each sampler)\n\n| mode | sampler | lmax | "
-       "total relative | total max | PSNR dB |\n|---|---|---|---|---|---|\n";
+  s += "\n## Truncation: total error against lmax (highest sample count of each sampler)\n\n" +
+       MarkdownHeader({"mode", "sampler", "lmax", "total relative", "total max", "PSNR dB"});
   for (std::size_t i = 0; i < d.rows.size(); ++i) {
     const auto& r = d.rows[i];
     const bool last = i + d.max_lmax >= d.rows.size() || d.rows[i + d.max_lmax].sampler != r.sampler ||
                       d.rows[i + d.max_lmax].mode != r.mode;
     if (!last) continue;
-    s += "| " + r.mode + " | " + r.sampler + " | " + std::to_string(r.lmax) + " | " + F("%.3g%%", 100 * r.total.relative) +
-         " | " + F("%.3g", r.total.max) + " | " + F("%.1f", r.psnr) + " |\n";
+    s += MarkdownRow({r.mode, r.sampler, std::to_string(r.lmax), F("%.3g%%", 100 * r.total.relative),
+                      F("%.3g", r.total.max), F("%.1f", r.psnr)});
   }
+  if (d.max_lmax >= 3 && std::any_of(d.rows.begin(), d.rows.end(), [](const SweepRow& r) { return r.sampler == "closed-form"; }))
+    s += "\nUnshadowed, lmax 2 and 3 (and 4 and 5, 6 and 7) have the same error, and that is right: the "
+         "unshadowed transfer of a vertex is the clamped cosine max(0, n.s), whose SH coefficients vanish in every "
+         "odd band above 1 (Ramamoorthi and Hanrahan, \"An Efficient Representation for Irradiance Environment "
+         "Maps\", SIGGRAPH 2001), so bands 3, 5, 7 add nothing to it, whatever the light holds there. Shadows "
+         "(visibility) give the transfer odd bands, so the sampled modes change at every lmax.\n";
 
   s += SampleRuleSection(d);
   s += "\n## Light projection against cubemap resolution\n\nThe environment averaged into cubemaps, each texel "
@@ -123,11 +158,11 @@ std::string Markdown(const ReportData& d) {
        "lmax " + std::to_string(d.max_lmax) +
        " and compared with its exact projection (relative L2 over all coefficients). Texel-centre samples would "
        "instead catch the sky's sun disk (2 degrees in radius by default) on a texel centre at some face sizes and "
-       "miss it at others, so the error would jump up and down with the size instead of falling.\n\n| face size | "
-       "sub-texels | seconds | coefficient error |\n|---|---|---|---|\n";
+       "miss it at others, so the error would jump up and down with the size instead of falling.\n\n" +
+       MarkdownHeader({"face size", "sub-texels", "seconds (median, min-max)", "coefficient error"});
   for (const auto& l : d.light)
-    s += "| " + std::to_string(l.face_size) + " | " + std::to_string(l.supersample) + "^2 | " + F("%.4f", l.seconds) +
-         " | " + F("%.3g", l.coeff_error) + " |\n";
+    s += MarkdownRow({std::to_string(l.face_size), std::to_string(l.supersample) + "^2", TimeWithRange(l.time),
+                      F("%.3g", l.coeff_error)});
   if (d.glossy) s += GlossyMarkdown(*d.glossy);
   if (d.wavelet) s += WaveletMarkdown(*d.wavelet);
   if (d.noise) s += NoiseMarkdown(*d.noise);
@@ -143,42 +178,12 @@ std::string Markdown(const ReportData& d) {
   return s;
 }
 
-Image8 Plot(const ReportData& d) {
-  // Total error of the first sampled mode, one line per sampler and lmax.
-  std::string mode;
-  for (const auto& r : d.rows)
-    if (r.sampler != "closed-form") { mode = r.mode; break; }
-  std::vector<PlotSeries> series;
-  std::map<std::pair<std::string, int>, std::size_t> index;
-  for (const auto& r : d.rows) {
-    if (r.mode != mode || r.sampler == "closed-form") continue;
-    const auto key = std::make_pair(r.sampler, r.lmax);
-    if (!index.count(key)) {
-      index[key] = series.size();
-      PlotSeries p;
-      p.label = r.sampler + " lmax " + std::to_string(r.lmax);
-      p.color = PlotColor(r.lmax - 1);
-      if (r.sampler == "uniform") p.color = 0.5f * p.color + glm::vec3(0.5f);
-      p.dashed = r.sampler == "stratified";
-      series.push_back(p);
-    }
-    series[index[key]].x.push_back(r.seconds);
-    series[index[key]].y.push_back(r.total.relative);
-  }
-  PlotOptions o;
-  o.width = 1100, o.height = 720;
-  o.title = mode + ": total error vs precompute time";
-  o.x_label = "seconds";
-  o.y_label = "relative RMS error";
-  return DrawLogLogPlot(series, o);
-}
-
 }  // namespace
 
 void WriteReport(OutputFolder& folder, const ReportData& d) {
   WriteFileAtomic(folder.Output("report.csv"), Csv(d));
   WriteFileAtomic(folder.Output("report.md"), Markdown(d));
-  WritePng(folder.Output("error_vs_time.png"), Plot(d));
+  WritePng(folder.Output("error_vs_time.png"), ErrorVsTimePlot(d));
   if (d.glossy) WritePng(folder.Output("glossy_error_vs_lmax.png"), GlossyPlot(*d.glossy));
   if (d.wavelet) WritePng(folder.Output("basis_error.png"), WaveletPlot(*d.wavelet));
   Summary("wrote " + folder.dir() + "/report.csv, report.md and error_vs_time.png" +

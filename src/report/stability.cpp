@@ -16,6 +16,7 @@
 #include "precompute/light.h"
 #include "precompute/samplers.h"
 #include "precompute/transport.h"
+#include "report/markdown_table.h"
 #include "report/report_wavelet.h"
 #include "report/stability_inputs.h"
 #include "sh/axis_rotation.h"
@@ -301,11 +302,11 @@ std::string StabilityCsv(const std::vector<StabilityCase>& cases) {
 }
 
 std::string StabilityMarkdown(const std::vector<StabilityCase>& cases) {
-  std::string s = "# prt report --stability: stiff and extreme cases\n\n| case | what is checked | measured | limit | "
-                  "result | note |\n|---|---|---|---|---|---|\n";
+  std::string s = "# prt report --stability: stiff and extreme cases\n\n" +
+                  MarkdownHeader({"case", "what is checked", "measured", "limit", "result", "note"});
   for (const auto& c : cases)
-    s += "| " + c.name + " | " + c.checks + " | " + Formatted("%.4g", c.figure) + " | " + (c.at_least ? ">= " : "<= ") +
-         Formatted("%.3g", c.limit) + " | " + (c.pass ? "pass" : "**FAIL**") + " | " + c.note + " |\n";
+    s += MarkdownRow({c.name, c.checks, Formatted("%.4g", c.figure), (c.at_least ? ">= " : "<= ") + Formatted("%.3g", c.limit),
+                      c.pass ? "pass" : "**FAIL**", c.note});
   return s;
 }
 

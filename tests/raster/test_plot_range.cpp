@@ -2,8 +2,13 @@
 // not widened to whole decades, which left most of the report's time axis empty.
 #include <doctest/doctest.h>
 
+#include <string>
 #include <vector>
 
+#include <stb_easy_font.h>
+
+#include "core/image.h"
+#include "raster/annotate.h"
 #include "raster/plot.h"
 
 namespace prt {
@@ -41,6 +46,52 @@ TEST_SUITE("raster") {
     const LogRange none = LogAxisRange({});
     CHECK(none.lo == 1.0);
     CHECK(none.hi == 10.0);
+  }
+
+  TEST_CASE("plot: each tick label names the tick it stands under, and the ends of lmax 1..8 read 1 and 8") {
+    // The glossy plot's x axis: lmax 1, 2, 3, 4, 6, 8 (the quick study's).
+    const LogRange lmax = LogAxisRange({1, 2, 3, 4, 6, 8});
+    CHECK(lmax.lo == 1.0);
+    CHECK(lmax.hi == 8.0);
+    const auto labels = LogAxisLabels(lmax, 0.05);
+    REQUIRE(!labels.empty());
+    CHECK(labels.front().second == "1");
+    CHECK(labels.back().second == "8");
+    for (const auto& [value, text] : labels) {
+      CAPTURE(text);
+      CHECK(value >= lmax.lo);
+      CHECK(value <= lmax.hi);
+      CHECK(std::stod(text) == doctest::Approx(value));  // "2e-3" parses too
+    }
+    // Seconds over two decades: powers of ten only, plus the ends.
+    for (const auto& [value, text] : LogAxisLabels(LogAxisRange({4.3e-3, 0.9}), 0.05)) {
+      CAPTURE(text);
+      CHECK(std::stod(text) == doctest::Approx(value));
+    }
+  }
+
+  TEST_CASE("text: every printable character is drawn whole, as stb_easy_font lays it out") {
+    // The ink of DrawText(c) against the area of every quad stb_easy_font gives for c with a
+    // buffer far larger than any character needs: a buffer cut short drops the last strokes
+    // (a lone "8" once lost its lower left one and read as a 9).
+    for (int ch = 33; ch < 127; ++ch) {
+      char text[2] = {static_cast<char>(ch), '\0'};
+      std::vector<unsigned char> quads(64 * 1024);
+      unsigned char rgba[4] = {0, 0, 0, 255};
+      const int n = stb_easy_font_print(0, 0, text, rgba, quads.data(), static_cast<int>(quads.size()));
+      Image8 expected(16, 16), drawn(16, 16);
+      std::fill(expected.rgb.begin(), expected.rgb.end(), std::uint8_t{255});
+      std::fill(drawn.rgb.begin(), drawn.rgb.end(), std::uint8_t{255});
+      for (int q = 0; q < n; ++q) {
+        const float* v = reinterpret_cast<const float*>(quads.data() + q * 64);
+        for (int y = int(v[1]); y < int(v[9]); ++y)
+          for (int x = int(v[0]); x < int(v[8]); ++x)
+            for (int c = 0; c < 3; ++c) expected.rgb[3 * (y * 16 + x) + c] = 0;
+      }
+      DrawText(drawn, 0, 0, text, glm::vec3(0.f));
+      CAPTURE(text);
+      CHECK(drawn.rgb == expected.rgb);
+    }
   }
 }
 

@@ -117,8 +117,9 @@ TEST_SUITE("report") {
   TEST_CASE("plot: axes, lines and legend are drawn, points that log axes cannot show are skipped") {
     // Series a is y = 1e-4 / x: a straight falling line on log-log axes. Series b has one point
     // a log axis can show (x = 0 and y < 0 are skipped): no line, only its legend entry.
-    prt::PlotSeries a{"a", {1e-3, 1e-2, 1e-1}, {1e-1, 1e-2, 1e-3}, prt::PlotColor(0), false};
-    prt::PlotSeries b{"b", {0.0, 1e-2, 1.0}, {1.0, -1.0, 1e-2}, prt::PlotColor(1), true};
+    prt::PlotSeries a, b;
+    a.label = "a", a.x = {1e-3, 1e-2, 1e-1}, a.y = {1e-1, 1e-2, 1e-3}, a.color = prt::PlotColor(0);
+    b.label = "b", b.x = {0.0, 1e-2, 1.0}, b.y = {1.0, -1.0, 1e-2}, b.color = prt::PlotColor(1), b.dashed = true;
     prt::PlotOptions o;
     o.title = "t", o.x_label = "x", o.y_label = "y";
     const prt::Image8 im = prt::DrawLogLogPlot({a, b}, o);
