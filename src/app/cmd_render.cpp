@@ -1,5 +1,7 @@
 #include "app/commands.h"
 #include "app/pipeline.h"
+#include "app/render_look.h"
+#include "core/log.h"
 
 namespace prt {
 namespace {
@@ -11,6 +13,13 @@ SceneOptions RenderScene() {
   return s;
 }
 
+/// The render options of `prt render`: --look (render's own) first, then those it shares with demo.
+OptionGroup RenderGroup() {
+  OptionGroup group = RenderOptionGroup(RenderOptions{}, AllRenderOptionNames());
+  group.options.insert(group.options.begin(), LookOption());
+  return group;
+}
+
 }  // namespace
 
 CommandSpec RenderSpec() {
@@ -18,17 +27,22 @@ CommandSpec RenderSpec() {
           "Precomputes the transport (or reuses the cache), then writes DIR/frame_0000.png ... of the mesh under "
           "the environment light turning about the axis. Without --mesh, the embedded demo scene is seen with the "
           "demo's camera.\n\nThe run summary on stderr says what each stage did and left out, the camera in "
-          "option syntax and the exposure chosen, so a run can be repeated exactly.",
-          {SceneOptionGroup(RenderScene(), AllSceneOptionNames()),
-           RenderOptionGroup(RenderOptions{}, AllRenderOptionNames()),
-           {"other options", {QuietOption()}}}};
+          "option syntax and the exposure chosen, so a run can be repeated exactly.\n\n--look course renders what "
+          "the GAMES202 homework-2 WebGL viewer shows of prt precompute's files; the defaults below are those of "
+          "--look default, and options given on the command line win over either look.",
+          {SceneOptionGroup(RenderScene(), AllSceneOptionNames()), RenderGroup(), {"other options", {QuietOption()}}}};
 }
 
 int RunRender(const std::vector<std::string>& tokens) {
   Args args("render", tokens, RenderSpec());
-  const SceneOptions scene = ReadSceneOptions(args, RenderScene());
-  const RenderOptions render = CompleteRenderOptions(args, ReadRenderOptions(args, RenderOptions{}), scene);
+  // The look first: it gives the defaults that the options on the command line override.
+  const Look look = ReadLook(args);
+  const SceneOptions scene = ReadSceneOptions(args, LookSceneDefaults(look, RenderScene()));
+  const RenderOptions render =
+      CompleteRenderOptions(args, ReadRenderOptions(args, LookRenderDefaults(look, RenderOptions{})), scene);
+  const std::string look_line = CheckLook(args, look, scene);
   args.Finish();
+  if (!look_line.empty()) Summary(look_line);
   RenderJob(scene, render);
   return 0;
 }

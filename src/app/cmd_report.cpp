@@ -32,8 +32,9 @@ const std::set<std::string> kStabilityOptions = {"--stability", "--out", "--repl
 
 /// The report scene under a coat of `ks`: albedo + KS <= 1 kept per vertex as a textured mesh
 /// keeps it per texel (texture/albedo_limit.h): a vertex whose largest channel m is above
-/// 1 - KS is scaled by (1 - KS) / m, hue kept. Returns the summary line, empty if none was.
-std::string FitReportSceneToCoat(Mesh& mesh, double ks) {
+/// 1 - KS is scaled by (1 - KS) / m, hue kept. Returns the summary line, empty if none was, and
+/// in `note` what the report's scene name adds.
+std::string FitReportSceneToCoat(Mesh& mesh, double ks, std::string& note) {
   const float limit = static_cast<float>(1.0 - ks);
   std::size_t scaled = 0;
   glm::vec3 example(0.f), fitted(0.f);
@@ -44,6 +45,7 @@ std::string FitReportSceneToCoat(Mesh& mesh, double ks) {
     a *= limit / m;
   }
   if (!scaled) return "";
+  note = Formatted(", albedo fitted under the coat: %zu vertices scaled to 1 - KS = %.3g, hue kept", scaled, double(limit));
   return Formatted("report: the report scene's albedo fitted to the coat: albedo + KS <= 1 kept per vertex, "
                    "%zu vertices brighter than 1 - KS = %.3g scaled down to it with their hue (e.g. %.3g,%.3g,%.3g -> "
                    "%.3g,%.3g,%.3g); --albedo sets another",
@@ -137,12 +139,13 @@ int RunReport(const std::vector<std::string>& tokens) {
     mesh = MakeReportScene();
     // Our own scene takes the coat: its albedo is fitted rather than the run refused (--albedo,
     // checked against KS when read, replaces it).
+    std::string fit_note;
     if (!scene.albedo && scene.material.glossy) {
-      const std::string fitted = FitReportSceneToCoat(mesh, scene.material.ks);
+      const std::string fitted = FitReportSceneToCoat(mesh, scene.material.ks, fit_note);
       if (!fitted.empty()) Summary(fitted);
     }
     ApplySceneEdits(mesh, scene);
-    scene_name = "report scene (torus knot 128x16 on a 24x24 plane)";
+    scene_name = "report scene (torus knot 128x16 on a 24x24 plane" + fit_note + ")";
   } else {
     mesh = LoadSceneMesh(scene, &folder);
     scene_name = scene.mesh;

@@ -92,8 +92,8 @@ std::string GlossyMarkdown(const GlossyStudy& d) {
                       Percent(r.vs_vector.relative), Percent(r.lobe_vs_vector.relative), Formatted("%.3g", r.seconds),
                       Formatted("%.3g", double(r.bytes) / 1048576.0)});
   }
-  s += "\nglossy_error_vs_lmax.png plots the lobe errors against lmax: per exponent, unshadowed vector (solid), "
-       "shadowed vector (dashed) and shadowed matrices (light solid).\n";
+  s += "\nglossy_error_vs_lmax.png plots the lobe errors against lmax: per exponent (colour), unshadowed vector (solid, "
+       "squares), shadowed vector (dashed, circles) and shadowed matrices (light solid, triangles).\n";
   return s;
 }
 
@@ -128,6 +128,8 @@ Image8 GlossyPlot(const GlossyStudy& d) {
     u.color = v.color = PlotColor(int(i));
     m.color = 0.5f * u.color + glm::vec3(0.5f);
     v.dashed = true;
+    // The exponent by colour, the path by marker as well as by line.
+    u.marker = PlotMarker::kSquare, v.marker = PlotMarker::kCircle, m.marker = PlotMarker::kTriangle;
     for (const auto& r : d.vector_rows)
       if (r.exponent == n) {
         PlotSeries& p = r.mode == TransportMode::kUnshadowed ? u : v;

@@ -231,7 +231,9 @@ ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::s
   data.timed_configurations = static_cast<int>(runs.size());
   Summary("report: timing " + std::to_string(runs.size()) + " configurations in round robin, at least " +
           std::to_string(data.timing.min_rounds) + " rounds");
+  const auto timing_start = Clock::now();
   const std::vector<TimingStats> times = TimeRoundRobin(runs, data.timing);
+  const double timing_seconds = SecondsSince(timing_start);
   std::vector<TimedWork> order;
   for (std::size_t j = 0; j < jobs.size(); ++j) {
     for (std::size_t k = 0; k < jobs[j].count; ++k) data.rows[jobs[j].first + k].time = times[j];
@@ -246,7 +248,8 @@ ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::s
   }
   data.order_violations = CheckWorkOrder(order);
   const auto [spread, whose] = LargestSpread(data);
-  Summary("report: timed in " + std::to_string(times.empty() ? 0 : times[0].samples) + " rounds; largest spread " +
+  Summary("report: timed in " + std::to_string(times.empty() ? 0 : times[0].samples) + " rounds" +
+          Formatted(" [%.2f s]", timing_seconds) + "; largest spread " +
           Formatted("%.0f%%", 100.0 * spread) + (whose.empty() ? "" : " (" + whose + ")") + "; " +
           (data.order_violations.empty() ? std::string("time grows with work")
                                          : std::to_string(data.order_violations.size()) + " pairs out of work order"));

@@ -94,7 +94,8 @@ std::string TimingMarkdown(const ReportData& d) {
        "(`seconds`, `seconds_min`, `seconds_max`) and as bars in error_vs_time.png. Work is counted beside the "
        "seconds: rays traced and directions whose basis was evaluated per run (report.csv `rays`, "
        "`basis_evaluations`), which no other work on the machine changes.\n\n";
-  s += Formatted("- Largest spread (max - min) / median: %.0f%%", 100.0 * spread) +
+  s += Formatted("- Largest spread (interquartile range / median: the middle half of the samples, which one slow "
+                 "sample does not move): %.0f%%", 100.0 * spread) +
        (whose.empty() ? std::string() : " (" + whose + ")") +
        Formatted("; above %.0f%% the times are called noisy.\n", 100.0 * kTrustedSpread);
   if (d.order_violations.empty()) {

@@ -12,6 +12,14 @@ SecondsClock SteadySeconds() {
   };
 }
 
+double Quantile(std::vector<double> v, double p) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const double at = std::clamp(p, 0.0, 1.0) * double(v.size() - 1);
+  const std::size_t i = static_cast<std::size_t>(at);
+  return i + 1 < v.size() ? v[i] + (at - double(i)) * (v[i + 1] - v[i]) : v[i];
+}
+
 double Median(std::vector<double> v) {
   if (v.empty()) return 0.0;
   const std::size_t h = v.size() / 2;
@@ -46,6 +54,7 @@ std::vector<TimingStats> TimeRoundRobin(const std::vector<std::function<void()>>
       const auto [lo, hi] = std::minmax_element(samples[i].begin(), samples[i].end());
       stats[i].median = Median(samples[i]);
       stats[i].min = *lo, stats[i].max = *hi;
+      stats[i].lower_quartile = Quantile(samples[i], 0.25), stats[i].upper_quartile = Quantile(samples[i], 0.75);
       stats[i].samples = static_cast<int>(samples[i].size());
     }
   };

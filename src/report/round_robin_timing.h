@@ -12,8 +12,8 @@
 ///     its batch size: runs shorter than `min_sample_seconds` are repeated k times per sample
 ///     and the sample is the batch's time / k, so the clock's resolution plays no part;
 ///   - at least `min_rounds` rounds; then more, up to `max_rounds`, while some configuration's
-///     spread (max - min) / median exceeds `spread_limit` and the extra rounds have not yet
-///     cost `extra_budget` times what the first rounds took;
+///     spread (interquartile range / median) exceeds `spread_limit` and the extra rounds have
+///     not yet cost `extra_budget` times what the first rounds took;
 ///   - the median is unmoved by a burst that hits fewer than half the rounds; the range
 ///     (min - max) is printed and plotted beside it, its minimum being the least disturbed
 ///     sample, since other work only ever adds time [2].
@@ -46,18 +46,26 @@ struct RoundRobinPlan {
   int max_rounds = 9;
   double min_sample_seconds = 0.02;  ///< a shorter run is batched up to this
   int max_batch = 100000;            ///< at most this many runs per sample (microsecond runs need thousands)
-  double spread_limit = 0.25;        ///< (max - min) / median above which more rounds help
+  double spread_limit = 0.1;         ///< TimingStats::Spread above which more rounds help
   double extra_budget = 1.0;         ///< extra rounds may cost this times the first rounds
 };
 
 /// One configuration's summary: seconds per run.
 struct TimingStats {
   double median = 0, min = 0, max = 0;
+  double lower_quartile = 0, upper_quartile = 0;
   int samples = 0;  ///< rounds it was timed in
   int batch = 1;    ///< runs per sample
-  /// (max - min) / median: 0 for identical samples.
-  double Spread() const { return median > 0 ? (max - min) / median : 0.0; }
+  /// (upper quartile - lower quartile) / median: how far the middle half of the samples spreads,
+  /// 0 for identical samples. Not min - max, which one slow sample of an idle machine sets (a
+  /// 2-core machine's idle quick report had min - max spreads of 8 to 55 %, nearly all from one
+  /// sample each); the range printed and drawn is still min - max.
+  double Spread() const { return median > 0 ? (upper_quartile - lower_quartile) / median : 0.0; }
 };
+
+/// The p-quantile (0..1) of `v`, interpolated between the neighbouring order statistics
+/// (Hyndman and Fan's definition 7, R's default); 0 for none.
+double Quantile(std::vector<double> v, double p);
 
 /// Median of `v` (the mean of the middle two for an even count); 0 for none.
 double Median(std::vector<double> v);

@@ -184,5 +184,15 @@ TEST_SUITE("report") {
     CHECK(prt::ReadFile(dir + "/stab/stability.csv").find(",pass,") != std::string::npos);
     const auto bad = prt::test::RunPrt("report --quick");
     CHECK(bad.exit_code == 2);  // --out is required
+    // --stability runs fixed cases: an option it would ignore is a usage error, before any work
+    // and before the folder is made.
+    for (const char* ignored : {"--material phong:10,0.1", "--quick", "--max-lmax 3", "--env furnace", "--basis wavelet"}) {
+      CAPTURE(ignored);
+      const auto refused = prt::test::RunPrt(std::string("report --stability ") + ignored + " --out " +
+                                             Q(dir + "/refused"));
+      CHECK(refused.exit_code == 2);
+      CHECK(refused.err.find("not used by report --stability") != std::string::npos);
+      CHECK(!std::filesystem::exists(dir + "/refused"));
+    }
   }
 }

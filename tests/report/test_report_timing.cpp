@@ -4,6 +4,8 @@
 // the slopes out and plots rays instead. Made-up rows, so every figure is known.
 #include <doctest/doctest.h>
 
+#include <cstdint>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -18,14 +20,18 @@
 namespace prt {
 namespace {
 
+/// Samples whose middle half spans `spread` of the median (TimingStats::Spread) and whose
+/// range spans twice that.
 TimingStats Time(double median, double spread) {
   TimingStats t;
-  t.median = median, t.min = median * (1 - spread / 2), t.max = median * (1 + spread / 2), t.samples = 5;
+  t.median = median, t.samples = 5;
+  t.lower_quartile = median * (1 - spread / 2), t.upper_quartile = median * (1 + spread / 2);
+  t.min = median * (1 - spread), t.max = median * (1 + spread);
   return t;
 }
 
 /// Shadowed, two samplers, 16..64 directions, lmax 1..2, timed at lmax 2: time proportional to
-/// the directions, 10% spread; error falling as 1/sqrt(directions).
+/// the directions, 10% spread (20% range); error falling as 1/sqrt(directions).
 ReportData Sweep() {
   ReportData d;
   d.scene = "synthetic", d.environment = "sky", d.vertices = 100, d.max_lmax = 2;
@@ -82,7 +88,7 @@ TEST_SUITE("report") {
     // -0.5 against both.
     CHECK(md.find("| shadowed | fibonacci | -0.50 | -0.50 |") != std::string::npos);
     // The median and its range, as TimeWithRange writes them.
-    CHECK(TimeWithRange(Time(0.016, 0.1)) == "0.016 s (0.0152-0.0168)");
+    CHECK(TimeWithRange(Time(0.016, 0.1)) == "0.016 s (0.0144-0.0176)");
 
     const auto series = ErrorVsTimeSeries(d, "shadowed", PlotsSeconds(d));
     REQUIRE(series.size() == 4);  // 2 samplers x 2 lmax
@@ -95,8 +101,8 @@ TEST_SUITE("report") {
       REQUIRE(s.x.size() == 3);
       REQUIRE(s.x_min.size() == 3);
       CHECK(s.x[2] == doctest::Approx(0.064));
-      CHECK(s.x_min[2] == doctest::Approx(0.064 * 0.95));
-      CHECK(s.x_max[2] == doctest::Approx(0.064 * 1.05));
+      CHECK(s.x_min[2] == doctest::Approx(0.064 * 0.9));
+      CHECK(s.x_max[2] == doctest::Approx(0.064 * 1.1));
     }
     CHECK(markers.size() == 2);                       // the samplers' shapes differ
     CHECK(series[0].color != series[1].color);        // and the lmax's colours
@@ -115,8 +121,8 @@ TEST_SUITE("report") {
       return std::string();
     };
     CHECK(std::stod(at("seconds")) == doctest::Approx(0.016));
-    CHECK(std::stod(at("seconds_min")) == doctest::Approx(0.0152));
-    CHECK(std::stod(at("seconds_max")) == doctest::Approx(0.0168));
+    CHECK(std::stod(at("seconds_min")) == doctest::Approx(0.0144));
+    CHECK(std::stod(at("seconds_max")) == doctest::Approx(0.0176));
     CHECK(at("timing_samples") == "5");
     CHECK(at("timed_lmax") == "2");
     CHECK(at("rays") == "800");
@@ -161,6 +167,60 @@ TEST_SUITE("report") {
     CHECK(md.find("not trustworthy") != std::string::npos);
     CHECK(md.find("shadowed uniform 32 directions") != std::string::npos);
     CHECK(md.find("left out (times untrusted)") != std::string::npos);
+  }
+
+  TEST_CASE("report timing: a real quick sweep counts its work and times every run with a median and a range") {
+    const std::string dir = test::ScratchDir("timing_sweep");
+    const auto r = test::RunPrt("report --quick --max-lmax 3 --max-samples 32 --quiet --out " + test::Q(dir));
+    REQUIRE(r.exit_code == 0);
+    const std::string md = ReadFile(dir + "/report.md");
+    CHECK(md.find("## Timing") != std::string::npos);
+    // The closed form's odd bands above 1 are zero: lmax 2 and 3 the same, and said why.
+    CHECK(md.find("Unshadowed, lmax 2 and 3 (and 4 and 5, 6 and 7) have the same error") != std::string::npos);
+    std::istringstream lines(ReadFile(dir + "/report.csv"));
+    std::string line;
+    std::getline(lines, line);
+    const auto names = Fields(line);
+    std::map<std::string, std::size_t> col;
+    for (std::size_t i = 0; i < names.size(); ++i) col[names[i]] = i;
+    for (const char* name : {"mode", "sampler", "directions", "lmax", "total_relative", "seconds", "seconds_min",
+                             "seconds_max", "timing_samples", "timed_lmax", "rays", "basis_evaluations"})
+      REQUIRE_MESSAGE(col.count(name), name);
+    std::map<std::pair<std::string, int>, std::uint64_t> rays;  // (sampler, directions) at lmax 3
+    std::map<int, double> unshadowed;                            // lmax -> total error
+    int rows = 0;
+    while (std::getline(lines, line)) {
+      const auto f = Fields(line);
+      REQUIRE(f.size() == names.size());
+      const std::string mode = f[col["mode"]], sampler = f[col["sampler"]];
+      const int lmax = std::stoi(f[col["lmax"]]);
+      CAPTURE(line);
+      ++rows;
+      CHECK(std::stoi(f[col["timed_lmax"]]) == 3);
+      CHECK(std::stoi(f[col["timing_samples"]]) >= RoundRobinPlan{}.min_rounds);
+      const double t = std::stod(f[col["seconds"]]), lo = std::stod(f[col["seconds_min"]]),
+                   hi = std::stod(f[col["seconds_max"]]);
+      CHECK(lo > 0);
+      CHECK(lo <= t);
+      CHECK(t <= hi);
+      if (mode == "unshadowed") {
+        CHECK(f[col["rays"]] == "0");
+        unshadowed[lmax] = std::stod(f[col["total_relative"]]);
+        continue;
+      }
+      const std::uint64_t n = std::stoull(f[col["rays"]]);
+      CHECK(n > 0);
+      CHECK(std::stoull(f[col["basis_evaluations"]]) > 0);
+      if (lmax == 3) rays[{sampler, std::stoi(f[col["directions"]])}] = n;
+    }
+    CHECK(rows == 3 * (1 + 3 * 2));  // lmax 1..3 x (closed form + 3 samplers x 16, 32 directions)
+    // About half the directions lie above a vertex's horizon whatever their number: twice the
+    // directions, about twice the rays (fibonacci's spiral, the same in every vertex's frame).
+    const double ratio = double(rays[{"fibonacci", 32}]) / double(rays[{"fibonacci", 16}]);
+    CHECK(ratio == doctest::Approx(2.0).epsilon(0.1));
+    REQUIRE(unshadowed.count(3));
+    CHECK(unshadowed[2] == doctest::Approx(unshadowed[3]).epsilon(1e-9));
+    CHECK(unshadowed[1] > unshadowed[2]);
   }
 }
 

@@ -209,8 +209,7 @@ TEST_SUITE("report") {
     std::istringstream csv(prt::ReadFile(dir + "/out/report.csv"));
     std::string line;
     std::getline(csv, line);
-    CHECK(line.size() > 30);
-    CHECK(line.substr(line.size() - 30) == ",basis,budget,bytes_per_vertex");
+    CHECK(line.find(",matrix_bytes,basis,budget,bytes_per_vertex,") != std::string::npos);  // then the timing columns
     const std::size_t columns = Fields(line).size();
     std::vector<double> wavelet_error;
     std::size_t sh_rows = 0;
@@ -229,7 +228,7 @@ TEST_SUITE("report") {
                                          " --quiet --out " + Q(dir + "/plain"));
     REQUIRE(plain.exit_code == 0);
     CHECK_FALSE(std::filesystem::exists(dir + "/plain/basis_error.png"));
-    CHECK(prt::ReadFile(dir + "/plain/report.csv").find("basis") == std::string::npos);
+    CHECK(prt::ReadFile(dir + "/plain/report.csv").find(",basis,budget") == std::string::npos);
     CHECK(prt::ReadFile(dir + "/plain/report.md").find("## Basis") == std::string::npos);
   }
 }

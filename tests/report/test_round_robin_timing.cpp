@@ -20,6 +20,8 @@ struct FakeMachine {
   double burst = 0.0;
   int burst_from = -1, burst_to = -1;
   int runs_seen = 0;
+  /// Extra seconds of run k (counted over all configurations, warm-ups included), if listed.
+  std::vector<double> extra;
 
   SecondsClock Clock() {
     return [this] { return now; };
@@ -31,7 +33,7 @@ struct FakeMachine {
       runs.push_back([this, i, s = seconds[i]] {
         calls.push_back(static_cast<int>(i));
         const bool loaded = runs_seen >= burst_from && runs_seen < burst_to;
-        now += s + (loaded ? burst : 0.0);
+        now += s + (loaded ? burst : 0.0) + (std::size_t(runs_seen) < extra.size() ? extra[runs_seen] : 0.0);
         ++runs_seen;
       });
     return runs;
@@ -115,7 +117,30 @@ TEST_SUITE("report") {
     CHECK(TimeRoundRobin(tight.Runs({0.1, 0.1}), plan, tight.Clock())[0].samples == plan.min_rounds);
   }
 
-  TEST_CASE("median: odd and even counts") {
+  TEST_CASE("round robin: a configuration's time is the median of its samples, its range their min and max") {
+    // One configuration, one warm-up, five samples of 0.1 s plus 0, 0.2, 0.1, 0.4, 0.1:
+    // 0.1, 0.3, 0.2, 0.5, 0.2 -> median 0.2 (the mean would be 0.26, the fastest 0.1).
+    FakeMachine m;
+    m.extra = {0.0, 0.0, 0.2, 0.1, 0.4, 0.1};
+    RoundRobinPlan plan;
+    plan.min_sample_seconds = 0.0;
+    plan.max_rounds = plan.min_rounds;
+    const TimingStats t = TimeRoundRobin(m.Runs({0.1}), plan, m.Clock())[0];
+    CHECK(t.samples == 5);
+    CHECK(t.median == doctest::Approx(0.2));
+    CHECK(t.min == doctest::Approx(0.1));
+    CHECK(t.max == doctest::Approx(0.5));
+    // The middle half: quartiles 0.2 and 0.3 (interpolated order statistics), so a spread of
+    // (0.3 - 0.2) / 0.2, where one slow sample alone would make min - max 2.
+    CHECK(t.lower_quartile == doctest::Approx(0.2));
+    CHECK(t.upper_quartile == doctest::Approx(0.3));
+    CHECK(t.Spread() == doctest::Approx(0.5));
+  }
+
+  TEST_CASE("median and quantiles: odd and even counts, interpolated between order statistics") {
+    CHECK(Quantile({4.0, 1.0, 3.0, 2.0}, 0.25) == doctest::Approx(1.75));
+    CHECK(Quantile({4.0, 1.0, 3.0, 2.0}, 0.75) == doctest::Approx(3.25));
+    CHECK(Quantile({5.0}, 0.75) == 5.0);
     CHECK(Median({3.0, 1.0, 2.0}) == 2.0);
     CHECK(Median({4.0, 1.0, 3.0, 2.0}) == 2.5);
     CHECK(Median({}) == 0.0);
