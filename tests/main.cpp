@@ -9,7 +9,8 @@
 // - Required where it must be there: with PRT_REQUIRE_SHARED_DATA=1 (CI sets it) a missing data
 //   folder fails the run at once instead of skipping anything.
 // The tests that need Debian's ffmpeg (test::NeedsFfmpeg()) follow the same two rules, with
-// PRT_REQUIRE_FFMPEG=1.
+// PRT_REQUIRE_FFMPEG=1, and so do those that need Debian's cmark-gfm (test::NeedsCmarkGfm()),
+// with PRT_REQUIRE_CMARK_GFM=1.
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
 
@@ -108,6 +109,11 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "prt_tests: PRT_REQUIRE_FFMPEG is set, but ffmpeg and ffprobe are not on PATH\n");
     return 1;
   }
+  const char* need_cmark = std::getenv("PRT_REQUIRE_CMARK_GFM");
+  if (need_cmark && *need_cmark && std::strcmp(need_cmark, "0") != 0 && !prt::test::CmarkGfm()) {
+    std::fprintf(stderr, "prt_tests: PRT_REQUIRE_CMARK_GFM is set, but cmark-gfm is not on PATH\n");
+    return 1;
+  }
   int result = 0;
   {
     const std::vector<std::string> escaped = EscapedSuiteQuery(argc, argv);
@@ -118,7 +124,7 @@ int main(int argc, char** argv) {
     result = context.run();
   }
   if (result == 0 && Counter::run && Counter::started == 0 && SelectedWithoutSkipping(argc, argv) > 0) {
-    std::printf("[prt_tests] skipped: the selected test cases need the course data (%s) or ffmpeg\n",
+    std::printf("[prt_tests] skipped: the selected test cases need the course data (%s), ffmpeg or cmark-gfm\n",
                 PRT_SHARED_DATA_DIR);
     return kSkipExit;
   }

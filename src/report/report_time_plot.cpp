@@ -90,7 +90,7 @@ std::string TimingMarkdown(const ReportData& d) {
                  "(round_robin_timing.h), so a burst of other work slows a round of all of them rather than a few. ",
                  d.timed_configurations, rounds, d.timing.min_rounds, 100.0 * d.timing.spread_limit,
                  1000.0 * d.timing.min_sample_seconds) +
-       "A time is the median of its samples, with their range (min-max) in brackets here, in report.csv "
+       "A time is the median of its samples, with their range (min-max) in parentheses here, in report.csv "
        "(`seconds`, `seconds_min`, `seconds_max`) and as bars in error_vs_time.png. Work is counted beside the "
        "seconds: rays traced and directions whose basis was evaluated per run (report.csv `rays`, "
        "`basis_evaluations`), which no other work on the machine changes.\n\n";

@@ -107,6 +107,18 @@ TEST_SUITE("report") {
     CHECK(markers.size() == 2);                       // the samplers' shapes differ
     CHECK(series[0].color != series[1].color);        // and the lmax's colours
 
+    // Interreflection too: one panel per sampled mode, stacked.
+    const Image8 one = ErrorVsTimePlot(d);
+    ReportData both = d;
+    for (SweepRow r : d.rows) {
+      r.mode = "interreflection";
+      both.rows.push_back(r);
+    }
+    const Image8 two = ErrorVsTimePlot(both);
+    CHECK(two.width == one.width);
+    CHECK(two.height == 2 * one.height);
+    CHECK(ErrorVsTimeSeries(both, "interreflection", true).size() == 4);
+
     // report.csv: the timing columns last, with the run's own figures, on every sweep row.
     std::istringstream lines(csv);
     std::string header, row;
