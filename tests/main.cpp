@@ -25,6 +25,12 @@
 
 namespace {
 
+/// Whether the environment variable `name` is set to something other than "" or "0".
+bool Required(const char* name) {
+  const char* value = std::getenv(name);
+  return value && *value && std::strcmp(value, "0") != 0;
+}
+
 /// The exit status CTest takes for "skipped" (SKIP_RETURN_CODE in the top-level CMakeLists.txt).
 constexpr int kSkipExit = 77;
 
@@ -98,19 +104,16 @@ unsigned SelectedWithoutSkipping(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const char* required = std::getenv("PRT_REQUIRE_SHARED_DATA");
-  if (required && *required && std::strcmp(required, "0") != 0 && !prt::test::SharedData()) {
+  if (Required("PRT_REQUIRE_SHARED_DATA") && !prt::test::SharedData()) {
     std::fprintf(stderr, "prt_tests: PRT_REQUIRE_SHARED_DATA is set, but the course data (%s) is missing\n",
                  PRT_SHARED_DATA_DIR);
     return 1;
   }
-  const char* need_ffmpeg = std::getenv("PRT_REQUIRE_FFMPEG");
-  if (need_ffmpeg && *need_ffmpeg && std::strcmp(need_ffmpeg, "0") != 0 && !prt::test::Ffmpeg()) {
+  if (Required("PRT_REQUIRE_FFMPEG") && !prt::test::Ffmpeg()) {
     std::fprintf(stderr, "prt_tests: PRT_REQUIRE_FFMPEG is set, but ffmpeg and ffprobe are not on PATH\n");
     return 1;
   }
-  const char* need_cmark = std::getenv("PRT_REQUIRE_CMARK_GFM");
-  if (need_cmark && *need_cmark && std::strcmp(need_cmark, "0") != 0 && !prt::test::CmarkGfm()) {
+  if (Required("PRT_REQUIRE_CMARK_GFM") && !prt::test::CmarkGfm()) {
     std::fprintf(stderr, "prt_tests: PRT_REQUIRE_CMARK_GFM is set, but cmark-gfm is not on PATH\n");
     return 1;
   }

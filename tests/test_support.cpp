@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -17,6 +16,7 @@
 
 #include "core/atomic_file.h"
 #include "core/child_process.h"
+#include "core/error.h"
 #include "geometry/procedural.h"
 #include "io/obj_writer.h"
 #include "render/render_frames.h"
@@ -61,10 +61,15 @@ doctest::skip NeedsFfmpeg() { return doctest::skip(!Ffmpeg().has_value()); }
 
 std::optional<std::string> CmarkGfm() { return FindProgram("cmark-gfm"); }
 
-doctest::skip NeedsCmarkGfm() {
-  const char* required = std::getenv("PRT_REQUIRE_CMARK_GFM");
-  const bool require = required && *required && std::strcmp(required, "0") != 0;
-  return doctest::skip(!require && !CmarkGfm().has_value());
+doctest::skip NeedsCmarkGfm() { return doctest::skip(!CmarkGfm().has_value()); }
+
+std::string ErrorMessage(const std::function<void()>& run) {
+  try {
+    run();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
 }
 
 std::string PrtBinary() {

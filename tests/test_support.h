@@ -5,6 +5,7 @@
 
 #include <doctest/doctest.h>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -43,9 +44,11 @@ doctest::skip NeedsFfmpeg();
 std::optional<std::string> CmarkGfm();
 
 /// The decorator of a test case that needs CmarkGfm(): skipped, and counted as skipped by the
-/// runner, without it. With PRT_REQUIRE_CMARK_GFM=1 (CI sets it) the test is never skipped, so
-/// the program's absence fails it (the test REQUIREs CmarkGfm()).
+/// runner, without it (PRT_REQUIRE_CMARK_GFM=1, which CI sets, makes its absence an error).
 doctest::skip NeedsCmarkGfm();
+
+/// The message of the prt::Error (core/error.h) that `run` throws; "" when it throws none.
+std::string ErrorMessage(const std::function<void()>& run);
 
 /// The `prt` binary the command-line tests run: $PRT_BINARY if set, else the one built beside
 /// the tests (its path is compiled in, so the tests need no runner to find it).

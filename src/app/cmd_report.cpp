@@ -18,6 +18,7 @@
 #include "report/report_wavelet.h"
 #include "report/report_write.h"
 #include "report/stability.h"
+#include "texture/albedo_limit.h"
 
 namespace prt {
 namespace {
@@ -30,19 +31,18 @@ std::string Fmt(double v) {
 /// What --stability reads: its cases are fixed, so every scene and sweep option would be ignored.
 const std::set<std::string> kStabilityOptions = {"--stability", "--out", "--replace", "--quiet", "--threads"};
 
-/// The report scene under a coat of `ks`: albedo + KS <= 1 kept per vertex as a textured mesh
-/// keeps it per texel (texture/albedo_limit.h): a vertex whose largest channel m is above
-/// 1 - KS is scaled by (1 - KS) / m, hue kept. Returns the summary line, empty if none was, and
+/// The report scene under a coat of `ks`: albedo + KS <= 1 kept per vertex by the rule a
+/// textured mesh keeps per texel (texture/albedo_limit.h), hue kept. Returns the summary line, empty if none was, and
 /// in `note` what the report's scene name adds.
 std::string FitReportSceneToCoat(Mesh& mesh, double ks, std::string& note) {
   const float limit = static_cast<float>(1.0 - ks);
   std::size_t scaled = 0;
   glm::vec3 example(0.f), fitted(0.f);
   for (glm::vec3& a : mesh.albedo) {
-    const float m = std::max({a.x, a.y, a.z});
-    if (m <= limit) continue;
-    if (scaled++ == 0) example = a, fitted = a * (limit / m);
-    a *= limit / m;
+    const glm::vec3 fit = LimitAlbedo(a, limit);
+    if (fit == a) continue;
+    if (scaled++ == 0) example = a, fitted = fit;
+    a = fit;
   }
   if (!scaled) return "";
   note = Formatted(", albedo fitted under the coat: %zu vertices scaled to 1 - KS = %.3g, hue kept", scaled, double(limit));

@@ -23,10 +23,10 @@
 /// Light projection is measured separately: the sky averaged into cubemaps of growing face size,
 /// projected (timed) and compared coefficient by coefficient with its exact projection.
 
-#include <string>
-#include <vector>
-
 #include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "env/environment.h"
 #include "geometry/mesh.h"

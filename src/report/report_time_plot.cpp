@@ -16,6 +16,23 @@ PlotMarker SamplerMarker(const std::string& sampler) {
   return PlotMarker::kTriangle;
 }
 
+/// One panel: the rows of `mode`.
+Image8 ModePanel(const ReportData& d, const std::string& mode, bool seconds) {
+  int samples = 0;
+  for (const SweepRow& r : d.rows)
+    if (r.mode == mode) samples = r.time.samples;
+  PlotOptions o;
+  o.width = 1100, o.height = 720;
+  o.title = mode + ": total error vs " + (seconds ? "precompute time" : "rays traced (times untrusted)");
+  o.x_label = seconds ? "seconds (median; bars: min-max)" : "rays traced per run";
+  o.y_label = "relative RMS error";
+  o.notes = {"square uniform, circle", "stratified, triangle fibonacci",
+             Formatted("hollow: lmax < %d, its", d.max_lmax), Formatted("time and rays the lmax %d", d.max_lmax),
+             "run's (same directions)"};
+  if (seconds) o.notes.push_back(Formatted("bars: %d samples each", samples));
+  return DrawLogLogPlot(ErrorVsTimeSeries(d, mode, seconds), o);
+}
+
 }  // namespace
 
 std::vector<PlotSeries> ErrorVsTimeSeries(const ReportData& d, const std::string& mode, bool seconds) {
@@ -42,35 +59,13 @@ std::vector<PlotSeries> ErrorVsTimeSeries(const ReportData& d, const std::string
   return series;
 }
 
-namespace {
-
-/// One panel: the rows of `mode`.
-Image8 ModePanel(const ReportData& d, const std::string& mode, bool seconds) {
-  int samples = 0;
-  for (const SweepRow& r : d.rows)
-    if (r.mode == mode) samples = r.time.samples;
-  PlotOptions o;
-  o.width = 1100, o.height = 720;
-  o.title = mode + ": total error vs " + (seconds ? "precompute time" : "rays traced (times untrusted)");
-  o.x_label = seconds ? "seconds (median; bars: min-max)" : "rays traced per run";
-  o.y_label = "relative RMS error";
-  o.notes = {"square uniform, circle", "stratified, triangle fibonacci",
-             Formatted("hollow: lmax < %d, its", d.max_lmax), Formatted("time and rays the lmax %d", d.max_lmax),
-             "run's (same directions)"};
-  if (seconds) o.notes.push_back(Formatted("bars: %d samples each", samples));
-  return DrawLogLogPlot(ErrorVsTimeSeries(d, mode, seconds), o);
-}
-
-}  // namespace
-
-bool PlotsSeconds(const ReportData& d) { return TimesTrusted(d); }
-
 Image8 ErrorVsTimePlot(const ReportData& d) {
   std::vector<std::string> modes;
   for (const SweepRow& r : d.rows)
     if (r.sampler != "closed-form" && (modes.empty() || modes.back() != r.mode)) modes.push_back(r.mode);
+  const bool seconds = TimesTrusted(d);
   std::vector<Image8> panels;
-  for (const std::string& m : modes) panels.push_back(ModePanel(d, m, PlotsSeconds(d)));
+  for (const std::string& m : modes) panels.push_back(ModePanel(d, m, seconds));
   if (panels.empty()) panels.push_back(DrawLogLogPlot({}, PlotOptions{}));
   return StackVertically(panels);
 }
@@ -111,7 +106,7 @@ std::string TimingMarkdown(const ReportData& d) {
     s.back() = '.';
     s += "\n";
   }
-  s += PlotsSeconds(d) ? "- The slopes against seconds below are fitted to the medians; error_vs_time.png plots "
+  s += TimesTrusted(d) ? "- The slopes against seconds below are fitted to the medians; error_vs_time.png plots "
                          "seconds.\n"
                        : "- So the slopes against seconds and the times to 1% are left out below, and "
                          "error_vs_time.png plots the error against rays traced instead of seconds.\n";

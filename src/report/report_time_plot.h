@@ -20,9 +20,6 @@
 
 namespace prt {
 
-/// Whether error_vs_time.png's x axis is seconds (true) or rays traced (the times untrusted).
-bool PlotsSeconds(const ReportData& data);
-
 /// The series of the panel of `mode`: one per (sampler, lmax) in the order first met, x the
 /// median seconds with their range, or (`seconds` false) the rays traced; y the total error.
 std::vector<PlotSeries> ErrorVsTimeSeries(const ReportData& data, const std::string& mode, bool seconds);

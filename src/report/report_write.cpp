@@ -33,6 +33,7 @@ std::string When(const SweepRow& r, bool trusted) { return trusted ? TimeWithRan
 /// The timing columns, last on every line (empty on the glossy and basis rows, whose times are
 /// single runs of their own studies).
 constexpr const char* kTimingColumns = "seconds_min,seconds_max,timing_samples,timed_lmax,rays,basis_evaluations";
+constexpr const char* kNoTiming = ",,,,,,";  // a comma and the six columns, empty
 
 std::string TimingFields(const SweepRow& r) {
   char b[200];
@@ -41,35 +42,33 @@ std::string TimingFields(const SweepRow& r) {
   return b;
 }
 
+/// Every line of `rows` (each ending in a newline) with `suffix` before its newline.
+std::string EachLineEndingWith(const std::string& rows, const std::string& suffix) {
+  std::string out;
+  for (std::size_t begin = 0, end; begin < rows.size(); begin = end + 1) {
+    end = std::min(rows.find('\n', begin), rows.size());
+    out += rows.substr(begin, end - begin) + suffix + "\n";
+  }
+  return out;
+}
+
 std::string Csv(const ReportData& d) {
-  std::string s = "mode,sampler,samples,directions,lmax,seconds,sampling_rms,sampling_max,sampling_relative,"
-                  "total_rms,total_max,total_relative,psnr_db,material,path,lobe_relative,vs_vector_relative,matrix_bytes\n";
+  // With the basis section, three more columns: every row before its rows is an SH one.
+  const std::string basis = d.wavelet ? ",sh,," : "";
+  std::string s = std::string("mode,sampler,samples,directions,lmax,seconds,sampling_rms,sampling_max,sampling_relative,"
+                              "total_rms,total_max,total_relative,psnr_db,material,path,lobe_relative,vs_vector_relative,"
+                              "matrix_bytes") +
+                  (d.wavelet ? ",basis,budget,bytes_per_vertex" : "") + "," + kTimingColumns + "\n";
   for (const auto& r : d.rows) {
     char b[400];
-    std::snprintf(b, sizeof b, "%s,%s,%d,%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,diffuse,diffuse,,,\n", r.mode.c_str(),
+    std::snprintf(b, sizeof b, "%s,%s,%d,%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,diffuse,diffuse,,,", r.mode.c_str(),
                   r.sampler.c_str(), r.samples, r.directions, r.lmax, r.time.median, r.sampling.rms, r.sampling.max,
                   r.sampling.relative, r.total.rms, r.total.max, r.total.relative, r.psnr);
-    s += b;
+    s += b + basis + "," + TimingFields(r) + "\n";
   }
-  if (d.glossy) s += GlossyCsvRows(*d.glossy);
-  if (d.wavelet) {
-    // Three more columns for the basis section's rows; every row above is an SH one.
-    std::string widened;
-    for (std::size_t begin = 0, end; begin < s.size(); begin = end + 1) {
-      end = std::min(s.find('\n', begin), s.size());
-      widened += s.substr(begin, end - begin) + (begin == 0 ? ",basis,budget,bytes_per_vertex\n" : ",sh,,\n");
-    }
-    s = widened + WaveletCsvRows(*d.wavelet);
-  }
-  // The timing columns: the sweep's rows are lines 1..rows.size(), in order.
-  std::string timed;
-  std::size_t line = 0;
-  for (std::size_t begin = 0, end; begin < s.size(); begin = end + 1, ++line) {
-    end = std::min(s.find('\n', begin), s.size());
-    const std::string fields = line == 0 ? kTimingColumns : line <= d.rows.size() ? TimingFields(d.rows[line - 1]) : ",,,,,";
-    timed += s.substr(begin, end - begin) + "," + fields + "\n";
-  }
-  return timed;
+  if (d.glossy) s += EachLineEndingWith(GlossyCsvRows(*d.glossy), basis + kNoTiming);
+  if (d.wavelet) s += EachLineEndingWith(WaveletCsvRows(*d.wavelet), kNoTiming);
+  return s;
 }
 
 const ModeBaseline* BaselineOf(const ReportData& d, const std::string& mode) {

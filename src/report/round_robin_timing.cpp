@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 namespace prt {
 
@@ -20,14 +21,7 @@ double Quantile(std::vector<double> v, double p) {
   return i + 1 < v.size() ? v[i] + (at - double(i)) * (v[i + 1] - v[i]) : v[i];
 }
 
-double Median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  const std::size_t h = v.size() / 2;
-  std::nth_element(v.begin(), v.begin() + h, v.end());
-  if (v.size() % 2) return v[h];
-  const double upper = v[h];
-  return 0.5 * (upper + *std::max_element(v.begin(), v.begin() + h));
-}
+double Median(std::vector<double> v) { return Quantile(std::move(v), 0.5); }
 
 std::vector<TimingStats> TimeRoundRobin(const std::vector<std::function<void()>>& runs, const RoundRobinPlan& plan,
                                         const SecondsClock& clock) {

@@ -67,7 +67,7 @@ struct TimingStats {
 /// (Hyndman and Fan's definition 7, R's default); 0 for none.
 double Quantile(std::vector<double> v, double p);
 
-/// Median of `v` (the mean of the middle two for an even count); 0 for none.
+/// Median of `v`: Quantile(v, 0.5), the mean of the middle two for an even count; 0 for none.
 double Median(std::vector<double> v);
 
 /// Times each of `runs` in round robin as above. `runs[i]` is one run of configuration i.

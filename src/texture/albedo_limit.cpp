@@ -7,6 +7,11 @@
 
 namespace prt {
 
+glm::vec3 LimitAlbedo(const glm::vec3& albedo, float limit) {
+  const float m = std::max({albedo.x, albedo.y, albedo.z});
+  return m <= limit ? albedo : glm::min(albedo * (limit / m), glm::vec3(limit));
+}
+
 std::optional<Texture> LimitAlbedo(const Texture& texture, float limit, std::size_t& scaled) {
   const auto above = [limit](const glm::vec3& p) { return std::max({p.x, p.y, p.z}) > limit; };
   const auto& texels = texture.level(0).pixels;
@@ -17,10 +22,8 @@ std::optional<Texture> LimitAlbedo(const Texture& texture, float limit, std::siz
   ImageF image = texture.level(0);
   scaled = 0;
   for (glm::vec3& p : image.pixels) {
-    const float m = std::max({p.x, p.y, p.z});
-    if (m <= limit) continue;
-    // Scaled, then clipped: the product can round a hair above the limit.
-    p = glm::min(p * (limit / m), glm::vec3(limit));
+    if (!above(p)) continue;
+    p = LimitAlbedo(p, limit);
     ++scaled;
   }
   return Texture(std::move(image), texture.name());

@@ -14,9 +14,16 @@
 #include <cstddef>
 #include <optional>
 
+#include <glm/vec3.hpp>
+
 #include "texture/texture.h"
 
 namespace prt {
+
+/// One albedo under the rule: scaled by limit / m when its largest channel m exceeds `limit`
+/// (then clipped to it, as the product can round a hair above), else unchanged. The report
+/// scene applies it per vertex.
+glm::vec3 LimitAlbedo(const glm::vec3& albedo, float limit);
 
 /// `texture` with every texel's largest channel at most `limit` (the rule above); `scaled` is
 /// set to the number of level-0 texels that were scaled. The name stays the original's. Empty

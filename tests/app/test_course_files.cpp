@@ -8,13 +8,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "core/atomic_file.h"
+#include "tests/app/viewer_files.h"
 #include "tests/env/env_test_util.h"
 #include "tests/test_support.h"
 
@@ -28,42 +28,6 @@ using test::Q;
 // agree to a few units of the 7th digit.
 constexpr double kPrintedRelative = 2e-6;
 constexpr double kPrintedAbsolute = 1e-7;
-
-enum class Header { kSkip, kNone };
-
-/// A file read as the course's viewer reads it: transport.txt's header line skipped (light.txt
-/// has none), each further non-empty line split on single spaces into numbers. A row that would
-/// not give exactly `per_row` numbers (an empty field from a double or trailing space, a token
-/// that is not a number) fails.
-std::vector<std::vector<double>> ReadLikeTheViewer(const std::string& path, std::size_t per_row,
-                                                   Header header = Header::kSkip) {
-  std::ifstream in(path);
-  REQUIRE(in.good());
-  std::string line;
-  if (header == Header::kSkip) std::getline(in, line);  // the vertex count: the viewer ignores it
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    std::vector<double> row;
-    std::size_t start = 0;
-    for (;;) {
-      const std::size_t space = line.find(' ', start);
-      const std::string token = line.substr(start, space == std::string::npos ? std::string::npos : space - start);
-      char* end = nullptr;
-      const double v = std::strtod(token.c_str(), &end);
-      CAPTURE(line);
-      REQUIRE_FALSE(token.empty());
-      REQUIRE(*end == '\0');
-      row.push_back(v);
-      if (space == std::string::npos) break;
-      start = space + 1;
-    }
-    CAPTURE(line);
-    REQUIRE(row.size() == per_row);
-    rows.push_back(row);
-  }
-  return rows;
-}
 
 /// WriteFloorAndWall with a white floor and an orange wall (0.9, 0.5, 0.1: every channel its own).
 std::string WriteWallScene(const std::string& dir) {
@@ -124,12 +88,12 @@ TEST_SUITE("app") {
     REQUIRE(r.exit_code == 0);
     CHECK(r.err.find("luminance-weighted mix 0.2126 R + 0.7152 G + 0.0722 B") != std::string::npos);
 
-    const auto light = ReadLikeTheViewer(out + "/light.txt", 3, Header::kNone);
+    const auto light = test::ReadLikeTheViewer(out + "/light.txt", 3, test::ViewerHeader::kNone);
     CHECK(light.size() == 9);
-    const auto mix = ReadLikeTheViewer(out + "/transport.txt", 9);
-    const auto red = ReadLikeTheViewer(out + "/transport_r.txt", 9);
-    const auto green = ReadLikeTheViewer(out + "/transport_g.txt", 9);
-    const auto blue = ReadLikeTheViewer(out + "/transport_b.txt", 9);
+    const auto mix = test::ReadLikeTheViewer(out + "/transport.txt", 9);
+    const auto red = test::ReadLikeTheViewer(out + "/transport_r.txt", 9);
+    const auto green = test::ReadLikeTheViewer(out + "/transport_g.txt", 9);
+    const auto blue = test::ReadLikeTheViewer(out + "/transport_b.txt", 9);
     REQUIRE(mix.size() == 3 * (test::FloorTriangles() + test::WallTriangles()));
     REQUIRE(red.size() == mix.size());
     REQUIRE(green.size() == mix.size());
@@ -149,7 +113,7 @@ TEST_SUITE("app") {
     const auto direct_run = test::RunPrt("precompute --mesh " + Q(mesh) +
                                          " --env furnace --transport shadowed --samples 256 --out " + Q(out + "_direct"));
     REQUIRE(direct_run.exit_code == 0);
-    const auto direct = ReadLikeTheViewer(out + "_direct/transport.txt", 9);
+    const auto direct = test::ReadLikeTheViewer(out + "_direct/transport.txt", 9);
     REQUIRE(direct.size() == mix.size());
     double bounce_r = 0.0, bounce_g = 0.0, bounce_b = 0.0;
     for (std::size_t i = 0; i < 3 * test::FloorTriangles(); ++i) {
@@ -189,7 +153,7 @@ TEST_SUITE("app") {
     CAPTURE(precomputed.err);
     REQUIRE(precomputed.exit_code == 0);
     for (const std::string& file : {dir + "/printed.txt", dir + "/out/light.txt"}) {
-      const auto rows = ReadLikeTheViewer(file, 3, Header::kNone);
+      const auto rows = test::ReadLikeTheViewer(file, 3, test::ViewerHeader::kNone);
       REQUIRE(rows.size() == 9);
       for (int k = 0; k < 9; ++k)
         for (int c = 0; c < 3; ++c) {
@@ -207,7 +171,7 @@ TEST_SUITE("app") {
     const auto r = test::RunPrt("precompute --mesh " + Q(mesh) + " --albedo 0.5,0.5,0.5 --env furnace " +
                                 "--transport interreflection --samples 64 --out " + Q(dir + "/out"));
     REQUIRE(r.exit_code == 0);
-    CHECK(ReadLikeTheViewer(dir + "/out/transport.txt", 9).size() == 3 * (test::FloorTriangles() + test::WallTriangles()));
+    CHECK(test::ReadLikeTheViewer(dir + "/out/transport.txt", 9).size() == 3 * (test::FloorTriangles() + test::WallTriangles()));
     CHECK_FALSE(fs::exists(dir + "/out/transport_r.txt"));
   }
 
@@ -222,11 +186,11 @@ TEST_SUITE("app") {
                                                 "the course's WebGL viewer reads exactly 9");
     CHECK(warning != std::string::npos);
     CHECK(warning < three.err.find("mesh: "));  // said before any work
-    CHECK(ReadLikeTheViewer(dir + "/transport.txt", 16).size() == 12);
+    CHECK(test::ReadLikeTheViewer(dir + "/transport.txt", 16).size() == 12);
     const auto two = test::RunPrt(base + " --lmax 2");
     CHECK(two.exit_code == 0);
     CHECK(two.err.find("viewer") == std::string::npos);
-    CHECK(ReadLikeTheViewer(dir + "/transport.txt", 9).size() == 12);
+    CHECK(test::ReadLikeTheViewer(dir + "/transport.txt", 9).size() == 12);
   }
 
   TEST_CASE("course files: a material the .mtl does not define is one warning in prt's words") {
@@ -252,8 +216,8 @@ TEST_SUITE("app") {
     const std::size_t first = r.err.find(said);
     CHECK(first != std::string::npos);
     CHECK(r.err.find("MC003_Kozakura_Mari", first + said.size()) == std::string::npos);
-    CHECK(ReadLikeTheViewer(out + "/transport.txt", 9).size() == 30522);  // three rows per face of the file
-    CHECK(ReadLikeTheViewer(out + "/light.txt", 3, Header::kNone).size() == 9);
+    CHECK(test::ReadLikeTheViewer(out + "/transport.txt", 9).size() == 30522);  // three rows per face of the file
+    CHECK(test::ReadLikeTheViewer(out + "/light.txt", 3, test::ViewerHeader::kNone).size() == 9);
   }
 }
 

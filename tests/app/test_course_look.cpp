@@ -14,6 +14,7 @@
 #include <glm/vec3.hpp>
 
 #include "io/png_io.h"
+#include "tests/app/viewer_files.h"
 #include "tests/env/env_test_util.h"
 #include "tests/test_support.h"
 
@@ -26,34 +27,6 @@ using test::Q;
 // prt shades in float, this test in double (a difference far below a level), so what remains is
 // the 8-bit rounding of a value that lies near a level's boundary: one level.
 constexpr int kViewerLevels = 1;
-
-/// A file read as the course's viewer reads it: the header line skipped when `header`, each
-/// further non-empty line split on single spaces into exactly `per_row` numbers.
-std::vector<std::vector<double>> ReadLikeTheViewer(const std::string& path, std::size_t per_row, bool header) {
-  std::ifstream in(path);
-  REQUIRE(in.good());
-  std::string line;
-  if (header) std::getline(in, line);  // the vertex count: the viewer ignores it
-  std::vector<std::vector<double>> rows;
-  while (std::getline(in, line)) {
-    if (line.empty()) continue;
-    std::vector<double> row;
-    std::size_t start = 0;
-    for (;;) {
-      const std::size_t space = line.find(' ', start);
-      const std::string token = line.substr(start, space == std::string::npos ? std::string::npos : space - start);
-      char* end = nullptr;
-      row.push_back(std::strtod(token.c_str(), &end));
-      CAPTURE(line);
-      REQUIRE((!token.empty() && *end == '\0'));
-      if (space == std::string::npos) break;
-      start = space + 1;
-    }
-    REQUIRE(row.size() == per_row);
-    rows.push_back(row);
-  }
-  return rows;
-}
 
 /// The viewer's fragment shader's toSRGB, then 8 bits.
 int ViewerLevel(double x) {
@@ -101,8 +74,8 @@ TEST_SUITE("app") {
     REQUIRE_MESSAGE(pre.exit_code == 0, pre.err);
 
     // The viewer's colour of each corner: per channel, the 9 light coefficients times the row's 9.
-    const auto light = ReadLikeTheViewer(dir + "/files/light.txt", 3, false);
-    const auto transport = ReadLikeTheViewer(dir + "/files/transport.txt", 9, true);
+    const auto light = test::ReadLikeTheViewer(dir + "/files/light.txt", 3, test::ViewerHeader::kNone);
+    const auto transport = test::ReadLikeTheViewer(dir + "/files/transport.txt", 9);
     REQUIRE(light.size() == 9);
     REQUIRE(transport.size() == 6);  // three rows per face
     std::vector<glm::ivec3> corners;

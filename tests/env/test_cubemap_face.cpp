@@ -28,12 +28,7 @@ std::string WriteCubeFolder(const std::string& dir) { return test::WritePngCube(
 
 /// The message RefuseCubemapFace throws for `path`, or "" when it passes.
 std::string Refusal(const std::string& path) {
-  try {
-    RefuseCubemapFace(path);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
+  return test::ErrorMessage([&] { RefuseCubemapFace(path); });
 }
 
 }  // namespace

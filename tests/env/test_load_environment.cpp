@@ -48,12 +48,7 @@ void WriteExr(const std::string& path, int w, int h, Imf::Compression compressio
 }
 
 std::string ErrorOf(const std::string& spec) {
-  try {
-    LoadEnvironment(spec, CubeLayout::kStandard);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
+  return test::ErrorMessage([&] { LoadEnvironment(spec, CubeLayout::kStandard); });
 }
 
 }  // namespace

@@ -31,12 +31,7 @@ bool Near(const glm::vec3& a, const glm::vec3& b, float tol = kColourTolerance) 
 // The error message of loading `fixture`, which must start with its path and contain `part`.
 std::string ExpectError(const std::string& fixture, const std::string& part) {
   const std::string path = test::Fixture("obj/" + fixture);
-  std::string message;
-  try {
-    LoadObj(path);
-  } catch (const Error& e) {
-    message = e.what();
-  }
+  const std::string message = test::ErrorMessage([&] { LoadObj(path); });
   CAPTURE(fixture);
   CAPTURE(message);
   CHECK(message.rfind(path + ": ", 0) == 0);

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "material/material.h"
+#include "tests/test_support.h"
 
 using namespace prt;
 
@@ -12,12 +13,7 @@ TEST_SUITE_BEGIN("material");
 
 namespace {
 std::string Problem(const std::string& text) {
-  try {
-    ParseMaterial(text);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
+  return test::ErrorMessage([&] { ParseMaterial(text); });
 }
 }  // namespace
 

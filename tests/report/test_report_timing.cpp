@@ -90,7 +90,7 @@ TEST_SUITE("report") {
     // The median and its range, as TimeWithRange writes them.
     CHECK(TimeWithRange(Time(0.016, 0.1)) == "0.016 s (0.0144-0.0176)");
 
-    const auto series = ErrorVsTimeSeries(d, "shadowed", PlotsSeconds(d));
+    const auto series = ErrorVsTimeSeries(d, "shadowed", TimesTrusted(d));
     REQUIRE(series.size() == 4);  // 2 samplers x 2 lmax
     std::set<int> markers;
     for (const PlotSeries& s : series) {
@@ -160,7 +160,7 @@ TEST_SUITE("report") {
     CHECK(md.find("**2 pairs out of order**") != std::string::npos);
     CHECK(md.find("| shadowed | fibonacci | left out (times untrusted) | -0.50 |") != std::string::npos);
     CHECK(md.find("| shadowed | uniform | left out (times untrusted) |") != std::string::npos);
-    const auto series = ErrorVsTimeSeries(d, "shadowed", PlotsSeconds(d));
+    const auto series = ErrorVsTimeSeries(d, "shadowed", TimesTrusted(d));
     REQUIRE(!series.empty());
     CHECK(series[0].x == std::vector<double>{800, 1600, 3200});  // rays, not seconds
     CHECK(series[0].x_min.empty());
