@@ -10,6 +10,7 @@
 
 #include "app/args.h"
 #include "geometry/mesh.h"
+#include "material/material.h"
 #include "raster/rasterizer.h"
 
 namespace prt::bench {
@@ -59,5 +60,8 @@ int BenchTransport(Args& args);
 int BenchWavelet(Args& args);
 /// The glossy measurements of `prt bench transport` (bench_glossy.cpp): `threads` 0 = all cores.
 void BenchGlossy(int runs, int threads, int samples, int lmax);
+/// The glossy precompute's lobe rays (`lobe_rays` per vertex toward `eye`) traced as fans and as
+/// single rays, side by side (bench_lobe_rays.cpp).
+void BenchLobeRays(const Mesh& mesh, const Material& material, const glm::dvec3& eye, int lobe_rays, int runs);
 
 }  // namespace prt::bench

@@ -8,7 +8,11 @@
 //     frame there is the per-vertex shading only: the light's rotation (microseconds) and the
 //     rasterization, the same for both, are left out. The same with the rasterization of
 //     render's default frame (640x480, 2x2 supersampling) added to both ->
-//     ratio_matrix_frame_vs_diffuse_frame_with_raster, what a render loop sees.
+//     ratio_matrix_frame_vs_diffuse_frame_with_raster, what a render loop sees;
+//   - the matrices compressed by clustered PCA at render's default --cpca (cpca/cpca_transfer.h):
+//     the compression's time, bytes against the full matrices' (ratio_cpca_bytes_vs_matrices),
+//     its error, and the orbit frame shaded from it against the diffuse frame
+//     (ratio_cpca_frame_vs_diffuse_frame, with the rasterization too) and the full matrix frame.
 
 #include <algorithm>
 #include <string>
@@ -16,11 +20,13 @@
 #include "app/render_args.h"
 #include "bench/bench.h"
 #include "core/parallel.h"
+#include "cpca/cpca_transfer.h"
 #include "env/procedural.h"
 #include "geometry/bvh_kernels.h"
 #include "geometry/mesh_ops.h"
 #include "geometry/procedural.h"
 #include "material/material.h"
+#include "precompute/error_metrics.h"
 #include "precompute/light.h"
 #include "precompute/shade.h"
 #include "precompute/transfer_matrix.h"
@@ -86,6 +92,30 @@ void BenchGlossy(int runs, int threads, int samples, int lmax) {
   Print("frame_diffuse_shading_ms", 1e3 * frame.ours);
   Print("frame_matrix_shading_ms", 1e3 * frame.theirs);
   Print("ratio_matrix_frame_vs_diffuse_frame", frame.ratio);
+
+  // The same orbit frame from the matrices compressed by clustered PCA at render's default --cpca.
+  CpcaOptions co;
+  co.clusters = RenderOptions{}.cpca_clusters;
+  co.terms = RenderOptions{}.cpca_terms;
+  CpcaTransfer cpca;
+  const double cpca_s = MedianSeconds(std::min(runs, 3), [&] { cpca = CompressTransferMatrices(m, co); });
+  const double full_bytes = double(TransferMatrixBytes(mesh.vertex_count(), lmax, m.channels));
+  Print("cpca_clusters", double(co.clusters));
+  Print("cpca_terms", double(co.terms));
+  Print("cpca_compress_s", cpca_s);
+  Print("cpca_bytes", double(cpca.model.Bytes()));
+  Print("ratio_cpca_bytes_vs_matrices", double(cpca.model.Bytes()) / full_bytes);
+  Print("cpca_matrices_relative_error", CpcaRelativeError(cpca.model, m.matrices.data()));
+  Print("cpca_glossy_relative_error",
+        CompareVertices(GlossyFromCpca(mesh, cpca, m.material, light, eye), ShadeGlossy(mesh, m, light, &eye)).relative);
+  const SideBySide cpca_frame = TimeSideBySide(std::max(runs, 9), [&] { ShadeVertices(mesh, d, light); },
+                                               [&] { ShadeVerticesCpca(mesh, m, cpca, light, true, eye); });
+  Print("frame_cpca_shading_ms", 1e3 * cpca_frame.theirs);
+  Print("ratio_cpca_frame_vs_diffuse_frame", cpca_frame.ratio);
+  const SideBySide cpca_matrix = TimeSideBySide(std::max(runs, 9), [&] { ShadeVertices(mesh, m, light, true, &eye); },
+                                                [&] { ShadeVerticesCpca(mesh, m, cpca, light, true, eye); });
+  Print("ratio_cpca_frame_vs_matrix_frame", cpca_matrix.ratio);
+
   DemoFrameDrawer drawer;
   const auto draw = [&](const std::vector<glm::vec3>& colors) { drawer.Draw(mesh, colors); };
   const SideBySide drawn = TimeSideBySide(std::max(runs, 9), [&] { draw(ShadeVertices(mesh, d, light)); },
@@ -93,6 +123,10 @@ void BenchGlossy(int runs, int threads, int samples, int lmax) {
   Print("frame_diffuse_with_raster_ms", 1e3 * drawn.ours);
   Print("frame_matrix_with_raster_ms", 1e3 * drawn.theirs);
   Print("ratio_matrix_frame_vs_diffuse_frame_with_raster", drawn.ratio);
+  const SideBySide drawn_cpca = TimeSideBySide(std::max(runs, 9), [&] { draw(ShadeVertices(mesh, d, light)); },
+                                               [&] { draw(ShadeVerticesCpca(mesh, m, cpca, light, true, eye)); });
+  Print("frame_cpca_with_raster_ms", 1e3 * drawn_cpca.theirs);
+  Print("ratio_cpca_frame_vs_diffuse_frame_with_raster", drawn_cpca.ratio);
   SetThreadCount(0);
 }
 

@@ -1,6 +1,7 @@
 // `prt bench raster`: frames per second of the rasterizer at 1920x1080 on a procedural mesh of
-// about 100k triangles with per-vertex colours; tone mapping against drawing; PNG encoding at
-// several zlib levels; the whole render loop (draw, tone map, encode) at 1920x1080 and 640x480. Built with
+// about 100k triangles with per-vertex colours; tone mapping against drawing (fused into the
+// bands, and as a pass of its own); PNG encoding at several zlib levels; the whole render loop
+// (draw and tone map, encode) at 1920x1080 and 640x480, with its page faults per frame. Built with
 // -DPRT_BENCH_LLVMPIPE=ON it also draws the same triangles through Mesa's llvmpipe (OSMesa,
 // legacy OpenGL), side by side in the same run, and compares the two images.
 #include <algorithm>
@@ -10,7 +11,7 @@
 #include <vector>
 
 #include "bench/bench.h"
-#include "core/background_jobs.h"
+#include "core/memory.h"
 #include "core/error.h"
 #include "core/parallel.h"
 #include "geometry/mesh_ops.h"
@@ -18,6 +19,7 @@
 #include "io/png_io.h"
 #include "raster/rasterizer.h"
 #include "raster/tonemap.h"
+#include "render/frame_writer.h"
 
 #ifdef PRT_BENCH_LLVMPIPE
 #include <GL/osmesa.h>
@@ -135,23 +137,44 @@ double Agreement(const Image8& a, const Image8& b) {
 }
 #endif
 
-// Frames per second of the render loop as `prt render` runs it: draw, tone map, then hand the
-// frame to a background job that encodes it (to memory here; render also writes the file), up to
-// one frame in flight per thread. A median over `runs` loops of kLoopFrames frames.
+// The render loop as `prt render` runs it (render/render_frames.cpp): each frame drawn and tone
+// mapped band by band into an image of the frame writer's, which encodes it on its own threads
+// (to memory here; render also writes the file), one frame in flight per thread. Frames per
+// second are a median over `runs` loops of kLoopFrames frames after a warm-up loop; page faults
+// are counted over the timed loops' frames, so that 0 means no frame touches fresh memory once
+// the loop's buffers exist (the warm-up loop makes them: the first frame of a size, and the
+// frame writer's slots).
 constexpr int kLoopFrames = 12;
-double RenderLoopFps(const Scene& scene, int width, int height, int runs) {
+struct LoopResult {
+  double fps = 0.0;
+  double faults_per_frame = 0.0;
+};
+LoopResult RenderLoop(const Scene& scene, int width, int height, int runs) {
   Rasterizer rasterizer;
+  FrameWriter writer(ThreadCount(), nullptr);
+  const ToneMapOptions tone;
+  std::uint64_t faults = 0, frames = 0;
+  int next = 0;
+  bool warm = false;  // MedianSeconds's first call is its warm-up
   const double seconds = MedianSeconds(runs, [&] {
-    BackgroundJobs encoding(ThreadCount());
+    const std::uint64_t before = MinorPageFaults();
     for (int f = 0; f < kLoopFrames; ++f) {
-      const RasterImage& frame = rasterizer.Draw(scene.camera, width, height, scene.mesh.positions,
-                                                 scene.mesh.triangles, scene.colors);
-      auto image = std::make_shared<Image8>(ToneMap(frame.image).image);
-      encoding.Submit([image] { EncodePng(*image); });
+      RasterOptions options;
+      options.tone_map = &tone;
+      options.tone_mapped = &writer.Next(next);
+      options.keep_linear = false;
+      rasterizer.Draw(scene.camera, width, height, scene.mesh.positions, scene.mesh.triangles, scene.colors, options);
+      writer.Submit("");
+      ++next;
     }
-    encoding.Wait();
+    writer.Finish();
+    if (warm) {
+      faults += MinorPageFaults() - before;
+      frames += kLoopFrames;
+    }
+    warm = true;
   });
-  return kLoopFrames / seconds;
+  return {kLoopFrames / seconds, double(faults) / double(frames)};
 }
 
 }  // namespace
@@ -182,16 +205,36 @@ int BenchRaster(Args& args) {
   Print("raster_ms", 1e3 * t_draw);
   Print("raster_fps", 1.0 / t_draw);
 
-  // Tone mapping against drawing, side by side.
+  // Tone mapping against drawing, side by side: fused into the drawing's bands (the added time),
+  // and as a pass of its own over the finished frame.
   Image8 image;
-  const SideBySide tone = TimeSideBySide(runs, draw, [&] { image = ToneMap(frame->image).image; });
-  Print("tonemap_ms", 1e3 * tone.theirs);
-  Print("tonemap_share_of_draw", tone.ratio);  // median over pairs of tone map / draw
+  const ToneMapOptions tone;
+  RasterOptions fused;
+  fused.tone_map = &tone;
+  fused.tone_mapped = &image;
+  const auto draw_with = [&](const RasterOptions& options) {
+    rasterizer.Draw(scene.camera, width, height, scene.mesh.positions, scene.mesh.triangles, scene.colors, options);
+  };
+  const SideBySide with_tone = TimeSideBySide(runs, draw, [&] { draw_with(fused); });
+  Print("tonemap_ms", 1e3 * (with_tone.theirs - with_tone.ours));
+  Print("tonemap_share_of_draw", with_tone.ratio - 1.0);  // median over pairs of (fused - draw) / draw
+  draw();
+  const SideBySide separate = TimeSideBySide(runs, draw, [&] { ToneMapInto(frame->image, tone, image); });
+  Print("tonemap_separate_ms", 1e3 * separate.theirs);
+  Print("tonemap_separate_share_of_draw", separate.ratio);
+  // The render loop's frame: the 8-bit image straight from the bands, no linear frame kept.
+  RasterOptions render_frame = fused;
+  render_frame.keep_linear = false;
+  const SideBySide loop_frame = TimeSideBySide(runs, draw, [&] { draw_with(render_frame); });
+  Print("render_frame_ms", 1e3 * loop_frame.theirs);
+  Print("ratio_render_frame_vs_raster", loop_frame.ratio);  // < 1: faster than the linear frame alone
+  draw();
 
   // zlib levels on this frame: time (one thread) and size; frames use kPngLevel.
+  PngEncoder encoder;  // as the render loop keeps one per thread
   for (int level : {1, 2, 3, 4, 6}) {
     std::size_t bytes = 0;
-    const double t = MedianSeconds(runs, [&] { bytes = EncodePng(image, level).size(); });
+    const double t = MedianSeconds(runs, [&] { bytes = encoder.Encode(image, level).size(); });
     const std::string key = "png_level_" + std::to_string(level);
     Print(key + "_ms", 1e3 * t);
     Print(key + "_bytes", double(bytes));
@@ -199,14 +242,20 @@ int BenchRaster(Args& args) {
   Print("png_level_used", double(kPngLevel));
 
   // The whole render loop, at this size and at 640x480.
-  Print("render_loop_fps", RenderLoopFps(scene, width, height, runs));
+  const LoopResult loop = RenderLoop(scene, width, height, runs);
+  Print("render_loop_fps", loop.fps);
+  Print("render_loop_page_faults_per_frame", loop.faults_per_frame);
   const Scene small = MakeScene(640.f / 480.f);
-  Print("render_loop_640x480_fps", RenderLoopFps(small, 640, 480, runs));
+  const LoopResult small_loop = RenderLoop(small, 640, 480, runs);
+  Print("render_loop_640x480_fps", small_loop.fps);
+  Print("render_loop_640x480_page_faults_per_frame", small_loop.faults_per_frame);
 
 #ifdef PRT_BENCH_LLVMPIPE
   // Ours and llvmpipe alternating, frame for frame (OpenGL calls stay on this thread).
   const Llvmpipe gl(scene, width, height);
   const SideBySide vs = TimeSideBySide(runs, draw, [&] { gl.Draw(); });
+  const SideBySide vs_loop = TimeSideBySide(runs, [&] { draw_with(render_frame); }, [&] { gl.Draw(); });
+  draw();  // the linear frame again, for the comparison of the images
   const Image8 gl_image = gl.Image();
   Print("llvmpipe_ms", 1e3 * vs.theirs);
   Print("llvmpipe_fps", 1.0 / vs.theirs);
@@ -216,6 +265,8 @@ int BenchRaster(Args& args) {
   Print("llvmpipe_covered_share", double(lit) / double(gl_image.rgb.size() / 3));
   Print("agreement_within_1_255", Agreement(Quantize(frame->image), gl_image));
   Print("ratio_fps_vs_llvmpipe", vs.ratio);
+  // Both ending in an 8-bit frame: the render loop's (sRGB, tone mapped) against llvmpipe's.
+  Print("ratio_render_frame_fps_vs_llvmpipe", vs_loop.ratio);
 #else
   (void)Quantize;
   Print("llvmpipe", "not built (configure with -DPRT_BENCH_LLVMPIPE=ON)");

@@ -1,14 +1,18 @@
 // `prt bench transport`: the transport precompute on the demo scene (or --mesh): shadowed and
 // interreflected (2 bounces), lmax 2 and 4, 1024 directions per vertex, 1 thread and all
 // threads: seconds and million rays per second (rays actually traced, none below the horizon).
-// Then the glossy measurements of bench_glossy.cpp (demo scene, lmax 4, all threads).
+// Then the glossy measurements of bench_glossy.cpp (demo scene, lmax 4, all threads), and its lobe
+// rays traced as fans and as single rays (bench_lobe_rays.cpp).
 
+#include <algorithm>
 #include <chrono>
 
 #include "bench/bench.h"
+#include "app/render_args.h"
 #include "core/parallel.h"
 #include "geometry/procedural.h"
 #include "io/obj_loader.h"
+#include "material/material.h"
 #include "precompute/transport.h"
 
 namespace prt::bench {
@@ -44,6 +48,10 @@ int BenchTransport(Args& args) {
   }
   SetThreadCount(0);
   BenchGlossy(runs, threads, samples, 4);
+  SetThreadCount(threads);
+  BenchLobeRays(MakeDemoScene(), ParseMaterial("phong:50,0.4"), *WithDemoCamera({}).eye, LobeSamplesOf(samples),
+                std::max(runs, 5));
+  SetThreadCount(0);
   return 0;
 }
 

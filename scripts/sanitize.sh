@@ -4,11 +4,13 @@
 #                                                   (build-asan/), every test by default but the
 #                                                   README suite: it reruns through the shell what
 #                                                   other tests run in-process, and took 122 s of
-#                                                   the 193 s unsanitized suite (2 vCPUs)
+#                                                   the 193 s unsanitized suite (2 vCPUs). By
+#                                                   default through ctest, one process per core
 #   bash scripts/sanitize.sh tsan [doctest args]   ThreadSanitizer (build-tsan/), the threaded
 #                                                   stages by default: core (thread pool),
 #                                                   precompute (transport), video (frames from
-#                                                   several threads) and app (rendering)
+#                                                   several threads) and app (rendering), through
+#                                                   ctest likewise
 #   bash scripts/sanitize.sh all                    both, one after the other
 # The `prt` binary that the command-line tests run is the sanitized one too. Any report fails
 # the run (halt_on_error). PRT_JOBS sets the build parallelism (default: all cores).
@@ -23,23 +25,38 @@ build() {  # build FOLDER CMAKE_OPTION
   cmake --build "$1" --parallel "$jobs" --target prt prt_tests
 }
 
+# Without doctest arguments each suite runs through CTest, one test case per process and one
+# process per core (the suites ran serially on one core before, which made them most of CI's
+# time); with arguments, prt_tests runs them itself, as before.
+run_ctest() {  # run_ctest FOLDER CTEST_LABEL_ARGS...
+  local folder=$1
+  shift
+  ctest --test-dir "$folder" --output-on-failure --no-tests=error --parallel "$jobs" "$@"
+}
+
 run_asan() {
   build build-asan PRT_SANITIZE
-  local filter=()
-  [ $# -eq 0 ] && filter=(--test-suite-exclude=readme)
-  echo "== AddressSanitizer + UndefinedBehaviorSanitizer: prt_tests ${filter[*]} $*"
-  ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1 \
-  UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  build-asan/prt_tests --no-intro=true "${filter[@]}" "$@"
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
+  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  if [ $# -eq 0 ]; then
+    echo "== AddressSanitizer + UndefinedBehaviorSanitizer: every test but the readme suite, through ctest"
+    run_ctest build-asan --label-exclude '^readme$'
+  else
+    echo "== AddressSanitizer + UndefinedBehaviorSanitizer: prt_tests $*"
+    build-asan/prt_tests --no-intro=true "$@"
+  fi
 }
 
 run_tsan() {
   build build-tsan PRT_TSAN
-  local filter=()
-  [ $# -eq 0 ] && filter=(--test-suite=core,precompute,video,app)
-  echo "== ThreadSanitizer: prt_tests ${filter[*]} $*"
-  TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1 \
-  build-tsan/prt_tests --no-intro=true "${filter[@]}" "$@"
+  export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
+  if [ $# -eq 0 ]; then
+    echo "== ThreadSanitizer: the core, precompute, video and app suites, through ctest"
+    run_ctest build-tsan --label-regex '^(core|precompute|video|app)$'
+  else
+    echo "== ThreadSanitizer: prt_tests $*"
+    build-tsan/prt_tests --no-intro=true "$@"
+  fi
 }
 
 case "$what" in

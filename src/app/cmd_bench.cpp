@@ -8,14 +8,15 @@
 
 #include "app/commands.h"
 #include "bench/bench.h"
+#include "core/memory.h"
 
 namespace prt {
 
 CommandSpec BenchSpec() {
   return {"prt bench WHAT [options]",
           "WHAT is one of: light, bvh, raster, transport, wavelet (a frame in the wavelet basis beside SH lmax 4 and 16), all. Prints key=value lines; comparisons end with "
-          "ratio_<what>=<x>. Times are medians. The last line, peak_memory_mib=, is the process's peak resident "
-          "memory.",
+          "ratio_<what>=<x>. Times are medians. The last lines, page_faults= and peak_memory_mib=, are the "
+          "process's minor page faults (first touches of fresh memory) and its peak resident memory.",
           {{"options",
             {{"--runs", "N", "timed runs per measurement, median reported", "5; bvh and transport 3; wavelet 9"},
              {"--threads", "N", "threads for the multi-threaded measurements", "all cores"},
@@ -88,6 +89,7 @@ int RunBench(const std::vector<std::string>& tokens) {
     args.Allow(it->second.options);
     bench::PrintMachine(args.Int("--threads", 0, 0, 1024));
     const int rc = it->second.run(args);
+    bench::Print("page_faults", double(MinorPageFaults()));
     bench::Print("peak_memory_mib", PeakMemoryMiB());
     return rc;
   }
@@ -107,6 +109,7 @@ int RunBench(const std::vector<std::string>& tokens) {
     args.Allow(any);
     rc |= b.run(args);
   }
+  bench::Print("page_faults", double(MinorPageFaults()));
   bench::Print("peak_memory_mib", PeakMemoryMiB());
   return rc;
 }

@@ -6,6 +6,7 @@
 #include "core/atomic_file.h"
 #include "core/color.h"
 #include "core/log.h"
+#include "precompute_io/cpca_matrix_file.h"
 #include "precompute_io/light_txt.h"
 #include "precompute_io/transfer_matrix_file.h"
 #include "precompute_io/transport_txt.h"
@@ -36,7 +37,13 @@ Transport LuminanceMix(const Transport& t) {
 CommandSpec PrecomputeSpec() {
   RenderOptions no_out;
   no_out.out.clear();  // its help then says "required"
-  OptionGroup output = RenderOptionGroup(no_out, {"--out", "--replace", "--cache"}, "output options");
+  no_out.cpca_clusters = 0;  // the compressed file only when asked for
+  OptionGroup output = RenderOptionGroup(no_out, {"--out", "--replace", "--cache", "--cpca"}, "output options");
+  for (auto& o : output.options)
+    if (o.name == "--cpca")
+      o.help = "with --material phong:N,KS, also write DIR/transfer_matrices_cpca.bin: the transfer matrices "
+               "compressed by clustered PCA into C clusters of a mean and K principal matrices (layout in "
+               "docs/CLI.md); off: only transfer_matrices.bin";
   output.options.push_back(QuietOption());
   output.options[0].help = "output folder, created if missing; one run at a time; after a successful run it holds "
                            "this run's files, and what an earlier precompute wrote there and this one did not is "
@@ -69,7 +76,8 @@ CommandSpec PrecomputeSpec() {
           "With --material phong:N,KS, transport.txt keeps the diffuse part (the course's format) and "
           "DIR/transfer_matrices.bin adds the glossy part for any view: per vertex its position, normal, albedo, "
           "diffuse transfer and (L+1)^2 x (L+1)^2 transfer matrix, with the lobe's zonal coefficients "
-          "(layout in docs/CLI.md).",
+          "(layout in docs/CLI.md). With --cpca C,K, DIR/transfer_matrices_cpca.bin holds the same with the matrices "
+          "compressed by clustered PCA.",
           {scene, output}};
 }
 
@@ -79,7 +87,14 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
   const auto out = args.String("--out");
   const std::string cache_option = args.String("--cache", "");
   const bool replace = args.Flag("--replace");
+  RenderOptions cpca_option;
+  cpca_option.cpca_clusters = 0;
+  ReadCpca(args, cpca_option);
+  CheckCpcaTerms(args, cpca_option, options.lmax);
+  const bool cpca = cpca_option.cpca_clusters > 0;
   args.Finish();
+  if (cpca && !options.material.glossy)
+    args.Fail("--cpca: compresses a glossy material's transfer matrices (expected --material phong:N,KS, or no --cpca)");
   if (!out) args.Fail("--out DIR is required");
   if (options.basis != "sh")
     args.Fail("--basis " + options.basis + ": precompute writes the course's SH files (light.txt, transport.txt) only; "
@@ -96,6 +111,7 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
   const bool glossy = options.material.glossy;
   OutputPlan plan{"precompute", {"light.txt", "transport.txt"}, replace};
   if (glossy) plan.names.push_back("transfer_matrices.bin");
+  if (cpca) plan.names.push_back("transfer_matrices_cpca.bin");
   OutputFolder folder(*out, plan);
   const CachePlan cache = PlanCache(cache_option, &folder);
 
@@ -107,7 +123,7 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
   if (glossy) CheckMatrixMemory(mesh, options);
   const auto env = LoadSceneEnvironment(options, &folder);
   const ShRgb light = ComputeLight(*env, options);
-  const Transport transport = ComputeSceneTransport(mesh, options, cache, {}, nullptr, glossy);
+  Transport transport = ComputeSceneTransport(mesh, options, cache, {}, nullptr, glossy);
 
   WriteFileAtomic(folder.Output("light.txt"), FormatLightTxt(light));
   std::string wrote;
@@ -127,6 +143,11 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
     WriteTransferMatrixFile(folder.Output("transfer_matrices.bin"), mesh, transport);
     wrote += "; the glossy part (" + options.material.Name() + ") as transfer matrices for any view in " + *out +
              "/transfer_matrices.bin (layout in docs/CLI.md)";
+  }
+  if (cpca) {
+    const CpcaTransfer compressed = CompressSceneMatrices(transport, cpca_option.cpca_clusters, cpca_option.cpca_terms);
+    WriteCpcaMatrixFile(folder.Output("transfer_matrices_cpca.bin"), mesh, transport, compressed);
+    wrote += "; the same compressed by clustered PCA in " + *out + "/transfer_matrices_cpca.bin (layout in docs/CLI.md)";
   }
   FinishOutputs(folder);  // the files are in place from here on
   Summary(wrote);

@@ -19,6 +19,7 @@
 #include "app/render_args.h"
 #include "app/scene_options.h"
 #include "core/output_folder.h"
+#include "cpca/cpca_transfer.h"
 #include "env/environment.h"
 #include "geometry/mesh.h"
 #include "precompute/transport.h"
@@ -98,6 +99,12 @@ WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const SceneOptions& opti
 /// Says on the run summary what the transfer matrices of `mesh` will take, and throws Error,
 /// naming the largest lmax that fits, when that is more than the memory available allows.
 void CheckMatrixMemory(const Mesh& mesh, const SceneOptions& options);
+
+/// `transport`'s matrices compressed by clustered PCA into `clusters` clusters of `terms` terms
+/// (cpca/cpca_transfer.h; fewer clusters where the mesh has fewer than clusters x (terms + 1)
+/// matrices, so that the model stays smaller than them), said on the run summary with the memory, the relative error measured
+/// on this mesh and the time; the full matrices are then released from `transport`.
+CpcaTransfer CompressSceneMatrices(Transport& transport, int clusters, int terms);
 
 /// Ends a successful run's use of `folder` (OutputFolder::Finish): removes what an earlier run
 /// of the same command wrote there and this one did not, keeps the files prt did not write that

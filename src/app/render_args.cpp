@@ -71,6 +71,11 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
        "the camera turns this many degrees about the target (around its up direction) over the frames, "
        "-1e6..1e6; a glossy --material then uses transfer matrices, so highlights follow the view",
        Formatted("%g", d.orbit)});
+  add({"--cpca", "C,K|off",
+       "a glossy --orbit's transfer matrices compressed by clustered PCA: C clusters (1..65536), each a mean and K "
+       "principal matrices (0..(lmax+1)^4), each vertex K weights; the run summary says the memory and the error "
+       "measured; off: the full matrices",
+       d.cpca_clusters > 0 ? std::to_string(d.cpca_clusters) + "," + std::to_string(d.cpca_terms) : "off"});
   add({"--vertex-radiance", "FILE",
        "write frame 0's per-vertex linear RGB radiance toward the camera (albedo in, before tone mapping) in "
        "transport.txt's layout: the welded vertex count, then three `R G B` rows per face of the mesh in file "
@@ -156,6 +161,29 @@ void ReadCamera(Args& args, RenderOptions& o) {
 
 }  // namespace
 
+void ReadCpca(Args& args, RenderOptions& o) {
+  const auto text = args.String("--cpca");
+  if (!text) return;
+  if (*text == "off") {
+    o.cpca_clusters = 0;
+    return;
+  }
+  const auto comma = text->find(',');
+  const auto c = ParseNumber(text->substr(0, comma));
+  const auto k = comma == std::string::npos ? std::nullopt : ParseNumber(text->substr(comma + 1));
+  if (!c || !k || std::floor(*c) != *c || std::floor(*k) != *k || *c < 1 || *c > 65536 || *k < 0 || *k > 40401.0 * 40401.0)
+    args.Fail("--cpca: '" + *text + "' (expected C,K with C clusters from 1 to 65536 and K terms from 0, or off)");
+  o.cpca_clusters = int(*c), o.cpca_terms = int(std::min(*k, 1e9));
+}
+
+void CheckCpcaTerms(Args& args, const RenderOptions& o, int lmax) {
+  const long long dim = (long long)CoeffCount(lmax) * CoeffCount(lmax);
+  if (o.cpca_clusters > 0 && o.cpca_terms > dim)
+    args.Fail("--cpca: " + std::to_string(o.cpca_terms) + " terms is more than the " + std::to_string(dim) +
+              " numbers of a transfer matrix at lmax " + std::to_string(lmax) + " (expected K from 0 to " +
+              std::to_string(dim) + ")");
+}
+
 bool IsFolderOwnName(const std::string& file, const RenderOptions& o) {
   const std::string name = std::filesystem::path(file).filename().string();
   static const std::regex frame("frame_[0-9]+\\.png", std::regex::icase);
@@ -173,7 +201,7 @@ bool HasControlCharacter(const std::string& file) {
 const std::vector<std::string>& AllRenderOptionNames() {
   static const std::vector<std::string> names = {
       "--frames", "--size",     "--out",  "--replace", "--axis", "--turns",  "--background", "--tonemap", "--exposure",
-      "--ssaa",   "--view",     "--eye",  "--target", "--up",   "--fov",        "--orbit",
+      "--ssaa",   "--view",     "--eye",  "--target", "--up",   "--fov",        "--orbit", "--cpca",
       "--vertex-radiance", "--video", "--fps", "--cache"};
   return names;
 }
@@ -222,6 +250,7 @@ RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
   if (has("--eye")) ReadCamera(args, o);
   if (has("--cache")) o.cache = args.String("--cache", d.cache);
   if (has("--orbit")) o.orbit = args.Double("--orbit", d.orbit, -1e6, 1e6);
+  if (has("--cpca")) ReadCpca(args, o);
   if (has("--vertex-radiance") && args.Has("--vertex-radiance")) {
     o.vertex_radiance = args.String("--vertex-radiance", d.vertex_radiance);
     // Checked now, not after the precompute: the folder exists and takes new files.
@@ -264,6 +293,7 @@ RenderOptions CompleteRenderOptions(Args& args, RenderOptions o, const SceneOpti
   if (o.view == "transport" && o.transport_index >= CoeffCount(scene.lmax))
     args.Fail("--view: transport:" + std::to_string(o.transport_index) + " is out of range (expected 0 to " +
               std::to_string(CoeffCount(scene.lmax) - 1) + " for lmax " + std::to_string(scene.lmax) + ")");
+  CheckCpcaTerms(args, o, scene.lmax);
   if (scene.mesh.empty()) {
     // The embedded scene: each camera value not given is the demo's (help promises them one by
     // one), so --fov 50 alone widens the demo's view instead of refitting the camera.

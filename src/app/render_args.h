@@ -30,6 +30,12 @@ bool IsFolderOwnName(const std::string& file, const RenderOptions& o);
 /// True if `file` has a control character (a newline would break the folder's list of outputs).
 bool HasControlCharacter(const std::string& file);
 
+/// Reads `--cpca C,K | off` into `o` (clusters 0 for off); a malformed value is a usage error.
+void ReadCpca(Args& args, RenderOptions& o);
+
+/// A usage error when `--cpca`'s terms exceed the (lmax+1)^4 numbers of a transfer matrix.
+void CheckCpcaTerms(Args& args, const RenderOptions& o, int lmax);
+
 /// Reads the render options the command's table lists, with `defaults` for what is not given.
 RenderOptions ReadRenderOptions(Args& args, const RenderOptions& defaults);
 

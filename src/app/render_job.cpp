@@ -122,6 +122,7 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
   if (scene.transport != "unshadowed" && scene.hidden_samples != scene.samples) seen = SeenVertices(mesh, camera, render);
   // The transport in its basis, and the light each frame turns for it.
   Transport transport;
+  CpcaTransfer cpca;
   WaveletTransport wavelets;
   std::unique_ptr<FrameLight> frame_light;
   if (scene.basis == "wavelet") {
@@ -132,7 +133,9 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
             std::string(wavelets.bounce.coeffs.empty() ? "" : "; the bounces' SH light turned by its band matrices"));
   } else {
     transport = ComputeSceneTransport(mesh, scene, cache, seen, &camera, matrices);
-    frame_light = MakeShFrameLight(transport, light, render.axis);
+    const bool compressed = matrices && render.cpca_clusters > 0;
+    if (compressed) cpca = CompressSceneMatrices(transport, render.cpca_clusters, render.cpca_terms);
+    frame_light = MakeShFrameLight(transport, light, render.axis, compressed ? &cpca : nullptr);
     const AxisRotation rotation(render.axis, transport.lmax);
     Summary("rotation: " + rotation.Describe() + "; only the " + std::to_string(CoeffCount(transport.lmax)) +
             " coefficients the transport has are turned");

@@ -12,6 +12,10 @@ namespace prt {
 /// Bytes available now (0 if unknown).
 std::uint64_t AvailableMemoryBytes();
 
+/// Minor page faults of this process so far (getrusage): each is the first touch of a fresh page,
+/// what a loop that allocates per iteration pays again and again. 0 if unknown.
+std::uint64_t MinorPageFaults();
+
 /// "3.2 GiB", "850 MiB", "12 KiB": a byte count for messages.
 std::string ByteText(std::uint64_t bytes);
 

@@ -9,21 +9,12 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "io/png_chunks.h"
-#include "io/png_writer_zlib.h"
 
 namespace prt {
 
 std::string EncodePng(const Image8& image, int level) {
-  if (image.width <= 0 || image.height <= 0 ||
-      image.rgb.size() != 3 * static_cast<std::size_t>(image.width) * image.height)
-    throw Error("PNG encoder: image " + std::to_string(image.width) + "x" +
-                std::to_string(image.height) + " with " + std::to_string(image.rgb.size()) +
-                " bytes (expected a non-empty image of 3 * width * height bytes)");
-  std::string bytes;
-  if (level < 1 || level > 9) throw Error("PNG encoder: zlib level " + std::to_string(level) + " (expected 1 to 9)");
-  if (!EncodePngZlib(image.rgb.data(), image.width, image.height, level, bytes))
-    throw Error("PNG encoder: stb_image_write failed (expected enough memory)");
-  return bytes;
+  PngEncoder encoder;
+  return encoder.Encode(image, level);
 }
 
 void WritePng(const std::string& path, const Image8& image) {

@@ -1,20 +1,20 @@
 #pragma once
 /// \file
-/// PNG files through stb (Debian's libstb): 8-bit RGB out, any PNG in.
+/// PNG files: 8-bit RGB out (io/png_encoder.h), any PNG in (through stb, Debian's libstb).
 ///
-/// Writing favours speed over size (frames are written by the hundred): the lowest zlib effort
-/// stb offers and one fixed row filter. Files are written under a temporary name and renamed
+/// Writing favours speed over size (frames are written by the hundred): a low zlib level and one
+/// fixed row filter. Files are written under a temporary name and renamed
 /// (core/atomic_file.h), so a failed write never leaves a partial PNG.
 
 #include <string>
 
 #include "core/image.h"
-#include "io/png_writer_zlib.h"
+#include "io/png_encoder.h"
 
 namespace prt {
 
 /// The PNG encoding of an 8-bit RGB image, in memory (for encoding on another thread), deflated
-/// at zlib `level` (frames use kPngLevel, png_writer_zlib.h). Throws Error if the image is
+/// at zlib `level` (frames use kPngLevel, png_encoder.h; a render loop keeps a PngEncoder instead). Throws Error if the image is
 /// empty, its buffer is not 3 * width * height bytes, or the level is not 1..9.
 std::string EncodePng(const Image8& image, int level = kPngLevel);
 

@@ -29,10 +29,10 @@ std::vector<glm::vec3> ShadeGlossy(const Mesh& mesh, const Transport& transport,
   return colors;
 }
 
-std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                                     bool albedo, const glm::dvec3* eye) {
+void ShadeDiffuseInto(const Mesh& mesh, const Transport& transport, const ShRgb& light, bool albedo,
+                      std::vector<glm::vec3>& colors) {
   const int count = std::min<int>(CoeffCount(transport.lmax), static_cast<int>(light.size()));
-  std::vector<glm::vec3> colors(mesh.vertex_count());
+  colors.resize(mesh.vertex_count());
   ParallelFor(colors.size(), 1024, [&](std::size_t begin, std::size_t end) {
     for (std::size_t v = begin; v < end; ++v) {
       glm::dvec3 sum(0.0);
@@ -45,10 +45,27 @@ std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transpor
       colors[v] = albedo ? glm::vec3(glm::dvec3(mesh.albedo[v]) * sum) : glm::vec3(sum);
     }
   });
+}
+
+std::vector<glm::vec3> ShadeDiffuse(const Mesh& mesh, const Transport& transport, const ShRgb& light, bool albedo) {
+  std::vector<glm::vec3> colors;
+  ShadeDiffuseInto(mesh, transport, light, albedo, colors);
+  return colors;
+}
+
+void ShadeVerticesInto(const Mesh& mesh, const Transport& transport, const ShRgb& light, bool albedo,
+                       const glm::dvec3* eye, std::vector<glm::vec3>& colors) {
+  ShadeDiffuseInto(mesh, transport, light, albedo, colors);
   if (albedo && transport.material.glossy) {
     const std::vector<glm::vec3> glossy = ShadeGlossy(mesh, transport, light, eye);
     for (std::size_t v = 0; v < colors.size(); ++v) colors[v] += glossy[v];
   }
+}
+
+std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transport, const ShRgb& light,
+                                     bool albedo, const glm::dvec3* eye) {
+  std::vector<glm::vec3> colors;
+  ShadeVerticesInto(mesh, transport, light, albedo, eye, colors);
   return colors;
 }
 

@@ -24,6 +24,18 @@ namespace prt {
 std::vector<glm::vec3> ShadeVertices(const Mesh& mesh, const Transport& transport, const ShRgb& light,
                                      bool albedo = true, const glm::dvec3* eye = nullptr);
 
+/// The same into `out` (resized to the vertex count): a frame loop passes the same buffer every
+/// frame and the diffuse shading allocates nothing.
+void ShadeVerticesInto(const Mesh& mesh, const Transport& transport, const ShRgb& light, bool albedo,
+                       const glm::dvec3* eye, std::vector<glm::vec3>& out);
+
+/// The diffuse part alone: albedo(v) sum_k L_k T_k(v) per channel (without `albedo`, as if it were
+/// 1); what ShadeVertices adds a glossy lobe to.
+std::vector<glm::vec3> ShadeDiffuse(const Mesh& mesh, const Transport& transport, const ShRgb& light, bool albedo = true);
+/// The same into `out` (resized to the vertex count), allocating nothing once it is.
+void ShadeDiffuseInto(const Mesh& mesh, const Transport& transport, const ShRgb& light, bool albedo,
+                      std::vector<glm::vec3>& out);
+
 /// A glossy material's lobe term alone (what ShadeVertices adds to the diffuse part): L . G for
 /// the fixed view, or the lobe applied to M L toward `eye` from transfer matrices; 0 for diffuse.
 std::vector<glm::vec3> ShadeGlossy(const Mesh& mesh, const Transport& transport, const ShRgb& light,

@@ -99,6 +99,13 @@ void ComputeTransferMatrices(const Mesh& mesh, const DirectionPlan* plan, const 
   });
 }
 
+void LobeRow(const glm::dvec3& normal, const glm::dvec3& position, const glm::dvec3& eye, int lmax,
+             const std::vector<double>& h, double* hy) {
+  EvalBasis(lmax, LobeAxis(normal, position, eye), hy);
+  for (int l = 0, k = 0; l <= lmax; ++l)
+    for (int m = -l; m <= l; ++m, ++k) hy[k] *= h[l];
+}
+
 std::vector<glm::vec3> GlossyFromMatrices(const Mesh& mesh, const Transport& transport, const Material& material,
                                           const ShRgb& light, const glm::dvec3& eye) {
   const int lmax = transport.lmax, n = CoeffCount(lmax);
@@ -108,12 +115,9 @@ std::vector<glm::vec3> GlossyFromMatrices(const Mesh& mesh, const Transport& tra
   std::vector<glm::vec3> out(mesh.vertex_count(), glm::vec3(0.0f));
   if (!material.glossy) return out;
   ParallelFor(out.size(), 256, [&](std::size_t begin, std::size_t end) {
-    std::vector<double> y(n), hy(n), w(n);
+    std::vector<double> hy(n), w(n);
     for (std::size_t v = begin; v < end; ++v) {
-      const glm::dvec3 r = LobeAxis(glm::dvec3(mesh.normals[v]), glm::dvec3(mesh.positions[v]), eye);
-      EvalBasis(lmax, r, y.data());
-      for (int l = 0, k = 0; l <= lmax; ++l)
-        for (int m = -l; m <= l; ++m, ++k) hy[k] = h[l] * y[k];
+      LobeRow(glm::dvec3(mesh.normals[v]), glm::dvec3(mesh.positions[v]), eye, lmax, h, hy.data());
       // KS (hy^T M) L: the lobe row times the matrix, then the light. The row product is the
       // n^2 part of the cost: one for all three colours when they share a matrix.
       for (int c = 0; c < transport.channels; ++c) {

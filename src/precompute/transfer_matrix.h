@@ -49,6 +49,14 @@ std::uint64_t TransferMatrixBytes(std::size_t vertices, int lmax, int channels);
 /// The unshadowed matrix integral Y_i Y_j max(0, n.s) ds (n x n, row-major) into `out`.
 void UnshadowedTransferMatrix(const glm::dvec3& normal, int lmax, double* out);
 
+/// The lobe toward `eye` as a row over the coefficients: hy_lm = h_l Y_lm(r), r = LobeAxis(normal,
+/// position, eye) (material/lobe_transfer.h), h = the lobe's zonal coefficients (KS not
+/// included), into `hy` (CoeffCount(lmax) doubles). The glossy radiance of a vertex whose
+/// transferred light is y = M L is KS hy . y: GlossyFromMatrices applies it to M, the clustered
+/// matrices (cpca/cpca_transfer.h) to y.
+void LobeRow(const glm::dvec3& normal, const glm::dvec3& position, const glm::dvec3& eye, int lmax,
+             const std::vector<double>& h, double* hy);
+
 /// Linear RGB glossy radiance KS sum_l h_l sum_m (M L)_lm Y_lm(r) of every vertex seen from
 /// `eye` (h = the lobe's zonal coefficients, material/lobe.h); added to the diffuse part by
 /// ShadeVerticesFromMatrices (shade.h).

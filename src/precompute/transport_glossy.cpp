@@ -10,7 +10,6 @@
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "geometry/ray.h"
-#include "geometry/ray_fan.h"
 #include "material/lobe_transfer.h"
 #include "precompute/lobe_rays.h"
 #include "precompute/transport_steps.h"
@@ -38,9 +37,8 @@ std::vector<double> ComputeGlossy(const Mesh& mesh, const Bvh* bvh, const Transp
   ParallelFor(nv, 32, [&](std::size_t begin, std::size_t end) {
     std::vector<double> t(count), y(count);
     LobeRays lobe_rays;
-    std::vector<glm::vec3> directions;
-    std::vector<std::uint8_t> blocked;
-    std::vector<std::optional<Hit>> hits;
+    std::vector<std::uint8_t> blocked(hit_transfer ? 0 : std::size_t(m));
+    std::vector<std::optional<Hit>> hits(hit_transfer ? std::size_t(m) : 0);
     std::uint64_t local_rays = 0;
     for (std::size_t v = begin; v < end; ++v) {
       const glm::dvec3 p(mesh.positions[v]), n(mesh.normals[v]);
@@ -51,15 +49,20 @@ std::vector<double> ComputeGlossy(const Mesh& mesh, const Bvh* bvh, const Transp
         for (int k = 0; k < count; ++k) out[c * count + k] = ks * t[k];
       if (!bvh) continue;
 
-      // What is blocked, from m rays drawn from the lobe (lobe_rays.h), traced as one fan: the
-      // lobe's directions are close together, so the packets of the fan share their nodes.
+      // What is blocked, from m rays drawn from the lobe (lobe_rays.h), traced one at a time:
+      // `prt bench transport` times them against one fan of packets per vertex (the lobe's
+      // directions prepared and traced together, as this loop did before), and single rays took
+      // 0.65x the fan's time for occlusion and 0.89x for closest hits (AMD EPYC, 2 threads).
       DrawLobeRays(lobe, r, m, o.seed, v, lobe_rays);
-      directions.assign(lobe_rays.dirs.begin(), lobe_rays.dirs.end());
-      const RayFan fan = MakeRayFan(directions);
-      const glm::vec3 origin = OffsetRayOrigin(mesh.positions[v], mesh.normals[v], scene_scale);
-      const float inf = std::numeric_limits<float>::infinity();
-      if (hit_transfer) bvh->IntersectFan(fan, origin, mesh.normals[v], inf, hits);
-      else bvh->OccludedFan(fan, origin, mesh.normals[v], inf, blocked);
+      Ray ray;
+      ray.origin = OffsetRayOrigin(mesh.positions[v], mesh.normals[v], scene_scale);
+      for (int i = 0; i < m; ++i) {
+        ray.dir = glm::vec3(lobe_rays.dirs[i]);
+        // Below the horizon (in float, as traversal sees it) nothing is traced.
+        const bool above = glm::dot(mesh.normals[v], ray.dir) > 0.f;
+        if (hit_transfer) hits[i] = above ? bvh->Intersect(ray) : std::nullopt;
+        else blocked[i] = above && bvh->Occluded(ray);
+      }
       for (int i = 0; i < m; ++i) {
         const glm::dvec3& s = lobe_rays.dirs[i];
         const double cosine = glm::dot(n, s);

@@ -190,24 +190,34 @@ void FillColor(glm::vec3* p, std::size_t n, const glm::vec3& c) {
 // Band-local sample buffers, reused by each worker thread across bands and frames.
 struct BandBuffers {
   std::vector<float> depth;
-  std::vector<glm::vec3> color;
+  std::vector<glm::vec3> color;  // supersampled: the samples' colours
+  std::vector<glm::vec3> rows;   // the linear frame not kept: the band's resolved rows
 };
 
-// Writes output rows [row_begin, row_end) of `frame`: the average of the covered samples of each
-// pixel, the background behind the uncovered ones, and the covered fraction. With one sample
-// per pixel (k = 1) the covered colours are in the frame already.
+// Where Resolve writes the output rows [row_begin, row_end) of a frame of width x height:
+// `image` and `coverage` (null: not kept) point at row row_begin's first pixel.
+struct ResolveTarget {
+  int width, height;
+  glm::vec3* image;
+  float* coverage;
+};
+
+// Writes output rows [row_begin, row_end): the average of the covered samples of each pixel, the
+// background behind the uncovered ones, and the covered fraction. With one sample per pixel
+// (k = 1) the covered colours (and a solid background) are in the target's rows already.
 void Resolve(const BandBuffers& band, int row_begin, int row_end, int band_y0, int k,
-             const Background& background, const ViewRays& rays, RasterImage& frame) {
-  const int width = frame.image.width, height = frame.image.height;
+             const Background& background, const ViewRays& rays, const ResolveTarget& target) {
+  const int width = target.width, height = target.height;
   const std::size_t stride = static_cast<std::size_t>(width) * k;  // samples per row
   const float inv_samples = 1.f / static_cast<float>(k * k);
-  if (k == 1) {  // the colours are already in the frame (DrawBand); the background is solid or
-    for (int oy = row_begin; oy < row_end; ++oy) {  // is looked up for the uncovered pixels
+  if (k == 1) {  // the background is solid (there already) or looked up for the uncovered pixels
+    for (int oy = row_begin; oy < row_end; ++oy) {
+      const std::size_t row = static_cast<std::size_t>(oy - row_begin) * width;
       const float* depth = &band.depth[static_cast<std::size_t>(oy - band_y0) * width];
-      float* coverage = &frame.coverage[static_cast<std::size_t>(oy) * width];
-      for (int ox = 0; ox < width; ++ox) coverage[ox] = depth[ox] > 0.f ? 1.f : 0.f;
+      if (float* coverage = target.coverage ? target.coverage + row : nullptr)
+        for (int ox = 0; ox < width; ++ox) coverage[ox] = depth[ox] > 0.f ? 1.f : 0.f;
       if (!background.radiance) continue;
-      glm::vec3* out = &frame.image.at(0, oy);
+      glm::vec3* out = target.image + row;
       const float ndc_y = 1.f - (static_cast<float>(oy) + 0.5f) / static_cast<float>(height) * 2.f;
       for (int ox = 0; ox < width; ++ox) {
         if (depth[ox] > 0.f) continue;
@@ -218,8 +228,8 @@ void Resolve(const BandBuffers& band, int row_begin, int row_end, int band_y0, i
     return;
   }
   for (int oy = row_begin; oy < row_end; ++oy) {
-    glm::vec3* out = &frame.image.at(0, oy);
-    float* coverage = &frame.coverage[static_cast<std::size_t>(oy) * width];
+    const std::size_t row = static_cast<std::size_t>(oy - row_begin) * width;
+    glm::vec3* out = target.image + row;
     const float ndc_y = 1.f - (static_cast<float>(oy) + 0.5f) / static_cast<float>(height) * 2.f;
     for (int ox = 0; ox < width; ++ox) {
       glm::vec3 sum(0.f);
@@ -227,7 +237,8 @@ void Resolve(const BandBuffers& band, int row_begin, int row_end, int band_y0, i
       for (int sy = oy * k - band_y0; sy < (oy + 1) * k - band_y0; ++sy)
         for (std::size_t s = sy * stride + ox * k; s < sy * stride + (ox + 1) * k; ++s)
           if (band.depth[s] > 0.f) sum += band.color[s], ++covered;
-      coverage[ox] = static_cast<float>(covered) * inv_samples;
+      const float coverage = static_cast<float>(covered) * inv_samples;
+      if (target.coverage) target.coverage[row + ox] = coverage;
       out[ox] = sum * inv_samples;
       if (covered == k * k) continue;
       glm::vec3 back = background.color;
@@ -235,7 +246,7 @@ void Resolve(const BandBuffers& band, int row_begin, int row_end, int band_y0, i
         const float ndc_x = (static_cast<float>(ox) + 0.5f) / static_cast<float>(width) * 2.f - 1.f;
         back = background.radiance(rays.Direction(ndc_x, ndc_y));
       }
-      out[ox] += (1.f - coverage[ox]) * back;
+      out[ox] += (1.f - coverage) * back;
     }
   }
 }
@@ -346,25 +357,50 @@ const RasterImage& Rasterizer::Draw(const Camera& camera, int width, int height,
         options.cull_back_faces, band_samples, band_count);
   Bin(band_count);
 
-  // Fill and resolve each band.
-  frame_.image.width = width;
-  frame_.image.height = height;
-  frame_.image.pixels.resize(static_cast<std::size_t>(width) * height);
-  frame_.coverage.resize(static_cast<std::size_t>(width) * height);
+  // Fill, resolve (and tone map) each band.
   const Background& background = options.background;
   const ViewRays rays = MakeViewRays(camera, aspect);
+  Image8* toned = options.tone_map ? options.tone_mapped : nullptr;
+  const bool linear = !toned || options.keep_linear;
+  if (toned) {
+    toned->width = width;
+    toned->height = height;
+    toned->rgb.resize(3 * static_cast<std::size_t>(width) * height);
+    band_tone_counts_.assign(static_cast<std::size_t>(band_count), ToneMapCounts{});
+  }
+  if (linear) {
+    frame_.image.width = width;
+    frame_.image.height = height;
+    frame_.image.pixels.resize(static_cast<std::size_t>(width) * height);
+    frame_.coverage.resize(static_cast<std::size_t>(width) * height);
+  } else {  // not drawn: nothing stale may pass for this frame
+    frame_.image = ImageF();
+    frame_.coverage.clear();
+  }
   ParallelFor(band_count, 1, [&](std::size_t band, std::size_t) {
     thread_local BandBuffers buffers;
     const int y0 = static_cast<int>(band) * band_samples;
     const int y1 = std::min(y0 + band_samples, target.height);
+    const int row_begin = y0 / k, row_end = y1 / k;
     const std::size_t samples = static_cast<std::size_t>(y1 - y0) * target.width;
+    const std::size_t pixels = static_cast<std::size_t>(row_end - row_begin) * width;
     if (buffers.depth.size() < samples) buffers.depth.resize(samples);
     std::fill_n(buffers.depth.begin(), samples, 0.f);
-    // One sample per pixel: the triangles fill the frame's own rows, over a solid background
-    // put there first. Supersampled: a band buffer, resolved into the frame afterwards.
+    // The band's output rows: the frame's own, or (the linear frame not kept) a band buffer that
+    // stays in cache until it is tone mapped.
+    ResolveTarget out{width, height, nullptr, nullptr};
+    if (linear) {
+      out.image = &frame_.image.at(0, row_begin);
+      out.coverage = &frame_.coverage[static_cast<std::size_t>(row_begin) * width];
+    } else {
+      if (buffers.rows.size() < pixels) buffers.rows.resize(pixels);
+      out.image = buffers.rows.data();
+    }
+    // One sample per pixel: the triangles fill the output rows, over a solid background put
+    // there first. Supersampled: a band buffer of samples, resolved into the rows afterwards.
     glm::vec3* color = nullptr;
     if (k == 1) {
-      color = &frame_.image.at(0, y0);
+      color = out.image;
       if (!background.radiance) FillColor(color, samples, background.color);
     } else {
       if (buffers.color.size() < samples) buffers.color.resize(samples);
@@ -376,8 +412,14 @@ const RasterImage& Rasterizer::Draw(const Camera& camera, int width, int height,
       if (i + kPrefetchAhead < last) Prefetch(binned_[i + kPrefetchAhead]);
       FillRows(*binned_[i], y0, y1, y0, target.width, buffers.depth.data(), color);
     }
-    Resolve(buffers, y0 / k, y1 / k, y0, k, background, rays, frame_);
+    Resolve(buffers, row_begin, row_end, y0, k, background, rays, out);
+    if (toned)
+      band_tone_counts_[band] = ToneMapPixels(out.image, pixels, *options.tone_map,
+                                              &toned->rgb[3 * static_cast<std::size_t>(row_begin) * width]);
   });
+  frame_.tone_counts = {};
+  if (toned)
+    for (const ToneMapCounts& counts : band_tone_counts_) frame_.tone_counts += counts;
   return frame_;
 }
 

@@ -28,6 +28,7 @@
 
 #include "core/image.h"
 #include "raster/camera.h"
+#include "raster/tonemap.h"
 #include "raster/triangle_setup.h"
 #include "texture/texture.h"
 
@@ -59,6 +60,15 @@ struct RasterOptions {
   bool cull_back_faces = false;  ///< drop triangles clockwise on screen (counter-clockwise = front)
   Background background;
   const RasterTexturing* texturing = nullptr;  ///< null: per-vertex colours only
+  /// With both set, each band of output rows is tone mapped into `*tone_mapped` (resized to the
+  /// frame) as soon as it is resolved, while its rows are still in cache: the same bytes as
+  /// ToneMapInto on the finished frame, without reading the frame back from memory.
+  const ToneMapOptions* tone_map = nullptr;
+  Image8* tone_mapped = nullptr;
+  /// With tone mapping: false leaves the linear frame out (RasterImage::image and coverage come
+  /// back empty): each band is drawn, resolved and tone mapped in cache, and only the 8-bit
+  /// image reaches memory, what a render loop needs once its exposure is known.
+  bool keep_linear = true;
 };
 
 /// Largest render target side in samples (width * ssaa and height * ssaa).
@@ -69,6 +79,7 @@ constexpr int kMaxTargetSide = 16384;
 struct RasterImage {
   ImageF image;
   std::vector<float> coverage;  ///< width * height, row-major like image
+  ToneMapCounts tone_counts;    ///< what the fused tone mapping repaired (RasterOptions::tone_map)
 };
 
 /// Draws frame after frame, keeping its buffers between frames: after the first frame of a
@@ -112,6 +123,7 @@ class Rasterizer {
   std::vector<std::size_t> band_start_;              // band b: binned_[band_start_[b] ...]
   std::vector<std::size_t> chunk_band_count_;        // SetUp's counts, then Bin's offsets, [chunk][band]
   std::vector<const RasterTriangle*> binned_;        // triangles per band, in input order
+  std::vector<ToneMapCounts> band_tone_counts_;      // per band, summed in band order
 };
 
 /// One frame with a temporary Rasterizer (see Rasterizer::Draw).

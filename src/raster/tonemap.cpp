@@ -145,11 +145,56 @@ void CountBad(const float* in, int n, float scale, std::size_t& negative, std::s
   }
 }
 
+// The codes of n values in [0, 1] (EncodeUnit of each).
+using EncodeFn = void (*)(const SrgbTable& t, const float* v, int n, std::uint8_t* out);
+
+void EncodeBaseline(const SrgbTable& t, const float* v, int n, std::uint8_t* out) {
+  for (int i = 0; i < n; ++i) out[i] = EncodeUnit(t, v[i]);
+}
+
+#ifdef PRT_TARGET_AVX2
+// The same, 32 values at a time: the cell index, the cell's threshold and start code gathered
+// for 8 values at once, the codes narrowed to bytes; the same table and comparisons as
+// EncodeUnit, so the same codes.
+PRT_TARGET_AVX2 void EncodeAvx2(const SrgbTable& t, const float* v, int n, std::uint8_t* out) {
+  static_assert(sizeof(Cell) == 8, "the gathers step 8 bytes a cell");
+  const float* next = &t.cell[0].next;
+  const int* start = reinterpret_cast<const int*>(&t.cell[0].start);
+  const __m256 cells = _mm256_set1_ps(static_cast<float>(kCells));
+  // After the two packs, 32-bit group j of the result holds codes 4j..4j+3 of one input vector
+  // in the order a0-3 b0-3 c0-3 d0-3 | a4-7 b4-7 c4-7 d4-7; this puts them back in order.
+  const __m256i order = _mm256_setr_epi32(0, 4, 1, 5, 2, 6, 3, 7);
+  int i = 0;
+  for (; i + 32 <= n; i += 32) {
+    __m256i code[4];
+    for (int j = 0; j < 4; ++j) {
+      const __m256 x = _mm256_loadu_ps(v + i + 8 * j);
+      const __m256i cell = _mm256_cvttps_epi32(_mm256_mul_ps(x, cells));
+      const __m256 threshold = _mm256_i32gather_ps(next, cell, 8);
+      const __m256i first = _mm256_i32gather_epi32(start, cell, 8);
+      const __m256i above = _mm256_castps_si256(_mm256_cmp_ps(x, threshold, _CMP_GE_OQ));  // -1 where v >= next
+      code[j] = _mm256_sub_epi32(first, above);
+    }
+    const __m256i bytes = _mm256_packus_epi16(_mm256_packus_epi32(code[0], code[1]), _mm256_packus_epi32(code[2], code[3]));
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(out + i), _mm256_permutevar8x32_epi32(bytes, order));
+  }
+  for (; i < n; ++i) out[i] = EncodeUnit(t, v[i]);
+}
+#endif
+
+EncodeFn ChooseEncode() {
+#ifdef PRT_TARGET_AVX2
+  if (CpuVectorLevel() >= VectorLevel::kAvx2) return EncodeAvx2;
+#endif
+  return EncodeBaseline;
+}
+
 // One row of `width` pixels: the arithmetic in vectors, then one table load per value.
 void MapRow(ToneCurve curve, const glm::vec3* row, int width, float scale, std::uint8_t* out,
             std::size_t& negative, std::size_t& nan) {
   const SrgbTable& table = Table();
   const PrepareFn prepare = PrepareFor(curve);
+  static const EncodeFn encode = ChooseEncode();
   static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "pixels are three packed floats");
   const float* in = reinterpret_cast<const float*>(row);
   float v[kBlock];
@@ -157,7 +202,7 @@ void MapRow(ToneCurve curve, const glm::vec3* row, int width, float scale, std::
     const int n = std::min(kBlock, 3 * width - first);
     const bool bad = prepare(in + first, n, scale, v);
     if (bad) CountBad(in + first, n, scale, negative, nan);
-    for (int i = 0; i < n; ++i) out[first + i] = EncodeUnit(table, v[i]);
+    encode(table, v, n, out + first);
   }
 }
 
@@ -168,22 +213,51 @@ std::uint8_t EncodeSrgb8(float v) {
   return EncodeUnit(Table(), std::min(v, 1.f));
 }
 
+ToneMapCounts ToneMapPixels(const glm::vec3* in, std::size_t count, const ToneMapOptions& options, std::uint8_t* out) {
+  const float scale = std::exp2(options.exposure_ev);
+  ToneMapCounts counts;
+  // In pieces of at most 2^20 pixels, so that MapRow's int counts cannot overflow.
+  constexpr std::size_t kPiece = 1 << 20;
+  for (std::size_t first = 0; first < count; first += kPiece) {
+    const std::size_t n = std::min(kPiece, count - first);
+    MapRow(options.curve, in + first, static_cast<int>(n), scale, out + 3 * first, counts.negative_pixels,
+           counts.nan_pixels);
+  }
+  return counts;
+}
+
+ToneMapCounts ToneMapRows(const ImageF& image, int row_begin, int row_end, const ToneMapOptions& options,
+                          Image8& out) {
+  const std::size_t first = static_cast<std::size_t>(row_begin) * image.width;
+  const std::size_t count = static_cast<std::size_t>(std::max(0, row_end - row_begin)) * image.width;
+  return ToneMapPixels(image.pixels.data() + first, count, options, out.rgb.data() + 3 * first);
+}
+
+ToneMapCounts ToneMapInto(const ImageF& image, const ToneMapOptions& options, Image8& out) {
+  out.width = image.width;
+  out.height = image.height;
+  out.rgb.resize(3 * image.pixels.size());
+  // Counts per block of rows, summed afterwards in order: the same totals for any thread count.
+  constexpr std::size_t kRows = 16;
+  const std::size_t rows = static_cast<std::size_t>(std::max(0, image.height));
+  const std::size_t blocks = ChunkCount(rows, kRows);
+  ToneMapCounts per_block[64];  // no allocation per frame: the blocks' counts are summed in groups
+  ToneMapCounts total;
+  for (std::size_t group = 0; group < blocks; group += 64) {
+    const std::size_t count = std::min<std::size_t>(64, blocks - group);
+    ParallelFor(count, 1, [&](std::size_t b, std::size_t) {
+      const std::size_t first = (group + b) * kRows;
+      per_block[b] = ToneMapRows(image, static_cast<int>(first), static_cast<int>(std::min(rows, first + kRows)),
+                                 options, out);
+    });
+    for (std::size_t b = 0; b < count; ++b) total += per_block[b];
+  }
+  return total;
+}
+
 ToneMapped ToneMap(const ImageF& image, const ToneMapOptions& options) {
   ToneMapped out;
-  out.image = Image8(image.width, image.height);
-  const float scale = std::exp2(options.exposure_ev);
-  const std::size_t rows = static_cast<std::size_t>(std::max(0, image.height));
-  // Per-row counts, summed afterwards: the same totals for any thread count.
-  std::vector<std::size_t> negative(rows, 0), nan(rows, 0);
-  ParallelFor(rows, 16, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t y = begin; y < end; ++y)
-      MapRow(options.curve, &image.pixels[y * image.width], image.width, scale,
-             &out.image.rgb[3 * y * image.width], negative[y], nan[y]);
-  });
-  for (std::size_t y = 0; y < rows; ++y) {
-    out.negative_pixels += negative[y];
-    out.nan_pixels += nan[y];
-  }
+  static_cast<ToneMapCounts&>(out) = ToneMapInto(image, options, out.image);
   return out;
 }
 

@@ -42,15 +42,40 @@ struct ToneMapOptions {
   float exposure_ev = 0.f;  ///< radiance is multiplied by 2^exposure_ev first
 };
 
-/// The 8-bit image and what had to be repaired on the way.
-struct ToneMapped {
-  Image8 image;
+/// What had to be repaired on the way to 8 bits.
+struct ToneMapCounts {
   std::size_t negative_pixels = 0;  ///< pixels with a channel < 0, clamped to 0
   std::size_t nan_pixels = 0;       ///< pixels with a NaN channel, set to 0
+  ToneMapCounts& operator+=(const ToneMapCounts& o) {
+    negative_pixels += o.negative_pixels;
+    nan_pixels += o.nan_pixels;
+    return *this;
+  }
 };
 
-/// Tone-maps a linear image (any size, including empty).
+/// The 8-bit image and what had to be repaired on the way.
+struct ToneMapped : ToneMapCounts {
+  Image8 image;
+};
+
+/// Tone-maps a linear image (any size, including empty) into a new image.
 ToneMapped ToneMap(const ImageF& image, const ToneMapOptions& options = {});
+
+/// The same into `out`, which is resized to the image's size: a render loop passes the same
+/// buffer every frame, so that after the first frame tone mapping allocates nothing (a fresh
+/// buffer costs a page fault per 4 KiB the first time it is written).
+ToneMapCounts ToneMapInto(const ImageF& image, const ToneMapOptions& options, Image8& out);
+
+/// Rows [row_begin, row_end) of `image` into the same rows of `out` (already image's size), on
+/// the calling thread. The rows' bytes equal ToneMapInto's.
+ToneMapCounts ToneMapRows(const ImageF& image, int row_begin, int row_end, const ToneMapOptions& options,
+                          Image8& out);
+
+/// `count` pixels from `in` to 3 * count bytes at `out`, on the calling thread: what the
+/// rasterizer calls per band while the band is still in cache (raster/rasterizer.h,
+/// RasterOptions::tone_map). The same bytes as ToneMapInto gives those pixels.
+ToneMapCounts ToneMapPixels(const glm::vec3* in, std::size_t count, const ToneMapOptions& options,
+                            std::uint8_t* out);
 
 /// One value through a curve (display-linear result in [0, 1]); x >= 0 and not NaN.
 float ApplyToneCurve(ToneCurve curve, float x);

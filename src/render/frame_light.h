@@ -19,6 +19,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "cpca/cpca_transfer.h"
 #include "env/environment.h"
 #include "geometry/mesh.h"
 #include "precompute/shade_wavelet.h"
@@ -38,6 +39,11 @@ class FrameLight {
   /// Per-vertex linear RGB radiance toward `eye`, as ShadeVertices gives it (without `albedo`:
   /// as if every albedo were 1 and the material diffuse).
   virtual std::vector<glm::vec3> Shade(const Mesh& mesh, bool albedo, const glm::dvec3* eye) const = 0;
+  /// The same into `out`, which a frame loop keeps between frames; a basis that can shade
+  /// without allocating overrides it.
+  virtual void ShadeInto(const Mesh& mesh, bool albedo, const glm::dvec3* eye, std::vector<glm::vec3>& out) const {
+    out = Shade(mesh, albedo, eye);
+  }
   /// A glossy material's lobe term alone (ShadeGlossy); 0 where the basis has none.
   virtual std::vector<glm::vec3> Glossy(const Mesh& mesh, const glm::dvec3* eye) const = 0;
   /// The light as the basis keeps it, arriving from unit direction `d` (the light view).
@@ -46,8 +52,11 @@ class FrameLight {
   virtual const Transport* ShTransport() const = 0;
 };
 
-/// SH: `transport` with `light` (bands beyond the transport's dropped), turned about `axis`.
-std::unique_ptr<FrameLight> MakeShFrameLight(const Transport& transport, const ShRgb& light, const glm::dvec3& axis);
+/// SH: `transport` with `light` (bands beyond the transport's dropped), turned about `axis`. With
+/// `cpca`, a glossy material's lobe comes from those compressed matrices (cpca/cpca_transfer.h)
+/// instead of transport.matrices; `transport` and `cpca` must outlive the result.
+std::unique_ptr<FrameLight> MakeShFrameLight(const Transport& transport, const ShRgb& light, const glm::dvec3& axis,
+                                             const CpcaTransfer* cpca = nullptr);
 
 /// Wavelets: `transport` under `env` turned about `axis`, `sh_light` lighting its bounces (may
 /// be empty without them); `light_terms` > 0 keeps only that many light coefficients per frame,

@@ -1,5 +1,7 @@
 #include "render/render_frames.h"
 
+#include "render/frame_writer.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -8,7 +10,6 @@
 #include <glm/matrix.hpp>
 
 #include "core/atomic_file.h"
-#include "core/background_jobs.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/parallel.h"
@@ -26,16 +27,23 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-/// Per-vertex colours of the chosen view; `scale` is TransportViewScale for the transport view.
-std::vector<glm::vec3> ViewColors(const Mesh& mesh, const FrameLight& light, const RenderOptions& o, double scale,
-                                  const glm::dvec3& eye) {
-  if (o.view == "irradiance") return light.Shade(mesh, false, nullptr);
-  if (o.view == "albedo") return mesh.albedo;
-  if (o.view == "glossy") return light.Glossy(mesh, &eye);
-  std::vector<glm::vec3> colors(mesh.vertex_count());
+/// Per-vertex colours of the chosen view into `colors`; `scale` is TransportViewScale for the
+/// transport view.
+void ViewColors(const Mesh& mesh, const FrameLight& light, const RenderOptions& o, double scale,
+                const glm::dvec3& eye, std::vector<glm::vec3>& colors) {
+  if (o.view == "irradiance") return light.ShadeInto(mesh, false, nullptr, colors);
+  if (o.view == "albedo") {
+    colors = mesh.albedo;
+    return;
+  }
+  if (o.view == "glossy") {
+    colors = light.Glossy(mesh, &eye);
+    return;
+  }
+  colors.resize(mesh.vertex_count());
   if (o.view == "light") {
     for (std::size_t v = 0; v < colors.size(); ++v) colors[v] = light.Kept(glm::dvec3(mesh.normals[v]));
-    return colors;
+    return;
   }
   if (o.view == "transport") {
     const Transport* transport = light.ShTransport();
@@ -46,9 +54,9 @@ std::vector<glm::vec3> ViewColors(const Mesh& mesh, const FrameLight& light, con
       const glm::vec3 c = DivergingColor(transport->at(v, 0)[o.transport_index] / s);
       colors[v] = glm::vec3(SrgbToLinear(c.x), SrgbToLinear(c.y), SrgbToLinear(c.z));
     }
-    return colors;
+    return;
   }
-  return light.Shade(mesh, true, &eye);
+  light.ShadeInto(mesh, true, &eye, colors);
 }
 
 /// A perpendicular up for a view along world up: looking down, the image's top shows -Z (the
@@ -93,30 +101,33 @@ Camera ChooseCamera(const Mesh& mesh, const RenderOptions& o, std::string* note)
   return c;
 }
 
-const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, FrameLight& light,
-                                  const Environment& env, const Camera& camera, const RenderOptions& o, double angle,
-                                  double view_scale) {
+const RasterImage& FrameDrawer::Draw(const Mesh& mesh, FrameLight& light, const Environment& env, const Camera& camera,
+                                     const RenderOptions& o, double angle, double view_scale, const ToneMapOptions* tone,
+                                     Image8* toned) {
   // The light, and the environment behind the mesh, turned by R: L'(d) = L(R^T d).
   light.Turn(angle);
   // A textured mesh is shaded per pixel: the texture's albedo times the interpolated irradiance
   // (the vertex colour without albedo), plus a glossy lobe, which the albedo does not scale.
   const bool textured = mesh.textured() && (o.view == "radiance" || o.view == "albedo");
-  std::vector<glm::vec3> colors, added;
+  added_.clear();
   if (!textured) {
-    colors = ViewColors(mesh, light, o, view_scale, glm::dvec3(camera.eye));
+    ViewColors(mesh, light, o, view_scale, glm::dvec3(camera.eye), colors_);
   } else if (o.view == "albedo") {
-    colors.assign(mesh.vertex_count(), glm::vec3(1.f));
+    colors_.assign(mesh.vertex_count(), glm::vec3(1.f));
   } else {
     const glm::dvec3 eye(camera.eye);
-    colors = light.Shade(mesh, false, nullptr);
+    light.ShadeInto(mesh, false, nullptr, colors_);
     const Transport* sh = light.ShTransport();
-    if (sh && sh->material.glossy) added = light.Glossy(mesh, &eye);
+    if (sh && sh->material.glossy) added_ = light.Glossy(mesh, &eye);
   }
-  RasterTexturing texturing{&mesh.corner_uv, &mesh.triangle_texture, &mesh.textures, added.empty() ? nullptr : &added};
+  RasterTexturing texturing{&mesh.corner_uv, &mesh.triangle_texture, &mesh.textures, added_.empty() ? nullptr : &added_};
   RasterOptions ro;
   if (textured) ro.texturing = &texturing;
   ro.ssaa = o.ssaa;
   ro.background.color = o.background_color;
+  ro.tone_map = tone;
+  ro.tone_mapped = toned;
+  ro.keep_linear = false;  // with tone mapping asked for, only the 8-bit frame is needed
   if (o.view == "transport") {
     ro.background.color = glm::vec3(static_cast<float>(SrgbToLinear(0.5f)));  // neutral grey: no colour to confuse with T
   } else if (o.view == "light") {
@@ -125,7 +136,14 @@ const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, Fram
     const glm::mat3 inverse(glm::transpose(AxisAngle(glm::normalize(o.axis), angle)));
     ro.background.radiance = [&env, inverse](const glm::vec3& d) { return glm::vec3(env.Radiance(glm::dvec3(inverse * d))); };
   }
-  return rasterizer.Draw(camera, o.width, o.height, mesh.positions, mesh.triangles, colors, ro);
+  return rasterizer_.Draw(camera, o.width, o.height, mesh.positions, mesh.triangles, colors_, ro);
+}
+
+const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, FrameLight& light,
+                                  const Environment& env, const Camera& camera, const RenderOptions& o, double angle,
+                                  double view_scale) {
+  FrameDrawer drawer(rasterizer);
+  return drawer.Draw(mesh, light, env, camera, o, angle, view_scale);
 }
 
 const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport,
@@ -135,13 +153,21 @@ const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, cons
   return RasterizeFrame(rasterizer, mesh, *sh, env, camera, o, angle, view_scale);
 }
 
-ToneMapped ToneMapFrame(const RasterImage& frame, const RenderOptions& o, double exposure_ev, double view_scale) {
+ToneMapOptions FrameToneMap(const RenderOptions& o, double exposure_ev) {
+  if (o.view == "transport") return ToneMapOptions{};  // false colours pass through unchanged
   ToneMapOptions tone;
   tone.curve = o.tonemap;
   tone.exposure_ev = float(exposure_ev);
-  if (o.view == "transport") tone = ToneMapOptions{};  // false colours pass through unchanged
-  ToneMapped mapped = ToneMap(frame.image, tone);
-  if (o.view == "transport") DrawDivergingLegend(mapped.image, view_scale, "T" + std::to_string(o.transport_index));
+  return tone;
+}
+
+void FinishFrame(Image8& image, const RenderOptions& o, double view_scale) {
+  if (o.view == "transport") DrawDivergingLegend(image, view_scale, "T" + std::to_string(o.transport_index));
+}
+
+ToneMapped ToneMapFrame(const RasterImage& frame, const RenderOptions& o, double exposure_ev, double view_scale) {
+  ToneMapped mapped = ToneMap(frame.image, FrameToneMap(o, exposure_ev));
+  FinishFrame(mapped.image, o, view_scale);
   return mapped;
 }
 
@@ -174,33 +200,37 @@ FrameStats RenderFrames(const Mesh& mesh, FrameLight& light, const Environment& 
   // The automatic exposure is measured on frame 0 (its light at angle 0) and used for all frames.
   const bool measure = !o.exposure && !transport_view;
   stats.exposure = o.exposure.value_or(0.0);
-  // Frames encoded and written in the background, one PNG per thread at most: the bytes of
-  // each file do not depend on how many are in flight.
-  BackgroundJobs writing(ThreadCount());
+  // Frames encoded and written on other threads, one frame per thread at most: the bytes of
+  // each file do not depend on how many are in flight. Every buffer lives across frames.
+  FrameWriter writer(ThreadCount(), video);
+  FrameDrawer drawer;
   const Bounds3 bounds = MeshBounds(mesh);
   Progress progress("rendering", static_cast<std::size_t>(o.frames));
   for (int i = 0; i < o.frames; ++i) {
     // Each frame from its absolute angle: no accumulated drift.
     const double angle = 2.0 * kPi * o.turns * double(i) / double(o.frames);
+    Image8& image = writer.Next(i, &stats.encode_seconds);  // rethrows an earlier frame's write error
     const auto t0 = std::chrono::steady_clock::now();
     const Camera seen_from = Orbit(camera, o.orbit * double(i) / double(o.frames), bounds.lo, bounds.hi);
-    const RasterImage& frame = RasterizeFrame(rasterizer, mesh, light, env, seen_from, o, angle, view_scale);
-    if (i == 0 && measure) stats.exposure = AutoExposureEv(frame, o.tonemap);
-    ToneMapped mapped = ToneMapFrame(frame, o, stats.exposure, view_scale);
+    // Frame 0 measures the exposure on the linear frame first; the others are tone mapped band
+    // by band as they are drawn (raster/rasterizer.h), the same bytes.
+    const bool measure_now = i == 0 && measure;
+    const ToneMapOptions tone = FrameToneMap(o, stats.exposure);
+    const RasterImage& frame = drawer.Draw(mesh, light, env, seen_from, o, angle, view_scale,
+                                           measure_now ? nullptr : &tone, &image);
+    ToneMapCounts counts = frame.tone_counts;
+    if (measure_now) {
+      stats.exposure = AutoExposureEv(frame, o.tonemap);
+      counts = ToneMapInto(frame.image, FrameToneMap(o, stats.exposure), image);
+    }
+    FinishFrame(image, o, view_scale);
     stats.draw_seconds += SecondsSince(t0);
-    stats.negative_pixels += mapped.negative_pixels;
-    stats.nan_pixels += mapped.nan_pixels;
-
-    const std::string path = folder.Output(FrameName(i, o.frames));
-    // Rethrows an earlier frame's write error.
-    stats.encode_seconds += writing.Submit([path, i, video, image = std::move(mapped.image)] {
-      const std::string png = EncodePng(image);
-      WriteFileAtomic(path, png);
-      if (video) video->AddFrame(i, image, png);
-    });
+    stats.negative_pixels += counts.negative_pixels;
+    stats.nan_pixels += counts.nan_pixels;
+    writer.Submit(folder.Output(FrameName(i, o.frames)));
     progress.Advance(1);
   }
-  stats.encode_seconds += writing.Wait();
+  stats.encode_seconds += writer.Finish();
   return stats;
 }
 

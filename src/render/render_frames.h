@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "core/output_folder.h"
 #include "env/environment.h"
@@ -45,6 +46,27 @@ double TransportViewScale(const Transport& transport, int index);
 /// `note` (if given) says so.
 Camera ChooseCamera(const Mesh& mesh, const RenderOptions& options, std::string* note = nullptr);
 
+/// What a frame loop keeps between frames: the rasterizer's buffers and the per-vertex colours,
+/// so that after the first frame drawing allocates nothing.
+class FrameDrawer {
+ public:
+  FrameDrawer() : rasterizer_(own_) {}
+  /// Draws with `rasterizer`'s buffers instead of its own.
+  explicit FrameDrawer(Rasterizer& rasterizer) : rasterizer_(rasterizer) {}
+  /// The frame RasterizeFrame (below) draws. With `tone` it is tone mapped into `*toned` band by
+  /// band as it is drawn and the linear frame is left out (RasterOptions::tone_map,
+  /// keep_linear): the result then has only RasterImage::tone_counts, what the tone mapping
+  /// repaired. Valid until the next Draw.
+  const RasterImage& Draw(const Mesh& mesh, FrameLight& light, const Environment& env, const Camera& camera,
+                          const RenderOptions& options, double angle, double view_scale,
+                          const ToneMapOptions* tone = nullptr, Image8* toned = nullptr);
+
+ private:
+  Rasterizer own_;
+  Rasterizer& rasterizer_;
+  std::vector<glm::vec3> colors_, added_;
+};
+
 /// The linear frame with `light` turned by `angle` radians (FrameLight::Turn): shading,
 /// rasterizing over the turned environment (the teaching view transport:K over a neutral grey
 /// instead, its colours scaled by `view_scale`, TransportViewScale; the light view over the
@@ -58,6 +80,13 @@ const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, cons
                                   const ShRgb& light, const Environment& env,
                                   const Camera& camera, const RenderOptions& options, double angle,
                                   double view_scale);
+
+/// How the frames of `options` are tone mapped at `exposure_ev` (the transport view: passed
+/// through unchanged).
+ToneMapOptions FrameToneMap(const RenderOptions& options, double exposure_ev);
+/// What a tone-mapped frame gets drawn on it: the transport view's legend, from -view_scale to
+/// +view_scale.
+void FinishFrame(Image8& image, const RenderOptions& options, double view_scale);
 
 /// A rasterized frame tone mapped with `exposure_ev` (the transport view: passed through, with
 /// its legend from -view_scale to +view_scale).

@@ -40,6 +40,11 @@ struct RenderOptions {
   /// Degrees the camera turns about the target (around its up direction) over all frames: frame
   /// i is seen from the camera turned by orbit * i / frames.
   double orbit = 0.0;
+  /// --cpca: the transfer matrices of a glossy --orbit compressed by clustered PCA (cpca/cpca.h)
+  /// into `cpca_clusters` clusters of a mean and `cpca_terms` principal matrices; 0 clusters: the
+  /// full matrices (--cpca off). The defaults: measured on the demo scene (app/scene_cpca.cpp).
+  int cpca_clusters = 256;
+  int cpca_terms = 4;
   /// Where frame 0's per-vertex linear radiance is written (precompute_io/transport_txt.h); empty: nowhere.
   std::string vertex_radiance;
   /// The frames also as one video file (app/render_video.h); empty: none. Its rate in frames

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+
+#include <glm/common.hpp>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -36,6 +38,7 @@ GlossyConfig MakeGlossyConfig(bool quick, int user_exponent, double ks, std::uin
   GlossyConfig c;
   c.ks = ks;
   c.seed = seed;
+  c.cpca_exponent = user_exponent;
   if (std::find(c.exponents.begin(), c.exponents.end(), user_exponent) == c.exponents.end()) {
     c.exponents.push_back(user_exponent);
     std::sort(c.exponents.begin(), c.exponents.end());
@@ -164,6 +167,14 @@ GlossyStudy RunGlossyStudy(const Mesh& mesh, const Environment& env, const glm::
       row.vs_vector = CompareVertices(total, s.total);
       row.lobe_vs_vector = CompareVertices(lobe, s.lobe);
       study.matrix_rows.push_back(row);
+    }
+    if (l == c.cpca_lmax && !c.cpca_clusters.empty()) {
+      // The compressed matrices against these, from an orbit of eyes about the mesh's centre.
+      glm::dvec3 lo(mesh.positions.front()), hi = lo;
+      for (const glm::vec3& p : mesh.positions) lo = glm::min(lo, glm::dvec3(p)), hi = glm::max(hi, glm::dvec3(p));
+      t.material = GlossyMaterial(Lobe{LobeKind::kPhong, c.cpca_exponent}, c.ks);
+      study.cpca = RunCpcaStudy(mesh, t, part, OrbitEyes(eye, 0.5 * (lo + hi), c.cpca_views), c.cpca_clusters,
+                                c.cpca_terms);
     }
   }
   if (!c.matrix_lmax.empty())

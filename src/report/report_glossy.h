@@ -26,6 +26,7 @@
 /// (lmax+1)^2 coefficients. Times are the fastest of repeats (report_sweep.h, TimedTransport).
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,7 @@
 #include "geometry/mesh.h"
 #include "precompute/error_metrics.h"
 #include "precompute/transport.h"
+#include "report/report_cpca.h"
 
 namespace prt {
 
@@ -51,6 +53,12 @@ struct GlossyConfig {
   int lobe_samples = 1024;     ///< lobe rays per vertex of the vector path
   int reference_samples = 8192;
   std::uint64_t seed = 1;
+  /// The CPCA rows (report_cpca.h): the shadowed matrices at this lmax (when the matrix sweep has
+  /// it) compressed by each cluster count x term count, shaded with the user's exponent.
+  int cpca_lmax = 4;
+  int cpca_exponent = 0;
+  std::vector<int> cpca_clusters = {16, 64, 256}, cpca_terms = {1, 2, 4, 8};
+  int cpca_views = 8;
 };
 
 /// The sweep `prt report` runs: `quick` keeps it to a few seconds (lmax to 8, fewer directions).
@@ -99,6 +107,7 @@ struct GlossyStudy {
   std::vector<GlossyExponent> exponents;
   std::vector<GlossyVectorRow> vector_rows;
   std::vector<GlossyMatrixRow> matrix_rows;
+  std::optional<CpcaStudy> cpca;
 };
 
 /// Runs the study on `mesh` under `env` seen from `eye` (progress on the run summary).

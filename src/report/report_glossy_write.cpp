@@ -94,6 +94,7 @@ std::string GlossyMarkdown(const GlossyStudy& d) {
   }
   s += "\nglossy_error_vs_lmax.png plots the lobe errors against lmax: per exponent (colour), unshadowed vector (solid, "
        "squares), shadowed vector (dashed, circles) and shadowed matrices (light solid, triangles).\n";
+  if (d.cpca) s += CpcaMarkdown(*d.cpca);
   return s;
 }
 
@@ -114,6 +115,7 @@ std::string GlossyCsvRows(const GlossyStudy& d) {
          MaterialField(r.exponent, d.ks) +
          Formatted(",glossy-matrices,%.6g,%.6g,%llu\n", r.lobe.relative, r.vs_vector.relative,
                    static_cast<unsigned long long>(r.bytes));
+  if (d.cpca) s += CpcaCsvRows(*d.cpca, d.samples, MaterialField(d.cpca->exponent, d.ks));
   return s;
 }
 

@@ -165,10 +165,14 @@ std::string Markdown(const ReportData& d) {
   if (d.glossy) s += GlossyMarkdown(*d.glossy);
   if (d.wavelet) s += WaveletMarkdown(*d.wavelet);
   if (d.noise) s += NoiseMarkdown(*d.noise);
-  const std::size_t glossy_rows = d.glossy ? d.glossy->vector_rows.size() + d.glossy->matrix_rows.size() : 0;
+  const std::size_t glossy_rows =
+      d.glossy ? d.glossy->vector_rows.size() + d.glossy->matrix_rows.size() + (d.glossy->cpca ? d.glossy->cpca->rows.size() : 0)
+               : 0;
   const std::size_t basis_rows = d.wavelet ? d.wavelet->rows.size() : 0;
   s += "\n## All measurements\n\nSee report.csv (" + std::to_string(d.rows.size() + glossy_rows + basis_rows) +
-       " rows; the glossy ones have material phong:N,KS and path glossy-vector or glossy-matrices" +
+       " rows; the glossy ones have material phong:N,KS and path glossy-vector, glossy-matrices or glossy-cpca-CxK "
+       "(clustered PCA against the full matrices: sampling_relative the matrices' Frobenius error, seconds the "
+       "compression, matrix_bytes the compressed bytes)" +
        (d.wavelet ? "; the basis section's have path basis-sh or basis-wavelet and the columns basis, budget and "
                     "bytes_per_vertex"
                   : "") +

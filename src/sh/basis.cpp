@@ -64,11 +64,11 @@ void EvalBasisBand2(const glm::dvec3& d, double* out) {
 void EvalBasisRecurrence(int lmax, const glm::dvec3& d, double* out) {
   const RecurrenceTable& t = Table();
   const double z = d.z;
-  double q = 0.28209479177387814;  // Q_0 = 1/sqrt(4 pi)
   double c = 1.0, s = 0.0;         // Re, Im of (x + i y)^m
   for (int m = 0; m <= lmax; ++m) {
+    // Q_m and sqrt(2m + 3) from the table: the same products as computing them here, no sqrt.
+    const double q = t.q[m];
     if (m > 0) {
-      q *= -std::sqrt((2.0 * m + 1.0) / (2.0 * m));
       const double c1 = c * d.x - s * d.y;
       s = c * d.y + s * d.x;
       c = c1;
@@ -82,7 +82,7 @@ void EvalBasisRecurrence(int lmax, const glm::dvec3& d, double* out) {
       if (l == m) {
         p = q;
       } else if (l == m + 1) {
-        p = std::sqrt(2.0 * m + 3.0) * z * q;
+        p = t.c1[m] * z * q;
       } else {
         const int k = ShIndex(l, m);
         p = t.a[k] * (z * p1 - t.b[k] * p2);

@@ -76,6 +76,7 @@ TEST_SUITE("app") {
       g.lobe = std::stod(f[col["lobe_relative"]]);
       const bool matrices = f[col["path"]] == "glossy-matrices";
       if (matrices) g.vs_vector = std::stod(f[col["vs_vector_relative"]]), g.bytes = std::stod(f[col["matrix_bytes"]]);
+      if (f[col["path"]].rfind("glossy-cpca-", 0) == 0) g.bytes = std::stod(f[col["matrix_bytes"]]);
       INFO(line);
       CHECK(std::isfinite(g.total));
       CHECK(std::isfinite(g.lobe));
@@ -83,17 +84,31 @@ TEST_SUITE("app") {
       CHECK(g.total > 0);
       rows[{f[col["mode"]], f[col["path"]], n, std::stoi(f[col["lmax"]])}] = g;
     }
+    const auto vec = [&rows](const char* mode, int n, int l) { return rows.at({mode, "glossy-vector", n, l}); };
+    const auto mat = [&rows](int n, int l) { return rows.at({"shadowed", "glossy-matrices", n, l}); };
     // Exponents 10, 100, 1000 and the user's 20; vector rows unshadowed and shadowed at 1..8
-    // (1, 2, 3, 4, 6, 8), matrix rows (shadowed) at 1..4.
-    CHECK(rows.size() == 4 * 2 * 6 + 4 * 4);
+    // (1, 2, 3, 4, 6, 8), matrix rows (shadowed) at 1..4; CPCA rows (the user's 20, lmax 4) for
+    // clusters {16, 64, 256} x terms {1, 2, 4, 8}.
+    CHECK(rows.size() == 4 * 2 * 6 + 4 * 4 + 3 * 4);
+    // CPCA against the full matrices: more terms, less error (measured on this scene: 16
+    // clusters, lobe error from 1 term to 8 falls by more than half), and 16 clusters take less
+    // memory than the full matrices.
+    const double full_bytes = mat(20, 4).bytes;
+    for (int c : {16, 64, 256}) {
+      const auto cpca = [&rows, c](int k) { return rows.at({"shadowed", "glossy-cpca-" + std::to_string(c) + "x" + std::to_string(k), 20, 4}); };
+      CAPTURE(c);
+      CHECK(cpca(8).lobe < cpca(1).lobe);
+      CHECK(cpca(8).total < cpca(1).total);
+      CHECK(cpca(1).lobe < 1.0);
+    }
+    CHECK(md.find("Transfer matrices compressed by clustered PCA") != std::string::npos);
+    for (int k : {1, 2, 4, 8}) CHECK(rows.at({"shadowed", "glossy-cpca-16x" + std::to_string(k), 20, 4}).bytes < 0.25 * full_bytes);
     for (int n : {10, 20, 100, 1000}) {
       CAPTURE(n);
       CHECK(rows.count({"unshadowed", "glossy-vector", n, 8}) == 1);
       CHECK(rows.count({"shadowed", "glossy-vector", n, 8}) == 1);
       CHECK(rows.count({"shadowed", "glossy-matrices", n, 4}) == 1);
     }
-    const auto vec = [&rows](const char* mode, int n, int l) { return rows.at({mode, "glossy-vector", n, l}); };
-    const auto mat = [&rows](int n, int l) { return rows.at({"shadowed", "glossy-matrices", n, l}); };
 
     // N = 10 (sqrt(N) 3.2): the vector path's error does not rise from lmax 1 to 8, in either
     // mode. Unshadowed it falls far (measured: lobe 62% -> 2.5%, total 19% -> 0.8%): bands 0..8

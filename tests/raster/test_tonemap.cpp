@@ -54,6 +54,31 @@ TEST_SUITE("raster") {
     }
   }
 
+  TEST_CASE("ToneMap encodes the floats around every threshold as EncodeSrgb8 does, 32 at a time or not") {
+    // The rows' encoding has a vector version (AVX2 gathers from the same table, 32 values at
+    // a time, the rest one by one); these are the values where a wrong index, comparison or
+    // byte order would show. 255 thresholds x 9 floats, in rows of several widths so that the
+    // vector loop and its tail both see them.
+    std::vector<float> values;
+    for (int k = 1; k < 256; ++k) {
+      const double s = (k - 0.5) / 255.0;
+      float v = static_cast<float>(s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4));
+      for (int i = 0; i < 4; ++i) v = std::nextafter(v, 0.f);
+      for (int step = 0; step < 9; ++step, v = std::nextafter(v, 2.f)) values.push_back(v);
+    }
+    values.push_back(0.f);
+    values.push_back(1.f);
+    for (int width : {1, 11, 64, 765}) {
+      const int height = static_cast<int>((values.size() + 3 * width - 1) / (3 * width));
+      prt::ImageF image(width, height);
+      float* flat = reinterpret_cast<float*>(image.pixels.data());
+      for (std::size_t i = 0; i < 3 * image.pixels.size(); ++i) flat[i] = values[i % values.size()];
+      const prt::ToneMapped out = prt::ToneMap(image);
+      for (std::size_t i = 0; i < 3 * image.pixels.size(); ++i)
+        REQUIRE(int(out.image.rgb[i]) == int(prt::EncodeSrgb8(flat[i])));
+    }
+  }
+
   TEST_CASE("ToneMap equals EncodeSrgb8 of each channel through every curve, in rows with and without bad values") {
     // A 1000-pixel-wide image (more than one block of the row loop) of values over [0, 1.2]
     // with every channel different; row 1 also holds a NaN and a negative, row 0 none.

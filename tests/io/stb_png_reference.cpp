@@ -1,4 +1,8 @@
-#include "io/png_writer_zlib.h"
+// The reference the tests hold prt's PNG encoder (io/png_encoder.h) to: stb_image_write's PNG
+// writer (Debian's libstb) with zlib's compress2 as its compressor and the "sub" filter forced,
+// the path prt's frames were written by before it had its own encoder. Compiled here from the
+// header, with internal linkage.
+#include "tests/io/stb_png_reference.h"
 
 #include <cstdlib>
 
@@ -6,7 +10,7 @@
 
 namespace {
 
-thread_local int t_level = prt::kPngLevel;  // the level of this thread's current encoding
+thread_local int t_level = 2;  // the level of this thread's current encoding
 
 /// stb's compressor hook: the zlib stream of `data`, in a buffer stb releases with free().
 unsigned char* ZlibCompress(unsigned char* data, int data_len, int* out_len, int /*quality*/) {
@@ -36,7 +40,7 @@ unsigned char* ZlibCompress(unsigned char* data, int data_len, int* out_len, int
 #include <stb_image_write.h>
 #pragma GCC diagnostic pop
 
-namespace prt {
+namespace test {
 namespace {
 
 void Append(void* context, void* data, int size) {
@@ -45,14 +49,17 @@ void Append(void* context, void* data, int size) {
 
 }  // namespace
 
-bool EncodePngZlib(const std::uint8_t* rgb, int width, int height, int level, std::string& out) {
+std::string StbPng(const prt::Image8& image, int level) {
+  std::string out;
   t_level = level;
   // "sub" filter on every row, as fast as any and good on smooth rendered images. This copy's
   // settings are private to this file (internal linkage); set once, by a thread-safe static
   // initialisation, because several frames are encoded at once and stb only reads it.
   static const bool filter_set = (stbi_write_force_png_filter = 1, true);
   (void)filter_set;
-  return stbi_write_png_to_func(Append, &out, width, height, 3, rgb, 3 * width) != 0;
+  if (!stbi_write_png_to_func(Append, &out, image.width, image.height, 3, image.rgb.data(), 3 * image.width))
+    out.clear();
+  return out;
 }
 
-}  // namespace prt
+}  // namespace test
