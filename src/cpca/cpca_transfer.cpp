@@ -58,17 +58,16 @@ struct VertexJob {
   glm::vec3* out;
 };
 
-/// The glossy radiance of vertices [begin, end): the lobe row toward the eye (LobeRow, as for the
-/// full matrices), y = (M_c L) + sum_k w_k (P_ck L) from the cluster's products, then KS hy . y.
+/// The glossy radiance of vertices [begin, end): their lobe rows toward the eye (`rows`, from
+/// LobeRows), y = (M_c L) + sum_k w_k (P_ck L) from the cluster's products, then KS hy . y.
 /// Inlined into one function per instruction set (the same operations in the same order: the
 /// same bits from each).
-PRT_SIMD_INLINE void ShadeVertexRange(const VertexJob& j, std::size_t begin, std::size_t end) {
+PRT_SIMD_INLINE void ShadeVertexRange(const VertexJob& j, std::size_t begin, std::size_t end, const double* rows) {
   const CpcaModel& m = j.cpca.model;
   const int lmax = j.cpca.lmax, n = CoeffCount(lmax), channels = j.cpca.channels, terms = m.terms;
-  std::vector<double> hy(n);
   std::vector<float> y(3 * std::size_t(n)), lobe(n);
   for (std::size_t v = begin; v < end; ++v) {
-    LobeRow(glm::dvec3(j.mesh.normals[v]), glm::dvec3(j.mesh.positions[v]), j.eye, lmax, j.h, hy.data());
+    const double* hy = rows + (v - begin) * std::size_t(n);
     for (int i = 0; i < n; ++i) lobe[i] = float(hy[i]);
     for (int c = 0; c < channels; ++c) {
       // All three colours with one matrix, else this channel's.
@@ -89,9 +88,11 @@ PRT_SIMD_INLINE void ShadeVertexRange(const VertexJob& j, std::size_t begin, std
   }
 }
 
-void ShadeVerticesBase(const VertexJob& j, std::size_t begin, std::size_t end) { ShadeVertexRange(j, begin, end); }
-PRT_TARGET_AVX2 void ShadeVerticesAvx2(const VertexJob& j, std::size_t begin, std::size_t end) {
-  ShadeVertexRange(j, begin, end);
+void ShadeVerticesBase(const VertexJob& j, std::size_t begin, std::size_t end, const double* rows) {
+  ShadeVertexRange(j, begin, end, rows);
+}
+PRT_TARGET_AVX2 void ShadeVerticesAvx2(const VertexJob& j, std::size_t begin, std::size_t end, const double* rows) {
+  ShadeVertexRange(j, begin, end, rows);
 }
 
 }  // namespace
@@ -122,8 +123,11 @@ std::vector<glm::vec3> GlossyFromCpca(const Mesh& mesh, const CpcaTransfer& cpca
   const VertexJob job{mesh, cpca, products.data(), material.lobe.ZonalCoefficients(cpca.lmax), material.ks, eye, out.data()};
   const bool avx2 = CpuVectorLevel() >= VectorLevel::kAvx2;
   ParallelFor(out.size(), 256, [&](std::size_t begin, std::size_t end) {
-    if (avx2) ShadeVerticesAvx2(job, begin, end);
-    else ShadeVerticesBase(job, begin, end);
+    // The lobe rows of the whole range first, the basis several vertices at a time (LobeRows).
+    std::vector<double> rows;
+    LobeRows(mesh, begin, end, job.eye, cpca.lmax, job.h, rows);
+    if (avx2) ShadeVerticesAvx2(job, begin, end, rows.data());
+    else ShadeVerticesBase(job, begin, end, rows.data());
   });
   return out;
 }

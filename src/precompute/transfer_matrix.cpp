@@ -106,6 +106,21 @@ void LobeRow(const glm::dvec3& normal, const glm::dvec3& position, const glm::dv
     for (int m = -l; m <= l; ++m, ++k) hy[k] *= h[l];
 }
 
+void LobeRows(const Mesh& mesh, std::size_t begin, std::size_t end, const glm::dvec3& eye, int lmax,
+              const std::vector<double>& h, std::vector<double>& rows) {
+  const std::size_t count = end - begin, n = CoeffCount(lmax);
+  std::vector<double> axes(3 * count);  // x, then y, then z of every vertex's lobe axis
+  for (std::size_t i = 0; i < count; ++i) {
+    const glm::dvec3 r = LobeAxis(glm::dvec3(mesh.normals[begin + i]), glm::dvec3(mesh.positions[begin + i]), eye);
+    axes[i] = r.x, axes[count + i] = r.y, axes[2 * count + i] = r.z;
+  }
+  rows.resize(count * n);
+  EvalBasisBatch(lmax, count, axes.data(), axes.data() + count, axes.data() + 2 * count, rows.data());
+  for (std::size_t i = 0; i < count; ++i)
+    for (int l = 0, k = 0; l <= lmax; ++l)
+      for (int m = -l; m <= l; ++m, ++k) rows[i * n + std::size_t(k)] *= h[std::size_t(l)];
+}
+
 std::vector<glm::vec3> GlossyFromMatrices(const Mesh& mesh, const Transport& transport, const Material& material,
                                           const ShRgb& light, const glm::dvec3& eye) {
   const int lmax = transport.lmax, n = CoeffCount(lmax);

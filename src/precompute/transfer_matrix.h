@@ -57,6 +57,12 @@ void UnshadowedTransferMatrix(const glm::dvec3& normal, int lmax, double* out);
 void LobeRow(const glm::dvec3& normal, const glm::dvec3& position, const glm::dvec3& eye, int lmax,
              const std::vector<double>& h, double* hy);
 
+/// LobeRow of vertices [begin, end) of `mesh` into rows[(v - begin) * CoeffCount(lmax) + k], the
+/// basis evaluated several vertices at a time (sh/basis.h, EvalBasisBatch; it rounds unlike
+/// EvalBasis, within a few ulps). `rows` is resized to fit.
+void LobeRows(const Mesh& mesh, std::size_t begin, std::size_t end, const glm::dvec3& eye, int lmax,
+              const std::vector<double>& h, std::vector<double>& rows);
+
 /// Linear RGB glossy radiance KS sum_l h_l sum_m (M L)_lm Y_lm(r) of every vertex seen from
 /// `eye` (h = the lobe's zonal coefficients, material/lobe.h); added to the diffuse part by
 /// ShadeVerticesFromMatrices (shade.h).

@@ -267,6 +267,56 @@ PRT_TARGET_X86_64_V4 void ProjectBatch8(int lmax, std::size_t n, const double* c
 }
 #endif
 
+/// EvalBasisBatch with groups of G vectors V, then pairs, then the last direction (its pair
+/// padded with a copy): every lane rounds as BasisLanes does, so every kernel writes the same.
+template <class V, int G>
+PRT_SIMD_INLINE void EvalBatchBody(int lmax, std::size_t n, const double* const in[3], double* out) {
+  const std::size_t count = CoeffCount(lmax);
+  constexpr std::size_t kLanes = sizeof(V) / sizeof(double);
+  std::size_t i = 0;
+  for (; i + G * kLanes <= n; i += G * kLanes) {
+    V x[G], y[G], z[G];
+    for (int g = 0; g < G; ++g) {
+      x[g] = Load<V>(in[0] + i + g * kLanes), y[g] = Load<V>(in[1] + i + g * kLanes), z[g] = Load<V>(in[2] + i + g * kLanes);
+    }
+    BasisLanes<V, G>(lmax, x, y, z, [&](int k, const V* v) {
+      for (int g = 0; g < G; ++g)
+        for (std::size_t j = 0; j < kLanes; ++j) out[(i + g * kLanes + j) * count + std::size_t(k)] = v[g][j];
+    });
+  }
+  for (; i < n; i += 2) {
+    const std::size_t last = std::min(i + 1, n - 1);
+    const V2 x[1] = {V2{in[0][i], in[0][last]}}, y[1] = {V2{in[1][i], in[1][last]}}, z[1] = {V2{in[2][i], in[2][last]}};
+    BasisLanes<V2, 1>(lmax, x, y, z, [&](int k, const V2* v) {
+      out[i * count + std::size_t(k)] = v[0][0];
+      if (i + 1 < n) out[(i + 1) * count + std::size_t(k)] = v[0][1];
+    });
+  }
+}
+
+using EvalKernel = void (*)(int lmax, std::size_t n, const double* const in[3], double* out);
+
+void EvalBatch2(int lmax, std::size_t n, const double* const in[3], double* out) { EvalBatchBody<V2, 4>(lmax, n, in, out); }
+#ifdef PRT_TARGET_X86_64_V4
+PRT_TARGET_AVX2 void EvalBatch4(int lmax, std::size_t n, const double* const in[3], double* out) {
+  EvalBatchBody<V4, 4>(lmax, n, in, out);
+}
+PRT_TARGET_X86_64_V4 void EvalBatch8(int lmax, std::size_t n, const double* const in[3], double* out) {
+  EvalBatchBody<V8, 2>(lmax, n, in, out);
+}
+#endif
+
+EvalKernel EvalKernelFor(VectorLevel level) {
+#ifdef PRT_TARGET_X86_64_V4
+  switch (level) {
+    case VectorLevel::kX86_64V4: return EvalBatch8;
+    case VectorLevel::kAvx2: return EvalBatch4;
+    case VectorLevel::kBaseline: break;
+  }
+#endif
+  return EvalBatch2;
+}
+
 BatchKernel KernelFor(VectorLevel level) {
 #ifdef PRT_TARGET_X86_64_V4
   switch (level) {
@@ -330,6 +380,17 @@ long double EvalBasisReference(int l, int m, const glm::dvec3& dir) {
   if (m == 0) return k * p;
   const long double sqrt2 = 1.414213562373095048801688724209698079L;
   return m > 0 ? sqrt2 * k * p * std::cos(am * phi) : sqrt2 * k * p * std::sin(am * phi);
+}
+
+void EvalBasisBatch(int lmax, std::size_t n, const double* x, const double* y, const double* z, double* out) {
+  static const VectorLevel level = CpuVectorLevel();
+  EvalBasisBatchAt(level, lmax, n, x, y, z, out);
+}
+
+void EvalBasisBatchAt(VectorLevel level, int lmax, std::size_t n, const double* x, const double* y, const double* z,
+                      double* out) {
+  const double* const in[3] = {x, y, z};
+  EvalKernelFor(std::min(level, CpuVectorLevel()))(lmax, n, in, out);
 }
 
 }  // namespace prt

@@ -59,6 +59,16 @@ void ProjectBasisBatch(int lmax, std::size_t n, const double* x, const double* y
 void ProjectBasisBatchAt(VectorLevel level, int lmax, std::size_t n, const double* x, const double* y,
                          const double* z, const double* wr, const double* wg, const double* wb, double* sums);
 
+/// Y_k of n unit directions (x[i], y[i], z[i]) into out[i * CoeffCount(lmax) + k], several
+/// directions per vector: what shading a vertex's lobe toward a moving eye needs for every
+/// vertex of a frame. Each direction rounds as ProjectBasisBatch's do (EvalBasis rounds
+/// differently), the same bits from the SSE2, AVX2 and AVX-512 kernels.
+void EvalBasisBatch(int lmax, std::size_t n, const double* x, const double* y, const double* z, double* out);
+
+/// EvalBasisBatch with the kernel of `level`, or of the widest level below it this CPU runs.
+void EvalBasisBatchAt(VectorLevel level, int lmax, std::size_t n, const double* x, const double* y, const double* z,
+                      double* out);
+
 /// Closed forms of bands 0..2 (9 values), as listed in CONVENTIONS.md.
 void EvalBasisBand2(const glm::dvec3& dir, double* out);
 

@@ -168,4 +168,34 @@ TEST_SUITE("sh") {
       }
     }
   }
+
+  TEST_CASE("batch evaluation: every kernel gives the same bits, each direction EvalBasis's values") {
+    // n from 1 to 37 directions (every remainder of the vector groups and the padded last one),
+    // at lmax 2, 4 and 9: each kernel this CPU runs writes what the baseline writes, and every
+    // value is the recurrence's within a few ulps of the largest basis value of its band.
+    constexpr double kRoundingTolerance = 1e-13;  // ulps of values up to ~1 (EvalBasis rounds in another order)
+    Pcg32 rng(5, 8);
+    for (std::size_t n : {std::size_t(1), std::size_t(2), std::size_t(3), std::size_t(7), std::size_t(16), std::size_t(37)}) {
+      std::vector<double> x(n), y(n), z(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const glm::dvec3 d = RandomDirection(rng);
+        x[i] = d.x, y[i] = d.y, z[i] = d.z;
+      }
+      for (int lmax : {2, 4, 9}) {
+        const std::size_t count = CoeffCount(lmax);
+        std::vector<double> baseline(n * count, -7.0), basis(count);
+        EvalBasisBatchAt(VectorLevel::kBaseline, lmax, n, x.data(), y.data(), z.data(), baseline.data());
+        for (std::size_t i = 0; i < n; ++i) {
+          EvalBasisRecurrence(lmax, glm::dvec3(x[i], y[i], z[i]), basis.data());
+          for (std::size_t k = 0; k < count; ++k)
+            REQUIRE(std::fabs(baseline[i * count + k] - basis[k]) <= kRoundingTolerance);
+        }
+        for (VectorLevel level : {VectorLevel::kAvx2, VectorLevel::kX86_64V4}) {
+          std::vector<double> wide(n * count, 7.0);
+          EvalBasisBatchAt(level, lmax, n, x.data(), y.data(), z.data(), wide.data());
+          CHECK(wide == baseline);
+        }
+      }
+    }
+  }
 }
