@@ -6,8 +6,8 @@
 // sky, 8 views on an orbit; report/report_cpca.h): 0.046 of the matrices' memory (3.7 of 81 MiB),
 // relative error 2.9 % in the matrices (Frobenius), 2.1 % in the glossy and 0.8 % in the rendered
 // radiance; 64 x 8 is 3.0 % glossy at 0.031 of the memory but shades 9 products a vertex instead
-// of 5; 256 x 8 halves the error at twice the per-vertex work. A frame's shading then costs about
-// 3.5 diffuse frames (the full matrices: 7.5; `prt bench transport`).
+// of 5; 256 x 8 halves the error at twice the per-vertex work. A frame's shading then costs
+// 2.9-3.3 diffuse frames (the full matrices: 6.4-7.5; `prt bench transport`, 2 threads).
 #include <algorithm>
 #include <chrono>
 
