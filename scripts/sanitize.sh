@@ -25,38 +25,34 @@ build() {  # build FOLDER CMAKE_OPTION
   cmake --build "$1" --parallel "$jobs" --target prt prt_tests
 }
 
-# Without doctest arguments each suite runs through CTest, one test case per process and one
-# process per core (the suites ran serially on one core before, which made them most of CI's
+# Without doctest arguments the default tests run through CTest, one test case per process and
+# one process per core (the suites ran serially on one core before, which made them most of CI's
 # time); with arguments, prt_tests runs them itself, as before.
-run_ctest() {  # run_ctest FOLDER CTEST_LABEL_ARGS...
-  local folder=$1
-  shift
-  ctest --test-dir "$folder" --output-on-failure --no-tests=error --parallel "$jobs" "$@"
+run_suite() {  # run_suite NAME FOLDER "DEFAULT TESTS" "CTEST SELECTION" [DOCTEST ARGS...]
+  local name=$1 folder=$2 what=$3 selection=$4
+  shift 4
+  if [ $# -eq 0 ]; then
+    echo "== $name: $what, through ctest"
+    ctest --test-dir "$folder" --output-on-failure --no-tests=error --parallel "$jobs" $selection
+  else
+    echo "== $name: prt_tests $*"
+    "$folder/prt_tests" --no-intro=true "$@"
+  fi
 }
 
 run_asan() {
   build build-asan PRT_SANITIZE
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-  if [ $# -eq 0 ]; then
-    echo "== AddressSanitizer + UndefinedBehaviorSanitizer: every test but the readme suite, through ctest"
-    run_ctest build-asan --label-exclude '^readme$'
-  else
-    echo "== AddressSanitizer + UndefinedBehaviorSanitizer: prt_tests $*"
-    build-asan/prt_tests --no-intro=true "$@"
-  fi
+  run_suite "AddressSanitizer + UndefinedBehaviorSanitizer" build-asan "every test but the readme suite" \
+    "--label-exclude ^readme$" "$@"
 }
 
 run_tsan() {
   build build-tsan PRT_TSAN
   export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
-  if [ $# -eq 0 ]; then
-    echo "== ThreadSanitizer: the core, precompute, video and app suites, through ctest"
-    run_ctest build-tsan --label-regex '^(core|precompute|video|app)$'
-  else
-    echo "== ThreadSanitizer: prt_tests $*"
-    build-tsan/prt_tests --no-intro=true "$@"
-  fi
+  run_suite "ThreadSanitizer" build-tsan "the core, precompute, video and app suites" \
+    "--label-regex ^(core|precompute|video|app)$" "$@"
 }
 
 case "$what" in

@@ -1,6 +1,7 @@
 #include "raster/rasterizer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -366,17 +367,18 @@ const RasterImage& Rasterizer::Draw(const Camera& camera, int width, int height,
     toned->width = width;
     toned->height = height;
     toned->rgb.resize(3 * static_cast<std::size_t>(width) * height);
-    band_tone_counts_.assign(static_cast<std::size_t>(band_count), ToneMapCounts{});
   }
   if (linear) {
     frame_.image.width = width;
     frame_.image.height = height;
     frame_.image.pixels.resize(static_cast<std::size_t>(width) * height);
     frame_.coverage.resize(static_cast<std::size_t>(width) * height);
-  } else {  // not drawn: nothing stale may pass for this frame
-    frame_.image = ImageF();
+  } else {  // not drawn: nothing stale may pass for this frame (the buffers stay for the next)
+    frame_.image.width = frame_.image.height = 0;
+    frame_.image.pixels.clear();
     frame_.coverage.clear();
   }
+  std::atomic<std::size_t> negative{0}, nan{0};  // the tone map's repairs: integer sums, any thread count
   ParallelFor(band_count, 1, [&](std::size_t band, std::size_t) {
     thread_local BandBuffers buffers;
     const int y0 = static_cast<int>(band) * band_samples;
@@ -413,13 +415,15 @@ const RasterImage& Rasterizer::Draw(const Camera& camera, int width, int height,
       FillRows(*binned_[i], y0, y1, y0, target.width, buffers.depth.data(), color);
     }
     Resolve(buffers, row_begin, row_end, y0, k, background, rays, out);
-    if (toned)
-      band_tone_counts_[band] = ToneMapPixels(out.image, pixels, *options.tone_map,
-                                              &toned->rgb[3 * static_cast<std::size_t>(row_begin) * width]);
+    if (toned) {
+      const ToneMapCounts c = ToneMapPixels(out.image, pixels, *options.tone_map,
+                                            &toned->rgb[3 * static_cast<std::size_t>(row_begin) * width]);
+      negative += c.negative_pixels;
+      nan += c.nan_pixels;
+    }
   });
-  frame_.tone_counts = {};
-  if (toned)
-    for (const ToneMapCounts& counts : band_tone_counts_) frame_.tone_counts += counts;
+  frame_.tone_counts.negative_pixels = negative;
+  frame_.tone_counts.nan_pixels = nan;
   return frame_;
 }
 

@@ -123,7 +123,6 @@ class Rasterizer {
   std::vector<std::size_t> band_start_;              // band b: binned_[band_start_[b] ...]
   std::vector<std::size_t> chunk_band_count_;        // SetUp's counts, then Bin's offsets, [chunk][band]
   std::vector<const RasterTriangle*> binned_;        // triangles per band, in input order
-  std::vector<ToneMapCounts> band_tone_counts_;      // per band, summed in band order
 };
 
 /// One frame with a temporary Rasterizer (see Rasterizer::Draw).

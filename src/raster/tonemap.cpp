@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <vector>
@@ -237,21 +238,18 @@ ToneMapCounts ToneMapInto(const ImageF& image, const ToneMapOptions& options, Im
   out.width = image.width;
   out.height = image.height;
   out.rgb.resize(3 * image.pixels.size());
-  // Counts per block of rows, summed afterwards in order: the same totals for any thread count.
+  // Counts per block of rows, added up as they finish: integer sums, the same for any thread count.
   constexpr std::size_t kRows = 16;
   const std::size_t rows = static_cast<std::size_t>(std::max(0, image.height));
-  const std::size_t blocks = ChunkCount(rows, kRows);
-  ToneMapCounts per_block[64];  // no allocation per frame: the blocks' counts are summed in groups
+  std::atomic<std::size_t> negative{0}, nan{0};
+  ParallelFor(rows, kRows, [&](std::size_t begin, std::size_t end) {
+    const ToneMapCounts c = ToneMapRows(image, static_cast<int>(begin), static_cast<int>(end), options, out);
+    negative += c.negative_pixels;
+    nan += c.nan_pixels;
+  });
   ToneMapCounts total;
-  for (std::size_t group = 0; group < blocks; group += 64) {
-    const std::size_t count = std::min<std::size_t>(64, blocks - group);
-    ParallelFor(count, 1, [&](std::size_t b, std::size_t) {
-      const std::size_t first = (group + b) * kRows;
-      per_block[b] = ToneMapRows(image, static_cast<int>(first), static_cast<int>(std::min(rows, first + kRows)),
-                                 options, out);
-    });
-    for (std::size_t b = 0; b < count; ++b) total += per_block[b];
-  }
+  total.negative_pixels = negative;
+  total.nan_pixels = nan;
   return total;
 }
 

@@ -19,6 +19,11 @@ TEST_SUITE_BEGIN("cpca");
 
 namespace {
 
+// Reconstructions that should be exact, up to floats: the rows are floats of size ~3, the model's
+// means, directions and weights floats too (up to 16 terms), so a few float roundings relative
+// to the rows' norm.
+constexpr double kFloatPrecision = 2e-6;
+
 /// Rows of `dim` floats: `clusters` planted clusters, row r in cluster r % clusters (interleaved,
 /// so no cluster is a block of rows), each mean_c + sum_k t_rk u_ck with `rank` random directions.
 /// `mean_scale` sets how far apart the means lie (0: all the same mean).
@@ -63,9 +68,6 @@ bool SamePartition(const CpcaModel& m, const std::vector<int>& truth) {
 }  // namespace
 
 TEST_CASE("cpca: planted mean + rank-K clusters come back to float precision, clusters recovered") {
-  // Tolerance: the rows are floats of size ~3, the model's means, directions and weights floats
-  // too: a few float roundings relative to the rows' norm.
-  constexpr double kFloatPrecision = 2e-6;
   const Planted p = Plant(4, 2, 60, 16, 3.0, 11);
   CpcaOptions o;
   o.clusters = 4;
@@ -80,8 +82,7 @@ TEST_CASE("cpca: planted mean + rank-K clusters come back to float precision, cl
 
 TEST_CASE("cpca: clusters told apart by their subspaces, not by their means") {
   // Two lines through the same point: a mean-distance assignment (plain k-means) cannot split
-  // them, the reconstruction error does. Tolerance as above.
-  constexpr double kFloatPrecision = 2e-6;
+  // them, the reconstruction error does.
   const Planted p = Plant(2, 1, 100, 12, 0.0, 5);
   CpcaOptions o;
   o.clusters = 2;
@@ -93,8 +94,6 @@ TEST_CASE("cpca: clusters told apart by their subspaces, not by their means") {
 }
 
 TEST_CASE("cpca: one row per cluster, or as many terms as numbers, is lossless") {
-  // Tolerance: float rounding of the mean plus K weighted directions (K = dim = 16 terms).
-  constexpr double kFloatPrecision = 2e-6;
   const Planted p = Plant(3, 5, 10, 16, 1.0, 3);
   const std::size_t rows = p.truth.size();
   CpcaOptions o;

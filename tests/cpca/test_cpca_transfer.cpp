@@ -21,17 +21,7 @@ TEST_SUITE_BEGIN("cpca");
 namespace {
 
 /// Shadowed (or coloured interreflection: three channels) transfer matrices of the test scene.
-Transport Matrices(bool coloured) {
-  Mesh mesh = test::SphereOverPlane();
-  if (coloured) mesh.albedo[3] = glm::vec3(0.2f, 0.4f, 0.3f);
-  TransportOptions o;
-  o.mode = coloured ? TransportMode::kInterreflection : TransportMode::kShadowed;
-  o.lmax = 2;
-  o.samples = 64;
-  o.material = ParseMaterial("phong:8,0.4");
-  o.matrices = true;
-  return ComputeTransport(mesh, o, nullptr);
-}
+Transport Matrices(bool coloured) { return test::MakeGlossyMatrixScene(coloured, "phong:8,0.4").transport; }
 
 /// Largest |a - b| over every vertex and channel, relative to the largest |b|.
 double RelativeMax(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {

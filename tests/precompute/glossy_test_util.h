@@ -7,6 +7,8 @@
 
 #include "geometry/mesh_ops.h"
 #include "geometry/procedural.h"
+#include "material/material.h"
+#include "precompute/transport.h"
 #include "sh/basis.h"
 #include "sh/coeffs.h"
 
@@ -27,6 +29,28 @@ inline Mesh SphereOverPlane(const SphereOverPlaneShape& s = {}) {
   Mesh mesh = MakePlane(s.plane_size, s.plane_divisions, 0.0f, s.albedo);
   AppendMesh(mesh, MakeSphere(s.sphere_segments, s.radius, glm::vec3(0.0f, s.height, 0.0f), s.albedo));
   return mesh;
+}
+
+/// SphereOverPlane with its glossy transfer matrices at lmax 2 from 64 directions, for the
+/// material `phong`: shadowed, or with one vertex coloured and interreflection, whose matrices
+/// then differ per channel (three).
+struct GlossyMatrixScene {
+  Mesh mesh;
+  Transport transport;
+};
+
+inline GlossyMatrixScene MakeGlossyMatrixScene(bool coloured, const char* phong) {
+  GlossyMatrixScene s;
+  s.mesh = SphereOverPlane();
+  if (coloured) s.mesh.albedo[3] = glm::vec3(0.2f, 0.4f, 0.3f);
+  TransportOptions o;
+  o.mode = coloured ? TransportMode::kInterreflection : TransportMode::kShadowed;
+  o.lmax = 2;
+  o.samples = 64;
+  o.material = ParseMaterial(phong);
+  o.matrices = true;
+  s.transport = ComputeTransport(s.mesh, o, nullptr);
+  return s;
 }
 
 /// A light positive everywhere with every coefficient of bands 0..lmax in use, different per

@@ -26,15 +26,9 @@ struct Compressed {
 
 Compressed MakeCompressed(bool coloured) {
   Compressed c;
-  c.mesh = test::SphereOverPlane();
-  if (coloured) c.mesh.albedo[3] = glm::vec3(0.2f, 0.4f, 0.3f);
-  TransportOptions o;
-  o.mode = coloured ? TransportMode::kInterreflection : TransportMode::kShadowed;
-  o.lmax = 2;
-  o.samples = 64;
-  o.material = ParseMaterial("phong:9,0.3");
-  o.matrices = true;
-  c.transport = ComputeTransport(c.mesh, o, nullptr);
+  test::GlossyMatrixScene scene = test::MakeGlossyMatrixScene(coloured, "phong:9,0.3");
+  c.mesh = std::move(scene.mesh);
+  c.transport = std::move(scene.transport);
   CpcaOptions co;
   co.clusters = 4;
   co.terms = 3;
