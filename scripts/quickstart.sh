@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # The README's two commands:
 #   bash scripts/quickstart.sh demo   installs what is missing, builds, runs `prt demo`
-#   bash scripts/quickstart.sh test   installs what is missing, builds, runs every test
+#   bash scripts/quickstart.sh test   installs what is missing, builds, runs every test, then
+#                                     prints the ten slowest (scripts/slowest-tests.sh)
+# Each step is timed as a phase of .ci/run's table when PRT_PHASE_LOG is set (scripts/phase.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/phase.sh
 what=${1:-demo}
 build=${PRT_BUILD_DIR:-build}
 case "$what" in
@@ -11,13 +14,14 @@ case "$what" in
   *) echo "usage: bash scripts/quickstart.sh demo|test" >&2; exit 2 ;;
 esac
 
-bash scripts/install-deps.sh "$what"
+phase "install packages" bash scripts/install-deps.sh "$what"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 
 # Only what the command runs: the demo needs the program, the tests need everything.
 case "$what" in
   demo) cmake --build "$build" --parallel "$(nproc)" --target prt
         "$build/prt" demo ;;
-  test) cmake --build "$build" --parallel "$(nproc)"
-        ctest --test-dir "$build" --output-on-failure --no-tests=error --parallel "$(nproc)" ;;
+  test) phase "build (Release)" cmake --build "$build" --parallel "$(nproc)"
+        phase "suite (Release)" ctest --test-dir "$build" --output-on-failure --no-tests=error --parallel "$(nproc)"
+        if [ -f "$build/Testing/Temporary/LastTest.log" ]; then bash scripts/slowest-tests.sh "$build"; fi ;;
 esac

@@ -1,39 +1,42 @@
 #!/usr/bin/env bash
 # The test suite under the sanitizers:
 #   bash scripts/sanitize.sh asan [doctest args]   AddressSanitizer + UndefinedBehaviorSanitizer
-#                                                   (build-asan/), every test by default but the
-#                                                   README suite: it reruns through the shell what
-#                                                   other tests run in-process, and took 122 s of
-#                                                   the 193 s unsanitized suite (2 vCPUs). By
-#                                                   default through ctest, one process per core
-#   bash scripts/sanitize.sh tsan [doctest args]   ThreadSanitizer (build-tsan/), the threaded
-#                                                   stages by default: core (thread pool),
-#                                                   precompute (transport), video (frames from
-#                                                   several threads) and app (rendering), through
-#                                                   ctest likewise
+#                                                   (build-asan/), every test but the README
+#                                                   suite (it reruns through the shell what other
+#                                                   tests run in-process)
+#   bash scripts/sanitize.sh tsan [doctest args]   ThreadSanitizer (build-tsan/), every test of a
+#                                                   module with threaded code (THREADED below)
 #   bash scripts/sanitize.sh all                    both, one after the other
-# The `prt` binary that the command-line tests run is the sanitized one too. Any report fails
-# the run (halt_on_error). PRT_JOBS sets the build parallelism (default: all cores).
+# Without doctest arguments the tests run through CTest, one test case per process and one
+# process per core; with arguments, prt_tests runs them itself. The `prt` binary that the
+# command-line tests run is the sanitized one too. Any report fails the run (halt_on_error).
+# Tests whose work is made smaller under a sanitizer are listed in tests/README.md.
+# PRT_JOBS sets the build parallelism (default: all cores). Each build and suite is timed as a
+# phase of .ci/run's table when PRT_PHASE_LOG is set (scripts/phase.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/phase.sh
 what=${1:-asan}
 shift || true
 jobs=${PRT_JOBS:-$(nproc)}
 
-build() {  # build FOLDER CMAKE_OPTION
-  cmake -S . -B "$1" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-D$2=ON" >/dev/null
-  cmake --build "$1" --parallel "$jobs" --target prt prt_tests
+# -O1 -g1: GCC compiles the sanitized objects in half the time of RelWithDebInfo's -O2 -g (the
+# compiler's seconds over 21 of the files: 207 s at -O2 -g, 146 at -O2 -g1, 105 at -O1 -g1, 94 at
+# -O1 without debug information; AMD EPYC, 2 vCPUs); -g1 keeps the file and line of every frame
+# of a sanitizer's report, and -O1 is what the sanitizers' own documentation recommends.
+build() {  # build NAME FOLDER CMAKE_OPTION
+  cmake -S . -B "$2" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
+    "-D$3=ON" >/dev/null
+  phase "build ($1)" cmake --build "$2" --parallel "$jobs" --target prt prt_tests
 }
 
-# Without doctest arguments the default tests run through CTest, one test case per process and
-# one process per core (the suites ran serially on one core before, which made them most of CI's
-# time); with arguments, prt_tests runs them itself, as before.
 run_suite() {  # run_suite NAME FOLDER "DEFAULT TESTS" "CTEST SELECTION" [DOCTEST ARGS...]
   local name=$1 folder=$2 what=$3 selection=$4
   shift 4
   if [ $# -eq 0 ]; then
     echo "== $name: $what, through ctest"
-    ctest --test-dir "$folder" --output-on-failure --no-tests=error --parallel "$jobs" $selection
+    phase "suite ($name)" ctest --test-dir "$folder" --output-on-failure --no-tests=error --parallel "$jobs" $selection
+    bash scripts/slowest-tests.sh "$folder"
   else
     echo "== $name: prt_tests $*"
     "$folder/prt_tests" --no-intro=true "$@"
@@ -41,18 +44,24 @@ run_suite() {  # run_suite NAME FOLDER "DEFAULT TESTS" "CTEST SELECTION" [DOCTES
 }
 
 run_asan() {
-  build build-asan PRT_SANITIZE
+  build "ASan + UBSan" build-asan PRT_SANITIZE
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-  run_suite "AddressSanitizer + UndefinedBehaviorSanitizer" build-asan "every test but the readme suite" \
-    "--label-exclude ^readme$" "$@"
+  run_suite "ASan + UBSan" build-asan "every test but the readme suite" "--label-exclude ^readme$" "$@"
 }
 
+# The modules whose code runs on more than one thread (a thread pool, worker or writer threads),
+# each a test label.
+THREADED="core|sh|env|material|wavelet|precompute|precompute_io|cpca|raster|render|video|report|app"
+
 run_tsan() {
-  build build-tsan PRT_TSAN
-  export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1
-  run_suite "ThreadSanitizer" build-tsan "the core, precompute, video and app suites" \
-    "--label-regex ^(core|precompute|video|app)$" "$@"
+  build "TSan" build-tsan PRT_TSAN
+  # atexit_sleep_ms=0: by default ThreadSanitizer sleeps a second at the exit of every process
+  # that still has a thread (prt's signal watcher), to catch races with threads still running;
+  # that second was most of the suite (a test that runs prt 40 times took 43 s, 0.9 s without
+  # it). prt joins its workers before it exits, and its tests check what they leave behind.
+  export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:atexit_sleep_ms=0
+  run_suite "TSan" build-tsan "the modules with threaded code" "--label-regex ^($THREADED)$" "$@"
 }
 
 case "$what" in

@@ -66,28 +66,6 @@ bool IsListing(int argc, char** argv) {
   return false;
 }
 
-/// The command line, with the commas of a --test-case filter escaped when it asks for the test
-/// suites (--list-test-suites). CTest's test discovery labels each test case with its suite by
-/// such a query, passing the case's name unescaped; doctest splits filters at commas, so a name
-/// with a comma would match nothing and its test would go unlabelled (the run itself escapes
-/// them).
-std::vector<std::string> EscapedSuiteQuery(int argc, char** argv) {
-  std::vector<std::string> args(argv, argv + argc);
-  bool suites = false;
-  for (const auto& a : args) suites = suites || a == "--list-test-suites" || a == "-lts";
-  if (!suites) return args;
-  for (auto& a : args) {
-    if (a.rfind("--test-case=", 0) != 0 && a.rfind("-tc=", 0) != 0) continue;
-    std::string escaped;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-      if (a[i] == ',' && (i == 0 || a[i - 1] != '\\')) escaped += '\\';
-      escaped += a[i];
-    }
-    a = escaped;
-  }
-  return args;
-}
-
 /// How many test cases the command line's filters select when nothing is skipped.
 unsigned SelectedWithoutSkipping(int argc, char** argv) {
   std::vector<const char*> args(argv, argv + argc);
@@ -119,10 +97,7 @@ int main(int argc, char** argv) {
   }
   int result = 0;
   {
-    const std::vector<std::string> escaped = EscapedSuiteQuery(argc, argv);
-    std::vector<const char*> args;
-    for (const auto& a : escaped) args.push_back(a.c_str());
-    doctest::Context context(static_cast<int>(args.size()), args.data());
+    doctest::Context context(argc, argv);
     if (IsListing(argc, argv)) context.setOption("no-skip", true);
     result = context.run();
   }

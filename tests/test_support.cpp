@@ -95,8 +95,32 @@ std::string WriteFloorAndWall(const std::string& dir, const glm::vec3& floor_kd,
   return dir + "/scene.obj";
 }
 
+std::string WriteSmallScene(const std::string& dir, const glm::vec3& knot_kd) {
+  Mesh knot = MakeTorusKnot(2, 3, 0.16f, 32, 6);
+  StandUpright(knot, 3.4f);
+  const std::vector<ObjPart> parts = {{"ground", MakePlane(12.0f, 6), glm::vec3(0.7f)}, {"knot", knot, knot_kd}};
+  WriteFileAtomic(dir + "/small_scene.obj", FormatObj(parts, "small_scene.mtl"));
+  WriteFileAtomic(dir + "/small_scene.mtl", FormatMtl(parts));
+  return dir + "/small_scene.obj";
+}
+
+std::string ScaledMesh(const std::string& name) {
+  return kSanitized ? " --mesh " + Q(WriteSmallScene(ScratchDir(name))) : "";
+}
+
 std::size_t FloorTriangles() { return Floor().triangle_count(); }
 std::size_t WallTriangles() { return Wall().triangle_count(); }
+
+std::vector<std::string> CsvFields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') quoted = !quoted;
+    else if (c == ',' && !quoted) fields.emplace_back();
+    else fields.back() += c;
+  }
+  return fields;
+}
 
 glm::ivec3 PixelAt(const Image8& image, int x, int y) {
   const std::size_t p = 3 * (static_cast<std::size_t>(y) * image.width + x);

@@ -68,6 +68,26 @@ std::string ShellQuote(const std::string& text);
 /// ShellQuote under a short name, for the paths in command lines: "render --out " + Q(dir).
 inline std::string Q(const std::string& text) { return ShellQuote(text); }
 
+/// Whether this test program is built under a sanitizer (scripts/sanitize.sh: ASan + UBSan, or
+/// TSan). The tests that tests/README.md lists as scaled then do smaller work (a smaller mesh,
+/// fewer directions): the same code runs under the sanitizer, and they check what holds at that
+/// size; the figures of the full size are checked by the unsanitized suite, which runs them all.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+inline constexpr bool kSanitized = true;
+#else
+inline constexpr bool kSanitized = false;
+#endif
+
+/// Writes dir/small_scene.obj and .mtl, the embedded scenes' knot on a ground at a tenth of their
+/// vertices (a (2, 3) knot of 32 x 6 standing 3.4 high, colour `knot_kd`, on a 12 x 12 ground of
+/// 6 x 6 quads, grey 0.7; 241 vertices): the scaled tests' `--mesh` under a sanitizer. Returns
+/// the OBJ's path.
+std::string WriteSmallScene(const std::string& dir, const glm::vec3& knot_kd = glm::vec3(0.80f, 0.38f, 0.20f));
+
+/// " --mesh PATH" of WriteSmallScene (in a scratch folder of `name`) under a sanitizer, "" without
+/// one: the option that scales a test of the embedded or report scene down there.
+std::string ScaledMesh(const std::string& name);
+
 /// Scene options of a render that takes milliseconds: a tetrahedron (no normals) under the
 /// furnace, closed-form transport.
 std::string QuickScene();
@@ -88,6 +108,10 @@ std::size_t WallTriangles();
 
 /// Frame i of a run of `count` frames in `dir`, named as render names it (FrameName).
 std::string FramePath(const std::string& dir, int i, int count);
+
+/// The fields of one line of a CSV file prt writes: split at commas outside double quotes, the
+/// quotes dropped ("a,\"b,c\"," gives a, b,c and an empty last field).
+std::vector<std::string> CsvFields(const std::string& line);
 
 /// Pixel (x, y) of an 8-bit image as integers.
 glm::ivec3 PixelAt(const Image8& image, int x, int y);

@@ -50,9 +50,10 @@ TEST_SUITE("app") {
   TEST_CASE("progress: on a terminal a render shows the time left and an OBJ its loading") {
     REQUIRE(std::system("command -v script >/dev/null") == 0);  // util-linux: always on Debian
     const std::string dir = test::ScratchDir("progress_bar");
+    // Scaled under a sanitizer (tests/README.md): a fifth of the frames, a quarter of the pixels.
+    const std::string long_render = test::kSanitized ? " --frames 20 --size 160x120" : " --frames 100 --size 320x240";
     const std::string render = OnTerminal(
-        "render --transport unshadowed --frames 100 --size 320x240 --threads 1 --cache none --out " + Q(dir + "/frames"),
-        dir);
+        "render --transport unshadowed" + long_render + " --threads 1 --cache none --out " + Q(dir + "/frames"), dir);
     CAPTURE(render);
     CHECK(render.find("rendering [") != std::string::npos);
     CHECK(render.find(" s left") != std::string::npos);
@@ -76,8 +77,8 @@ TEST_SUITE("app") {
     CHECK(quiet.find("rendering [") == std::string::npos);
     // Off a terminal (what RunPrt gives: stderr is a file) no bar is drawn either.
     const auto piped = test::RunCommand("PRT_PROGRESS_DELAY=0 " + Q(test::PrtBinary()) +
-                                        " render --transport unshadowed --frames 100 --size 320x240 --threads 1 "
-                                        "--cache none --out " + Q(dir + "/piped"));
+                                        " render --transport unshadowed" + long_render +
+                                        " --threads 1 --cache none --out " + Q(dir + "/piped"));
     CHECK(piped.exit_code == 0);
     CHECK(piped.err.find("rendering [") == std::string::npos);
   }

@@ -24,34 +24,55 @@ void StandIn(const std::string& path, const std::string& log, const std::string&
   fs::permissions(path, fs::perms::owner_all);
 }
 
-/// Runs `bash scripts/quickstart.sh what` with the stand-ins first on PATH; returns the log.
-std::string RunQuickstart(const std::string& what) {
+/// What the ctest stand-in leaves as the run's log: three cases, the slowest in the middle.
+constexpr const char* kCtestLog =
+    "1/3 Test: fast one\nTest time =   0.25 sec\n"
+    "2/3 Test: slow one\nTest time =  12.50 sec\n"
+    "3/3 Test: middle one\nTest time =   3.00 sec\n";
+
+/// Runs `bash scripts/quickstart.sh what` with the stand-ins first on PATH; returns the log, and
+/// what the script printed in `out`.
+std::string RunQuickstart(const std::string& what, std::string* out = nullptr) {
   const std::string dir = test::ScratchDir("quickstart_" + what);
   const std::string log = dir + "/calls.log", bin = dir + "/bin", build = dir + "/build";
   fs::create_directories(bin);
   fs::create_directories(build);
   StandIn(bin + "/cmake", log);
-  StandIn(bin + "/ctest", log);
+  StandIn(bin + "/ctest", log,
+          "mkdir -p " + Q(build + "/Testing/Temporary") + " && printf '" + kCtestLog + "' > " +
+              Q(build + "/Testing/Temporary/LastTest.log") + "\n");
   StandIn(bin + "/dpkg-query", log, "echo 'install ok installed'\n");
   StandIn(build + "/prt", log);
   const auto r = test::RunCommand("PATH=" + Q(bin) + ":\"$PATH\" PRT_BUILD_DIR=" + Q(build) + " bash " +
                                   Q(test::SourceDir() + "/scripts/quickstart.sh") + " " + what);
   CAPTURE(r.err);
   CHECK(r.exit_code == 0);
+  if (out) *out = r.out;
   return ReadFile(log);
 }
 
 }  // namespace
 
 TEST_SUITE("app") {
-  TEST_CASE("quick start: demo builds only the prt program, test builds everything") {
+  TEST_CASE("quick start: demo builds only the prt program, test builds everything and names the slowest tests") {
     const std::string demo = RunQuickstart("demo");
     CAPTURE(demo);
     CHECK(demo.find("--target prt\n") != std::string::npos);
     CHECK(demo.find("prt demo\n") != std::string::npos);
     CHECK(demo.find("ctest --test-dir") == std::string::npos);
-    const std::string all = RunQuickstart("test");
+    std::string printed;
+    const std::string all = RunQuickstart("test", &printed);
     CAPTURE(all);
+    CAPTURE(printed);
+    // After the suite, its slowest cases, slowest first (scripts/slowest-tests.sh).
+    const auto slow = printed.find("12.50 s  slow one"), middle = printed.find("3.00 s  middle one"),
+               fast = printed.find("0.25 s  fast one");
+    CHECK(printed.find("The slowest 10 of 3 test cases") != std::string::npos);
+    CHECK(slow != std::string::npos);
+    CHECK(middle != std::string::npos);
+    CHECK(fast != std::string::npos);
+    CHECK(slow < middle);
+    CHECK(middle < fast);
     CHECK(all.find("cmake --build") != std::string::npos);
     CHECK(all.find("--target") == std::string::npos);  // every target: the tests too
     CHECK(all.find("ctest --test-dir") != std::string::npos);

@@ -2,8 +2,9 @@
 // scratch folder laid out like a fresh clone after the quick start (build/prt, scripts/), and
 // must exit 0. Commands that need the course's files (they name $GAMES202) run against the
 // course data in ../shared/data, laid out as the course's framework has it, in a test case of
-// their own that the runner skips when the data is absent. The quick start's own commands are
-// what runs these tests, so they are not run again.
+// their own that the runner skips when the data is absent. The other commands run in groups that
+// share no files (GroupOf), a test case each, so that they run side by side. The quick start's
+// own commands are what runs these tests, so they are not run again.
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -72,14 +73,32 @@ std::string MakeClone(const std::string& name) {
   return clone;
 }
 
-/// Runs, in order, the README's commands that name $GAMES202 (`course`) or those that do not;
-/// each must exit 0. Returns how many ran.
-int RunReadmeCommands(const std::string& clone, bool course) {
+/// Which test case runs a command of the README: groups of commands that read only what their
+/// own group wrote, so that they run side by side (the README took 125 s in one test case).
+enum class Group {
+  kCourse,     ///< names $GAMES202: the course's framework
+  kSamples,    ///< reads or writes out/samples, the sample files
+  kReport,     ///< prt report (not --stability)
+  kStability,  ///< prt report --stability
+  kOther,      ///< everything else
+};
+
+Group GroupOf(const std::string& command) {
+  if (command.find("$GAMES202") != std::string::npos) return Group::kCourse;
+  if (command.find("out/samples") != std::string::npos) return Group::kSamples;
+  if (command.find("prt report --stability") != std::string::npos) return Group::kStability;
+  if (command.find("prt report") != std::string::npos) return Group::kReport;
+  return Group::kOther;
+}
+
+/// Runs, in order, the README's commands of `group` in `clone`; each must exit 0. Returns how
+/// many ran. The quick start's own commands are what runs these tests: they are left out.
+int RunReadmeCommands(const std::string& clone, Group group) {
   int ran = 0;
   for (const std::string& command : ReadmeCommands(test::SourceDir() + "/README.md")) {
     CAPTURE(command);
-    if (command.rfind("bash scripts/quickstart.sh", 0) == 0) continue;  // what runs these tests
-    if ((command.find("$GAMES202") != std::string::npos) != course) continue;
+    if (command.rfind("bash scripts/quickstart.sh", 0) == 0) continue;
+    if (GroupOf(command) != group) continue;
     const auto r = test::RunCommand("cd " + test::Q(clone) + " && GAMES202=" + test::Q(clone + "/games202") +
                                     " bash -c " + test::Q(command));
     CAPTURE(r.err);
@@ -92,18 +111,35 @@ int RunReadmeCommands(const std::string& clone, bool course) {
 }  // namespace
 
 TEST_SUITE("readme") {
-  TEST_CASE("readme: every command of the README runs as written") {
-    const std::string clone = MakeClone("readme");
-    CHECK(RunReadmeCommands(clone, false) >= 10);
+  TEST_CASE("readme: the commands on the sample files run as written") {
+    const std::string clone = MakeClone("readme_samples");
+    CHECK(RunReadmeCommands(clone, Group::kSamples) >= 5);
     // What the commands say they make is there.
     CHECK(fs::exists(clone + "/out/samples/scene.obj"));
     CHECK(fs::exists(clone + "/out/frames_split/frame_0059.png"));
+  }
+
+  TEST_CASE("readme: the report commands run as written") {
+    const std::string clone = MakeClone("readme_report");
+    CHECK(RunReadmeCommands(clone, Group::kReport) >= 1);
+    CHECK(fs::exists(clone + "/out/report/report.md"));
+  }
+
+  TEST_CASE("readme: the stability command runs as written") {
+    const std::string clone = MakeClone("readme_stability");
+    CHECK(RunReadmeCommands(clone, Group::kStability) == 1);
+    CHECK(fs::exists(clone + "/out/stability/stability.csv"));
+  }
+
+  TEST_CASE("readme: every other command runs as written") {
+    const std::string clone = MakeClone("readme_other");
+    CHECK(RunReadmeCommands(clone, Group::kOther) >= 5);
     CHECK(fs::exists(clone + "/out/diff.png"));
   }
 
   TEST_CASE("readme: the course commands run against the course's framework" * test::NeedsSharedData()) {
     const std::string clone = MakeClone("readme_course");
-    CHECK(RunReadmeCommands(clone, true) >= 2);
+    CHECK(RunReadmeCommands(clone, Group::kCourse) >= 2);
     const std::string grace = clone + "/games202/assets/cubemap/GraceCathedral";
     CHECK(fs::exists(grace + "/transport.txt"));
     CHECK(ReadFile(grace + "/transport.txt") != ShippedFile("transport.txt"));

@@ -70,7 +70,8 @@ TEST_SUITE("app") {
 
   TEST_CASE("sample rule: prt report tabulates the sampling error against the truncation error and the rule") {
     const std::string dir = test::ScratchDir("rule_report");
-    const auto r = test::RunPrt("report --quick --max-lmax 3 --max-samples 64 --quiet --out " + Q(dir));
+    const auto r = test::RunPrt("report --quick --max-lmax 3 --max-samples 64 --quiet" + test::ScaledMesh("rule_report_scene") +
+                                " --out " + Q(dir));
     REQUIRE(r.exit_code == 0);
     const std::string md = ReadFile(dir + "/report.md");
     const auto section = md.find("## Directions needed for the bands: the sample rule");

@@ -133,7 +133,8 @@ TEST_SUITE("app") {
     // still has negative pixels, made by the transfer matrices' truncation. The note must not
     // advise the window the run already used (the old note did).
     const RunResult windowed = Render(dir + "/auto", "--lmax 4 --material phong:1000,0.9 --albedo 0.1,0.1,0.1 "
-                                                           "--env sky:sun=1000 --orbit 60 --window auto", "render", "64x48");
+                                                           "--env sky:sun=1000 --orbit 60 --window auto" + ScaledMesh("ringing_note_scene"),
+                                      "render", "64x48");
     REQUIRE(windowed.exit_code == 0);
     const std::string note = SummaryLine(windowed.err, "ringing: ");
     CAPTURE(note);

@@ -1,20 +1,65 @@
-// The test runner itself (tests/main.cpp): CTest's discovery asks each case's suite, for its
-// label, with the case's name as an unescaped filter; a name with a comma must still be found.
+// The test runner itself: tests/discover_tests.cmake registers every case of prt_tests with CTest,
+// labelled with its suite, from one XML listing; a name with a comma must still select its case
+// (doctest splits filters at commas).
 #include <doctest/doctest.h>
 
+#include <sstream>
 #include <string>
 
 #include <unistd.h>
 
+#include "core/atomic_file.h"
 #include "tests/test_support.h"
 
+namespace {
+
+/// The test cases that `listing` (prt_tests --list-test-cases) names, one a line.
+int CountListed(const std::string& listing) {
+  std::istringstream lines(listing);
+  int n = 0;
+  for (std::string line; std::getline(lines, line);)
+    n += !line.empty() && line.rfind("[doctest]", 0) != 0 && line.rfind("=====", 0) != 0;
+  return n;
+}
+
+}  // namespace
+
 TEST_SUITE("core") {
-  TEST_CASE("runner: a test case whose name has commas, like this one, is labelled with its suite") {
+  TEST_CASE("runner: every case is a CTest test under its suite, and a name with commas, like this one, selects it") {
     const std::string name = doctest::getContextOptions()->currentTest->m_name;
     REQUIRE(name.find(',') != std::string::npos);
-    const auto r = prt::test::RunCommand("/proc/" + std::to_string(::getpid()) + "/exe " +
-                                         prt::test::Q("--test-case=" + name) + " --list-test-suites --no-intro=true");
-    CHECK(r.exit_code == 0);
-    CHECK(r.out.find("\ncore\n") != std::string::npos);
+    const std::string self = "/proc/" + std::to_string(::getpid()) + "/exe";
+    const std::string dir = prt::test::ScratchDir("runner");
+    const auto discover = prt::test::RunCommand(
+        prt::test::Q(PRT_CMAKE_COMMAND) + " -D TEST_EXECUTABLE=" + prt::test::Q(self) + " -D TEST_WORKING_DIR=" +
+        prt::test::Q(dir) + " -D CTEST_FILE=" + prt::test::Q(dir + "/cases.cmake") +
+        " -D TEST_TIMEOUT=600 -D SKIP_RETURN_CODE=77 -P " +
+        prt::test::Q(prt::test::SourceDir() + "/tests/discover_tests.cmake"));
+    REQUIRE(discover.exit_code == 0);
+    const std::string cases = prt::ReadFile(dir + "/cases.cmake");
+
+    // One add_test per case the program lists, each with its suite as the label.
+    const auto listed = prt::test::RunCommand(self + " --list-test-cases --no-intro=true");
+    REQUIRE(listed.exit_code == 0);
+    std::size_t add_tests = 0;
+    for (auto at = cases.find("add_test("); at != std::string::npos; at = cases.find("add_test(", at + 1)) ++add_tests;
+    CHECK(add_tests == std::size_t(CountListed(listed.out)));
+    CHECK(add_tests > 400);
+    std::string filter = name;
+    for (std::size_t at = filter.find(','); at != std::string::npos; at = filter.find(',', at + 2)) filter.insert(at, "\\");
+    CHECK(cases.find("add_test([==[" + name + "]==] [==[" + self + "]==] [==[--test-case=" + filter + "]==]") !=
+          std::string::npos);
+    const auto props = cases.find("set_tests_properties([==[" + name + "]==]");
+    REQUIRE(props != std::string::npos);
+    CHECK(cases.substr(props, cases.find('\n', props) - props).find("LABELS [==[core]==]") != std::string::npos);
+    // Another suite's case gets its own label, not the first one seen.
+    CHECK(cases.find("LABELS [==[readme]==]") != std::string::npos);
+
+    // The registered filter selects exactly this case.
+    const auto selected = prt::test::RunCommand(self + " " + prt::test::Q("--test-case=" + filter) +
+                                                " --list-test-cases --no-intro=true");
+    CHECK(selected.exit_code == 0);
+    CHECK(CountListed(selected.out) == 1);
+    CHECK(selected.out.find(name) != std::string::npos);
   }
 }

@@ -261,13 +261,17 @@ TEST_SUITE("precompute") {
       REQUIRE(std::min({radiance.x, radiance.y, radiance.z}) > 0.0);
     }
     const Mesh mesh = SphereOverPlane(10, 16, glm::vec3(0.5f, 0.45f, 0.4f));
+    // Scaled under a sanitizer (tests/README.md): a quarter of the directions. The agreement is
+    // judged against the two codes' own error estimates, which grow with it; the reference's
+    // quality (0.38% at most at 4096) stays under kShReferenceQuality at twice its error.
+    const int samples = test::kSanitized ? 1024 : 4096;
     const std::pair<TransportMode, int> cases[] = {
         {TransportMode::kShadowed, 1}, {TransportMode::kInterreflection, 1}, {TransportMode::kInterreflection, 2}};
     for (const auto& [mode, bounces] : cases) {
       ReferenceOptions ro;
       ro.mode = mode;
       ro.bounces = bounces;
-      ro.samples = 4096;
+      ro.samples = samples;
       ro.table_rows = 32, ro.table_cols = 64;
       ro.material = ParseMaterial("phong:20,0.4");
       ro.eye = kEye;
@@ -280,8 +284,8 @@ TEST_SUITE("precompute") {
         to.bounces = bounces;
         to.bounce_tolerance = 0.0;  // both codes compute exactly `bounces` bounces
         to.lmax = 2;
-        to.samples = 4096;
-        to.lobe_samples = 4096;
+        to.samples = samples;
+        to.lobe_samples = samples;
         to.seed = seed;
         to.material = ro.material;
         to.eye = kEye;

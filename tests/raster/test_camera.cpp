@@ -222,24 +222,24 @@ TEST_SUITE("raster") {
     c.target = c.eye;
     CHECK_THROWS_WITH_AS(prt::CheckCamera(c), doctest::Contains("--eye"), prt::Error);
   }
-}
 
-TEST_CASE("Orbit turns the eye right-handedly about the up line through the target, keeping its distance") {
-  prt::Camera c;
-  c.target = glm::vec3(1.0f, 2.0f, 3.0f);
-  c.eye = c.target + glm::vec3(0.0f, 1.0f, 5.0f);
-  c.up = glm::vec3(0.0f, 1.0f, 0.0f);
-  const glm::vec3 lo(-1.0f), hi(1.0f);
-  // About +Y, +Z turns toward +X by a quarter turn: (0, 1, 5) -> (5, 1, 0).
-  const prt::Camera q = prt::Orbit(c, 90.0, lo, hi);
-  CHECK(glm::length(q.eye - c.target - glm::vec3(5.0f, 1.0f, 0.0f)) < 1e-5f);
-  CHECK(q.target == c.target);
-  for (double degrees : {-30.0, 45.0, 200.0, 720.0}) {
-    const prt::Camera o = prt::Orbit(c, degrees, lo, hi);
-    CHECK(glm::length(o.eye - o.target) == doctest::Approx(glm::length(c.eye - c.target)).epsilon(1e-6));
-    CHECK(o.eye.y == doctest::Approx(c.eye.y).epsilon(1e-6));  // the height along up is kept
-    const double a = std::atan2(double(o.eye.x - c.target.x), double(o.eye.z - c.target.z)) * 180.0 / 3.14159265358979323846;
-    CHECK(std::remainder(a - degrees, 360.0) == doctest::Approx(0.0).epsilon(1e-4).scale(1.0));
+  TEST_CASE("Orbit turns the eye right-handedly about the up line through the target, keeping its distance") {
+    prt::Camera c;
+    c.target = glm::vec3(1.0f, 2.0f, 3.0f);
+    c.eye = c.target + glm::vec3(0.0f, 1.0f, 5.0f);
+    c.up = glm::vec3(0.0f, 1.0f, 0.0f);
+    const glm::vec3 lo(-1.0f), hi(1.0f);
+    // About +Y, +Z turns toward +X by a quarter turn: (0, 1, 5) -> (5, 1, 0).
+    const prt::Camera q = prt::Orbit(c, 90.0, lo, hi);
+    CHECK(glm::length(q.eye - c.target - glm::vec3(5.0f, 1.0f, 0.0f)) < 1e-5f);
+    CHECK(q.target == c.target);
+    for (double degrees : {-30.0, 45.0, 200.0, 720.0}) {
+      const prt::Camera o = prt::Orbit(c, degrees, lo, hi);
+      CHECK(glm::length(o.eye - o.target) == doctest::Approx(glm::length(c.eye - c.target)).epsilon(1e-6));
+      CHECK(o.eye.y == doctest::Approx(c.eye.y).epsilon(1e-6));  // the height along up is kept
+      const double a = std::atan2(double(o.eye.x - c.target.x), double(o.eye.z - c.target.z)) * 180.0 / 3.14159265358979323846;
+      CHECK(std::remainder(a - degrees, 360.0) == doctest::Approx(0.0).epsilon(1e-4).scale(1.0));
+    }
+    CHECK(prt::Orbit(c, 0.0, lo, hi).eye == c.eye);
   }
-  CHECK(prt::Orbit(c, 0.0, lo, hi).eye == c.eye);
 }

@@ -65,14 +65,6 @@ std::string WrittenMarkdown(const ReportData& d, const std::string& name, std::s
   return ReadFile(dir + "/report.md");
 }
 
-std::vector<std::string> Fields(const std::string& line) {
-  std::vector<std::string> f;
-  std::stringstream in(line);
-  for (std::string x; std::getline(in, x, ',');) f.push_back(x);
-  if (!line.empty() && line.back() == ',') f.push_back("");
-  return f;
-}
-
 }  // namespace
 
 TEST_SUITE("report") {
@@ -124,7 +116,7 @@ TEST_SUITE("report") {
     std::string header, row;
     std::getline(lines, header);
     std::getline(lines, row);
-    const auto names = Fields(header), values = Fields(row);
+    const auto names = test::CsvFields(header), values = test::CsvFields(row);
     REQUIRE(names.size() == values.size());
     const auto at = [&](const std::string& name) {
       for (std::size_t i = 0; i < names.size(); ++i)
@@ -183,7 +175,8 @@ TEST_SUITE("report") {
 
   TEST_CASE("report timing: a real quick sweep counts its work and times every run with a median and a range") {
     const std::string dir = test::ScratchDir("timing_sweep");
-    const auto r = test::RunPrt("report --quick --max-lmax 3 --max-samples 32 --quiet --out " + test::Q(dir));
+    const auto r = test::RunPrt("report --quick --max-lmax 3 --max-samples 32 --quiet" +
+                                test::ScaledMesh("timing_sweep_scene") + " --out " + test::Q(dir));
     REQUIRE(r.exit_code == 0);
     const std::string md = ReadFile(dir + "/report.md");
     CHECK(md.find("## Timing") != std::string::npos);
@@ -192,7 +185,7 @@ TEST_SUITE("report") {
     std::istringstream lines(ReadFile(dir + "/report.csv"));
     std::string line;
     std::getline(lines, line);
-    const auto names = Fields(line);
+    const auto names = test::CsvFields(line);
     std::map<std::string, std::size_t> col;
     for (std::size_t i = 0; i < names.size(); ++i) col[names[i]] = i;
     for (const char* name : {"mode", "sampler", "directions", "lmax", "total_relative", "seconds", "seconds_min",
@@ -202,7 +195,7 @@ TEST_SUITE("report") {
     std::map<int, double> unshadowed;                            // lmax -> total error
     int rows = 0;
     while (std::getline(lines, line)) {
-      const auto f = Fields(line);
+      const auto f = test::CsvFields(line);
       REQUIRE(f.size() == names.size());
       const std::string mode = f[col["mode"]], sampler = f[col["sampler"]];
       const int lmax = std::stoi(f[col["lmax"]]);

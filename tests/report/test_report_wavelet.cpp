@@ -54,16 +54,6 @@ double WaveletBytes(int budget) {
   return double(t.Bytes()) / double(mesh.vertex_count());
 }
 
-/// The fields of one CSV line (the basis rows hold no quoted field).
-std::vector<std::string> Fields(const std::string& line) {
-  std::vector<std::string> f(1);
-  for (char c : line) {
-    if (c == ',') f.emplace_back();
-    else f.back() += c;
-  }
-  return f;
-}
-
 /// Count of pixels that are not pure white in columns [x0, x1).
 std::size_t Inked(const prt::Image8& im, int x0, int x1) {
   std::size_t n = 0;
@@ -170,7 +160,7 @@ TEST_SUITE("report") {
     for (std::string line; std::getline(csv, line); ++n) {
       REQUIRE(n < s.rows.size());
       const prt::BasisRow& r = s.rows[n];
-      const auto f = Fields(line);
+      const auto f = prt::test::CsvFields(line);
       INFO(line);
       REQUIRE(f.size() == 21);
       CHECK(f[0] == prt::TransportModeName(r.mode));
@@ -210,11 +200,11 @@ TEST_SUITE("report") {
     std::string line;
     std::getline(csv, line);
     CHECK(line.find(",matrix_bytes,basis,budget,bytes_per_vertex,") != std::string::npos);  // then the timing columns
-    const std::size_t columns = Fields(line).size();
+    const std::size_t columns = prt::test::CsvFields(line).size();
     std::vector<double> wavelet_error;
     std::size_t sh_rows = 0;
     while (std::getline(csv, line)) {
-      const auto f = Fields(line);
+      const auto f = prt::test::CsvFields(line);
       INFO(line);
       REQUIRE(f.size() == columns);
       if (f[14] == "basis-wavelet") wavelet_error.push_back(std::stod(f[11]));
