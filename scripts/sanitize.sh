@@ -24,9 +24,11 @@ jobs=${PRT_JOBS:-$(nproc)}
 # compiler's seconds over 21 of the files: 207 s at -O2 -g, 146 at -O2 -g1, 105 at -O1 -g1, 94 at
 # -O1 without debug information; AMD EPYC, 2 vCPUs); -g1 keeps the file and line of every frame
 # of a sanitizer's report, and -O1 is what the sanitizers' own documentation recommends.
+# The functions below run as `run_asan && run_tsan`, where bash's `set -e` does not apply inside
+# them: every step that can fail returns its status explicitly.
 build() {  # build NAME FOLDER CMAKE_OPTION
   cmake -S . -B "$2" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
-    "-D$3=ON" >/dev/null
+    "-D$3=ON" >/dev/null || return
   phase "build ($1)" cmake --build "$2" --parallel "$jobs" --target prt prt_tests
 }
 
@@ -35,8 +37,11 @@ run_suite() {  # run_suite NAME FOLDER "DEFAULT TESTS" "CTEST SELECTION" [DOCTES
   shift 4
   if [ $# -eq 0 ]; then
     echo "== $name: $what, through ctest"
-    phase "suite ($name)" ctest --test-dir "$folder" --output-on-failure --no-tests=error --parallel "$jobs" $selection
-    bash scripts/slowest-tests.sh "$folder"
+    local status=0
+    phase "suite ($name)" ctest --test-dir "$folder" --output-on-failure --no-tests=error --parallel "$jobs" \
+      $selection || status=$?
+    if [ -f "$folder/Testing/Temporary/LastTest.log" ]; then bash scripts/slowest-tests.sh "$folder"; fi
+    return $status
   else
     echo "== $name: prt_tests $*"
     "$folder/prt_tests" --no-intro=true "$@"
@@ -44,18 +49,19 @@ run_suite() {  # run_suite NAME FOLDER "DEFAULT TESTS" "CTEST SELECTION" [DOCTES
 }
 
 run_asan() {
-  build "ASan + UBSan" build-asan PRT_SANITIZE
+  build "ASan + UBSan" build-asan PRT_SANITIZE || return
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
   run_suite "ASan + UBSan" build-asan "every test but the readme suite" "--label-exclude ^readme$" "$@"
 }
 
-# The modules whose code runs on more than one thread (a thread pool, worker or writer threads),
-# each a test label.
-THREADED="core|sh|env|material|wavelet|precompute|precompute_io|cpca|raster|render|video|report|app"
+# The modules with code that runs on more than one thread, or is shared between threads (a
+# thread pool, worker or writer threads, atomics, mutexes), each a test label; a test
+# (tests/app/test_ci_scripts.cpp) reads src/ and fails when a module with threads is missing.
+THREADED="core|sh|geometry|env|material|wavelet|precompute|precompute_io|cpca|raster|render|video|report|app"
 
 run_tsan() {
-  build "TSan" build-tsan PRT_TSAN
+  build "TSan" build-tsan PRT_TSAN || return
   # atexit_sleep_ms=0: by default ThreadSanitizer sleeps a second at the exit of every process
   # that still has a thread (prt's signal watcher), to catch races with threads still running;
   # that second was most of the suite (a test that runs prt 40 times took 43 s, 0.9 s without

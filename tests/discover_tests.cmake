@@ -3,7 +3,8 @@
 #   prt_tests --list-test-cases --reporters=xml
 # names each case with its suite. doctest-dev's own doctest_discover_tests asks for each case's
 # suite with a process of its own (465 starts of the test program after every link: 77 s of each
-# sanitized build, measured on 2 vCPUs), which is why prt has this script instead.
+# sanitized build, measured on 2 vCPUs) and cuts a name at each ';' into tests whose filters
+# select nothing (8 cases never ran under CTest that way), which is why prt has this script.
 #
 # Run after each link of prt_tests (a POST_BUILD step, tests/CMakeLists.txt) with
 #   -D TEST_EXECUTABLE=... -D CTEST_FILE=... -D TEST_WORKING_DIR=... -D TEST_TIMEOUT=...

@@ -8,6 +8,7 @@
 //   is there.
 // - Required where it must be there: with PRT_REQUIRE_SHARED_DATA=1 (CI sets it) a missing data
 //   folder fails the run at once instead of skipping anything.
+// A run whose filters select no test case at all fails: every CTest test names one case.
 // The tests that need Debian's ffmpeg (test::NeedsFfmpeg()) follow the same two rules, with
 // PRT_REQUIRE_FFMPEG=1, and so do those that need Debian's cmark-gfm (test::NeedsCmarkGfm()),
 // with PRT_REQUIRE_CMARK_GFM=1.
@@ -101,7 +102,14 @@ int main(int argc, char** argv) {
     if (IsListing(argc, argv)) context.setOption("no-skip", true);
     result = context.run();
   }
-  if (result == 0 && Counter::run && Counter::started == 0 && SelectedWithoutSkipping(argc, argv) > 0) {
+  if (result == 0 && Counter::run && Counter::started == 0) {
+    if (SelectedWithoutSkipping(argc, argv) == 0) {
+      // A filter that matches nothing is an error, not a pass: a test registered under a name
+      // that no longer selects its case (CTest's registration is stale, or a name was cut at a
+      // character the registration mishandled) would otherwise pass without running.
+      std::fprintf(stderr, "prt_tests: no test case matches the filters\n");
+      return 1;
+    }
     std::printf("[prt_tests] skipped: the selected test cases need the course data (%s), ffmpeg or cmark-gfm\n",
                 PRT_SHARED_DATA_DIR);
     return kSkipExit;

@@ -135,7 +135,7 @@ WaveletStudy RunWaveletStudy(const Mesh& mesh, const Environment& env, const Wav
   return study;
 }
 
-void WaveletAgreementCases(std::vector<StabilityCase>& out) {
+void WaveletAgreementCases(std::vector<StabilityCase>& out, int segments, int sides, int ground) {
   // The defaults `prt render --basis wavelet` uses: WaveletOptions' cube, budget, rays and
   // selection.
   const WaveletOptions defaults;
@@ -153,7 +153,7 @@ void WaveletAgreementCases(std::vector<StabilityCase>& out) {
   c.sh_samples = 4096;
   c.bounces = 1;
   c.progress = false;
-  const Mesh mesh = MakeSunScene();
+  const Mesh mesh = MakeSunScene(segments, sides, ground);
   const auto env = MakeSky(SkyParams{});
   const WaveletStudy s = RunWaveletStudy(mesh, *env, c);
   for (const BasisRow& r : s.rows) {
@@ -168,10 +168,10 @@ void WaveletAgreementCases(std::vector<StabilityCase>& out) {
     const std::string what = shadowed ? ", shadowed" : Formatted(", 1 bounce in SH at lmax %d", c.bounce_lmax);
     StabilityCase k;
     k.name = std::string("wavelet_sun_") + (shadowed ? "shadowed" : "one_bounce");
-    k.checks = Formatted("knot on a 40 x 40 ground under sky (2-degree sun), %d vertices, wavelets at the default "
+    k.checks = Formatted("knot on a %d x %d ground under sky (2-degree sun), %d vertices, wavelets at the default "
                          "budget (%d of 6 x %d^2, area-weighted, %d rays a texel)%s: relative RMS error against prt "
                          "reference, %d directions (limit %.3g%%: %s)",
-                         s.vertices, r.budget, c.face_size, c.split * c.split,
+                         ground, ground, s.vertices, r.budget, c.face_size, c.split * c.split,
                          what.c_str(), ref.samples, 100.0 * limit,
                          shadowed ? "1.39% measured against a 65536-direction reference, SH lmax 16 3.9%"
                                   : "1.62% measured against a 65536-direction reference");

@@ -261,7 +261,7 @@ void Accumulation(std::vector<StabilityCase>& out) {
 
 }  // namespace
 
-std::vector<StabilityCase> RunStabilityCases() {
+std::vector<StabilityCase> RunStabilityCases(const StabilityOptions& options) {
   std::vector<StabilityCase> out;
   for (int lmax : {32, 64, 100, 200}) {
     const std::string at = "_lmax" + std::to_string(lmax);
@@ -289,7 +289,7 @@ std::vector<StabilityCase> RunStabilityCases() {
   DeepConcavity(out);
   BadTexels(out);
   GlossySharpLobe(out);
-  WaveletAgreementCases(out);
+  WaveletAgreementCases(out, options.sun_segments, options.sun_sides, options.sun_ground);
   return out;
 }
 

@@ -1,6 +1,6 @@
 // The test runner itself: tests/discover_tests.cmake registers every case of prt_tests with CTest,
 // labelled with its suite, from one XML listing; a name with a comma must still select its case
-// (doctest splits filters at commas).
+// (doctest splits filters at commas), and a filter that selects nothing fails (tests/main.cpp).
 #include <doctest/doctest.h>
 
 #include <sstream>
@@ -25,9 +25,14 @@ int CountListed(const std::string& listing) {
 }  // namespace
 
 TEST_SUITE("core") {
-  TEST_CASE("runner: every case is a CTest test under its suite, and a name with commas, like this one, selects it") {
+  TEST_CASE("runner: every case is a CTest test under its suite; a name with commas, like this one, or <, >, &, &lt; [ ], \" and ' selects it") {
+    // The name holds every character the registration must carry through: commas (doctest's
+    // filter separator), ';' (a CMake list separator), '[' ']' (which CMake lists keep
+    // together), what XML escapes, and the text of an escape (&lt;, which the XML writes as
+    // &amp;lt;: undone in the wrong order it would come back as '<').
     const std::string name = doctest::getContextOptions()->currentTest->m_name;
-    REQUIRE(name.find(',') != std::string::npos);
+    for (char c : {',', ';', '<', '>', '&', '[', ']', '"', '\''}) REQUIRE(name.find(c) != std::string::npos);
+    REQUIRE(name.find("&lt;") != std::string::npos);
     const std::string self = "/proc/" + std::to_string(::getpid()) + "/exe";
     const std::string dir = prt::test::ScratchDir("runner");
     const auto discover = prt::test::RunCommand(
@@ -51,9 +56,24 @@ TEST_SUITE("core") {
           std::string::npos);
     const auto props = cases.find("set_tests_properties([==[" + name + "]==]");
     REQUIRE(props != std::string::npos);
-    CHECK(cases.substr(props, cases.find('\n', props) - props).find("LABELS [==[core]==]") != std::string::npos);
+    const std::string properties = cases.substr(props, cases.find('\n', props) - props);
+    CHECK(properties.find("LABELS [==[core]==]") != std::string::npos);
+    CHECK(properties.find("SKIP_RETURN_CODE 77") != std::string::npos);  // the runner's "skipped"
     // Another suite's case gets its own label, not the first one seen.
     CHECK(cases.find("LABELS [==[readme]==]") != std::string::npos);
+
+    // Without the course data the same cases are registered: those that need it are listed,
+    // so that CTest reports them as skipped rather than leaving them out.
+    const auto without_data = prt::test::RunCommand(
+        "PRT_SHARED_DATA=none PRT_REQUIRE_SHARED_DATA=0 " + prt::test::Q(PRT_CMAKE_COMMAND) + " -D TEST_EXECUTABLE=" + prt::test::Q(self) +
+        " -D TEST_WORKING_DIR=" + prt::test::Q(dir) + " -D CTEST_FILE=" + prt::test::Q(dir + "/no_data.cmake") +
+        " -D TEST_TIMEOUT=600 -D SKIP_RETURN_CODE=77 -P " +
+        prt::test::Q(prt::test::SourceDir() + "/tests/discover_tests.cmake"));
+    REQUIRE(without_data.exit_code == 0);
+    const std::string no_data = prt::ReadFile(dir + "/no_data.cmake");
+    CHECK(no_data == cases);
+    CHECK(no_data.find("add_test([==[readme: the course commands run against the course's framework]==]") !=
+          std::string::npos);
 
     // The registered filter selects exactly this case.
     const auto selected = prt::test::RunCommand(self + " " + prt::test::Q("--test-case=" + filter) +
@@ -61,5 +81,23 @@ TEST_SUITE("core") {
     CHECK(selected.exit_code == 0);
     CHECK(CountListed(selected.out) == 1);
     CHECK(selected.out.find(name) != std::string::npos);
+    // A filter that selects no case fails the run instead of passing without a test.
+    const auto none = prt::test::RunCommand(self + " --test-case='no case has this name' --no-intro=true");
+    CHECK(none.exit_code == 1);
+    CHECK(none.err.find("no test case matches the filters") != std::string::npos);
+  }
+
+  TEST_CASE("runner: the scaled tests' small scene is used under a sanitizer only, and is small") {
+    const std::string option = prt::test::ScaledMesh("runner_scaled");
+    CHECK(option.empty() == !prt::test::kSanitized);
+    // The scene itself: the knot and the ground, 241 vertices, as --mesh loads it.
+    const std::string dir = prt::test::ScratchDir("runner_small_scene");
+    const auto r = prt::test::RunPrt("precompute --quiet --transport unshadowed --mesh " +
+                                     prt::test::Q(prt::test::WriteSmallScene(dir)) + " --out " + prt::test::Q(dir + "/out"));
+    REQUIRE(r.exit_code == 0);
+    std::istringstream transport(prt::ReadFile(dir + "/out/transport.txt"));
+    int vertices = 0;
+    transport >> vertices;
+    CHECK(vertices == 241);
   }
 }

@@ -1,0 +1,181 @@
+// CI's own scripts: scripts/phase.sh (each step of .ci/run timed, the table at its end) and
+// scripts/sanitize.sh (which tests run under which sanitizer, built how), the latter run with
+// stand-ins for cmake and ctest that record how they were called, so nothing is built here.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <utility>
+
+#include "core/atomic_file.h"
+#include "tests/test_support.h"
+
+namespace prt {
+namespace {
+namespace fs = std::filesystem;
+using test::Q;
+
+/// The modules of src/ with code that runs on more than one thread, read from their sources
+/// independently of sanitize.sh's list: a thread, a parallel loop, an atomic or a mutex.
+std::set<std::string> ThreadedModules() {
+  const std::regex threaded(R"(std::thread|Parallel[A-Z][a-z]*\(|std::atomic|std::mutex|condition_variable)");
+  std::set<std::string> modules;
+  for (const auto& file : fs::recursive_directory_iterator(test::SourceDir() + "/src")) {
+    if (!file.is_regular_file()) continue;
+    const std::string module = fs::relative(file.path(), test::SourceDir() + "/src").begin()->string();
+    if (std::regex_search(ReadFile(file.path().string()), threaded)) modules.insert(module);
+  }
+  return modules;
+}
+
+/// The labels CTest knows in the build beside these tests (its registration file).
+std::set<std::string> Labels() {
+  const std::string cases = ReadFile(fs::path(PRT_TEST_TMP_DIR).parent_path().string() + "/prt_tests_cases.cmake");
+  std::set<std::string> labels;
+  const std::regex label(R"(LABELS \[==\[([^\]]*)\]==\])");
+  for (auto it = std::sregex_iterator(cases.begin(), cases.end(), label); it != std::sregex_iterator(); ++it)
+    labels.insert((*it)[1]);
+  return labels;
+}
+
+/// The labels a ctest selection (--label-regex ^(a|b)$ or --label-exclude ^a$) picks from `all`.
+std::set<std::string> Selected(const std::string& ctest_call, const std::set<std::string>& all) {
+  std::smatch m;
+  std::set<std::string> picked;
+  if (std::regex_search(ctest_call, m, std::regex(R"(--label-regex (\S+))"))) {
+    for (const auto& l : all)
+      if (std::regex_search(l, std::regex(m[1].str()))) picked.insert(l);
+  } else if (std::regex_search(ctest_call, m, std::regex(R"(--label-exclude (\S+))"))) {
+    for (const auto& l : all)
+      if (!std::regex_search(l, std::regex(m[1].str()))) picked.insert(l);
+  } else {
+    picked = all;
+  }
+  return picked;
+}
+
+/// The line of `log` that starts with `prefix` and contains `part` ("" if none).
+std::string CallWith(const std::string& log, const std::string& prefix, const std::string& part) {
+  std::istringstream lines(log);
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind(prefix, 0) == 0 && line.find(part) != std::string::npos) return line;
+  return "";
+}
+
+/// Runs `bash scripts/sanitize.sh all` with stand-ins for cmake and ctest that record their
+/// arguments (ctest its sanitizer options too) in a log, ctest then running `ctest_tail`.
+/// Returns the exit status and the log.
+std::pair<int, std::string> RunSanitize(const std::string& dir, const std::string& ctest_tail) {
+  const std::string log = dir + "/calls.log", bin = dir + "/bin";
+  fs::create_directories(bin);
+  std::ofstream(bin + "/cmake") << "#!/bin/sh\necho \"cmake $*\" >> " << Q(log) << "\n";
+  std::ofstream(bin + "/ctest") << "#!/bin/sh\necho \"ctest $* ASAN_OPTIONS=$ASAN_OPTIONS UBSAN_OPTIONS=$UBSAN_OPTIONS "
+                                   "TSAN_OPTIONS=$TSAN_OPTIONS\" >> "
+                                << Q(log) << "\n" << ctest_tail;
+  for (const char* tool : {"/cmake", "/ctest"}) fs::permissions(bin + tool, fs::perms::owner_all);
+  // PRT_PHASE_LOG emptied: under .ci/run these steps are not CI's phases.
+  const auto r = test::RunCommand("cd " + Q(test::SourceDir()) + " && PATH=" + Q(bin) +
+                                  ":\"$PATH\" PRT_PHASE_LOG= bash scripts/sanitize.sh all");
+  return {r.exit_code, fs::exists(log) ? ReadFile(log) : ""};
+}
+
+/// The value the stand-in ctest recorded for the environment variable `name` in `call`.
+std::string Value(const std::string& call, const std::string& name) {
+  const auto at = call.find(" " + name + "=");
+  if (at == std::string::npos) return "";
+  const auto begin = at + name.size() + 2;
+  return call.substr(begin, call.find(' ', begin) - begin);
+}
+
+}  // namespace
+
+TEST_SUITE("app") {
+  TEST_CASE("ci phases: each step timed with its status, the table totals them, a failed step keeps its exit status") {
+    // scripts/phase.sh, as .ci/run, quickstart.sh and sanitize.sh use it.
+    const std::string dir = test::ScratchDir("ci_phases");
+    const std::string log = dir + "/phases.tsv";
+    const auto r = test::RunCommand(
+        "cd " + Q(test::SourceDir()) + " && PRT_PHASE_LOG=" + Q(log) +
+        " bash -c 'source scripts/phase.sh; phase \"first step\" sleep 1; phase second bash -c \"exit 3\"; "
+        "echo \"status $?\"; phase_table \"$PRT_PHASE_LOG\"'");
+    CAPTURE(r.out);
+    CHECK(r.exit_code == 0);
+    CHECK(r.out.find("status 3\n") != std::string::npos);  // the step's own status, not 1
+    std::istringstream lines(ReadFile(log));
+    std::string first, second, extra;
+    std::getline(lines, first);
+    std::getline(lines, second);
+    CHECK_FALSE(std::getline(lines, extra));
+    REQUIRE(first.rfind("first step\t", 0) == 0);
+    const int seconds = std::stoi(first.substr(11));
+    CHECK(seconds >= 1);
+    CHECK(seconds <= 60);
+    CHECK(first.substr(first.rfind('\t')) == "\tok");
+    CHECK(second.rfind("second\t", 0) == 0);
+    CHECK(second.substr(second.rfind('\t')) == "\tfailed");
+    // The table: a row per step, the failed one marked, and their total.
+    CHECK(r.out.find("first step") != std::string::npos);
+    CHECK(r.out.find("(failed)") != std::string::npos);
+    const auto total = r.out.find("total");
+    REQUIRE(total != std::string::npos);
+    CHECK(std::stoi(r.out.substr(r.out.find_first_of("0123456789", total))) == seconds + std::stoi(second.substr(7)));
+  }
+
+
+  TEST_CASE("sanitize.sh: ASan + UBSan runs every module, TSan every module with threads, both built -O1 -g1") {
+    const std::string dir = test::ScratchDir("ci_sanitize");
+    const auto [exit_code, calls] = RunSanitize(dir, "");
+    REQUIRE(exit_code == 0);
+    CAPTURE(calls);
+
+    // Both builds: -O1 -g1, each with its own sanitizer, the program and the tests built.
+    for (const char* option : {"-DPRT_SANITIZE=ON", "-DPRT_TSAN=ON"}) {
+      CAPTURE(option);
+      CHECK(CallWith(calls, "cmake -S", option).find("-O1 -g1") != std::string::npos);
+    }
+    CHECK(CallWith(calls, "cmake --build build-asan", "--target prt prt_tests") != "");
+    CHECK(CallWith(calls, "cmake --build build-tsan", "--target prt prt_tests") != "");
+
+    const std::set<std::string> labels = Labels();
+    REQUIRE(labels.count("core") == 1);
+    // ASan + UBSan: every label but the README's, reports fatal.
+    const std::string asan = CallWith(calls, "ctest --test-dir build-asan", "");
+    REQUIRE(asan != "");
+    std::set<std::string> all_but_readme = labels;
+    all_but_readme.erase("readme");
+    CHECK(Selected(asan, labels) == all_but_readme);
+    CHECK(Value(asan, "ASAN_OPTIONS").find("abort_on_error=1") != std::string::npos);
+    CHECK(Value(asan, "ASAN_OPTIONS").find("detect_leaks=1") != std::string::npos);
+    CHECK(Value(asan, "UBSAN_OPTIONS").find("halt_on_error=1") != std::string::npos);
+    // TSan: every module whose sources start threads, each an existing label, reports fatal,
+    // no second of sleep at every exit.
+    const std::string tsan = CallWith(calls, "ctest --test-dir build-tsan", "");
+    REQUIRE(tsan != "");
+    const std::set<std::string> picked = Selected(tsan, labels);
+    for (const std::string& module : ThreadedModules()) {
+      CAPTURE(module);
+      CHECK(labels.count(module) == 1);
+      CHECK(picked.count(module) == 1);
+    }
+    // Whole labels only: a label that merely contains a module's name is not picked.
+    CHECK(Selected(tsan, {"coretex", "xapp", "shade"}).empty());
+    CHECK(Value(tsan, "TSAN_OPTIONS").find("halt_on_error=1") != std::string::npos);
+    CHECK(Value(tsan, "TSAN_OPTIONS").find("atexit_sleep_ms=0") != std::string::npos);
+  }
+
+  TEST_CASE("sanitize.sh: a failing sanitized suite fails the run, and ThreadSanitizer does not start after it") {
+    const std::string dir = test::ScratchDir("ci_sanitize_fails");
+    // ctest fails (a test found a report) in the ASan + UBSan build.
+    const auto [exit_code, calls] = RunSanitize(dir, "case \"$*\" in *build-asan*) exit 8 ;; esac\n");
+    CAPTURE(calls);
+    CHECK(exit_code != 0);
+    CHECK(calls.find("ctest --test-dir build-asan") != std::string::npos);
+    CHECK(calls.find("build-tsan") == std::string::npos);
+  }
+}
+
+}  // namespace prt
