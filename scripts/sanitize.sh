@@ -55,10 +55,19 @@ run_asan() {
   run_suite "ASan + UBSan" build-asan "every test but the readme suite" "--label-exclude ^readme$" "$@"
 }
 
-# The modules with code that runs on more than one thread, or is shared between threads (a
-# thread pool, worker or writer threads, atomics, mutexes), each a test label; a test
-# (tests/app/test_ci_scripts.cpp) reads src/ and fails when a module with threads is missing.
-THREADED="core|sh|geometry|env|material|wavelet|precompute|precompute_io|cpca|raster|render|video|report|app"
+# The modules with a stage that runs on several threads (a thread pool, worker or writer
+# threads, atomics, mutexes), each a test label. A test (tests/app/test_ci_scripts.cpp) reads
+# src/ and fails when a module with threaded code is neither here nor in TSAN_LEFT_OUT.
+THREADED="core|sh|env|material|wavelet|precompute|precompute_io|cpca|raster|render|video|app"
+# Modules with threaded code whose tests do not run under ThreadSanitizer, each with its reason:
+# - report: `prt report`'s studies, built on precompute's stages (under TSan through precompute's
+#   and app's tests); its own parallel loop, the stability suite's lowest value over 200,000
+#   directions, is core's ParallelFor over disjoint chunks. Its tests were 561 s of an 833 s
+#   TSan suite (the glossy section alone 254 s, its lobe tables fixed whatever the mesh).
+# - geometry: no thread of its own; the BVH is traversed from the transport's worker threads
+#   (under TSan through precompute's tests), and its one atomic, the kernels' instruction set,
+#   is chosen at start (tests and benchmarks switch it between runs, never during one).
+TSAN_LEFT_OUT="report geometry"
 
 run_tsan() {
   build "TSan" build-tsan PRT_TSAN || return

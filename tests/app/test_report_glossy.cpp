@@ -24,7 +24,8 @@ struct GlossyRow {
 
 }  // namespace
 
-TEST_SUITE("app") {
+// A test of `prt report`, in its suite (the label the sanitizer passes choose by).
+TEST_SUITE("report") {
   TEST_CASE("prt report --material: the glossy section's errors fall with lmax and the two paths meet") {
     const std::string dir = prt::test::ScratchDir("report_glossy");
     // The diffuse sweep kept short; the glossy sweep is fixed (quick: lmax 1..8, matrices 1..4).

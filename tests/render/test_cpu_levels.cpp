@@ -147,8 +147,9 @@ TEST_CASE("cpu levels: frames of every golden kind are the same bytes at every l
       {"glossy", mesh + " --albedo 0.5,0.5,0.5 --material phong:20,0.4 --orbit 20 --samples 256"},
       {"textured", mesh + cube + " --texture " + test::Q(dir + "/checker.png") + " --samples 256"},
       {"interreflection", mesh + cube + " --transport interreflection --bounces 2 --samples 256"},
-      // The demo's scene (a 67,584-triangle knot on a ground plane), interreflected, few rays.
-      {"demo", " --transport interreflection --samples 32"},
+      // The demo's scene (a 67,584-triangle knot on a ground plane), interreflected, few rays;
+      // scaled under a sanitizer to the small scene (tests/README.md).
+      {"demo", test::ScaledMesh("cpu_levels_small_scene") + " --transport interreflection --samples 32"},
   };
   for (const auto& scene : scenes) {
     CAPTURE(scene.name);
