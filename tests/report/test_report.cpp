@@ -17,6 +17,7 @@
 #include "raster/plot.h"
 #include "report/report_auto_lmax.h"
 #include "report/stability.h"
+#include "tests/readme_commands.h"
 #include "tests/test_support.h"
 
 namespace {
@@ -36,9 +37,10 @@ const prt::StabilityOptions kSanitizedStability{48, 6, 10};
 }  // namespace
 
 TEST_SUITE("report") {
-  TEST_CASE("stability: prt report --stability writes every stiff and extreme case, each within this test's own limit") {
-    // One run of the command (the suite's slowest work, so it runs once): its files, and every
-    // case's figure as stability.csv gives it (6 significant digits) against the test's limits.
+  TEST_CASE("stability: the README's prt report --stability writes every stiff and extreme case, each within this test's own limit") {
+    // One run of the command, as the README writes it (the suite's slowest work, so it runs once:
+    // the README test leaves it to this one): its files, and every case's figure as stability.csv
+    // gives it (6 significant digits) against the test's limits.
     // The limits are the test's, not the report's: a case whose figure drifts, or whose limit or
     // pass flag is loosened in the code, fails here. Each limit is the promise its case makes,
     // with the figure measured on this machine for scale.
@@ -100,10 +102,13 @@ TEST_SUITE("report") {
       text = prt::StabilityCsv(cases);
       CHECK(prt::StabilityMarkdown(cases).find("| rotation_36000_frames |") != std::string::npos);
     } else {
-      const auto run = prt::test::RunPrt("report --stability --quiet --out " + Q(dir));
-      CHECK(run.exit_code == 0);
-      CHECK(std::filesystem::exists(dir + "/report.md"));
-      text = prt::ReadFile(dir + "/stability.csv");
+      // The README's command writes into out/stability of a fresh clone's layout.
+      const std::string command = prt::test::ReadmeCommandWith("prt report --stability");
+      REQUIRE(command.find("--out out/stability") != std::string::npos);
+      const std::string clone = prt::test::MakeReadmeClone("stability_readme");
+      REQUIRE(prt::test::RunInClone(clone, command) == 0);
+      CHECK(std::filesystem::exists(clone + "/out/stability/report.md"));
+      text = prt::ReadFile(clone + "/out/stability/stability.csv");
     }
     std::istringstream csv(text);
     std::string line;
