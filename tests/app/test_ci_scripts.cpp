@@ -1,6 +1,7 @@
-// CI's own scripts: scripts/phase.sh (each step of .ci/run timed, the table at its end) and
-// scripts/sanitize.sh (which tests run under which sanitizer, built how), the latter run with
-// stand-ins for cmake and ctest that record how they were called, so nothing is built here.
+// CI's own scripts: scripts/phase.sh (each step of .ci/run timed, the table at its end),
+// scripts/sanitize.sh (which tests run under which sanitizer, built how), run with stand-ins for
+// cmake and ctest that record how they were called, so nothing is built here, and .ci/run itself
+// over stand-ins for the two scripts it calls.
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -78,12 +79,13 @@ std::string CallWith(const std::string& log, const std::string& prefix, const st
 }
 
 /// Runs `bash scripts/sanitize.sh all` with stand-ins for cmake and ctest that record their
-/// arguments (ctest its sanitizer options too) in a log, ctest then running `ctest_tail`.
+/// arguments (ctest its sanitizer options too) in a log, then run `cmake_tail` and `ctest_tail`.
 /// Returns the exit status and the log.
-std::pair<int, std::string> RunSanitize(const std::string& dir, const std::string& ctest_tail) {
+std::pair<int, std::string> RunSanitize(const std::string& dir, const std::string& ctest_tail,
+                                        const std::string& cmake_tail = "") {
   const std::string log = dir + "/calls.log", bin = dir + "/bin";
   fs::create_directories(bin);
-  std::ofstream(bin + "/cmake") << "#!/bin/sh\necho \"cmake $*\" >> " << Q(log) << "\n";
+  std::ofstream(bin + "/cmake") << "#!/bin/sh\necho \"cmake $*\" >> " << Q(log) << "\n" << cmake_tail;
   std::ofstream(bin + "/ctest") << "#!/bin/sh\necho \"ctest $* ASAN_OPTIONS=$ASAN_OPTIONS UBSAN_OPTIONS=$UBSAN_OPTIONS "
                                    "TSAN_OPTIONS=$TSAN_OPTIONS\" >> "
                                 << Q(log) << "\n" << ctest_tail;
@@ -194,6 +196,44 @@ TEST_SUITE("app") {
     CHECK(exit_code != 0);
     CHECK(calls.find("ctest --test-dir build-asan") != std::string::npos);
     CHECK(calls.find("build-tsan") == std::string::npos);
+  }
+
+  TEST_CASE("sanitize.sh: a failed sanitized build fails the run before its suite, and nothing after it starts") {
+    const std::string dir = test::ScratchDir("ci_sanitize_build_fails");
+    // The compiler fails building the ASan + UBSan objects.
+    const auto [exit_code, calls] =
+        RunSanitize(dir, "", "case \"$*\" in *--build\\ build-asan*) exit 2 ;; esac\n");
+    CAPTURE(calls);
+    CHECK(exit_code != 0);
+    CHECK(calls.find("cmake --build build-asan") != std::string::npos);
+    CHECK(calls.find("ctest") == std::string::npos);
+    CHECK(calls.find("build-tsan") == std::string::npos);
+  }
+
+  TEST_CASE("ci run: its phase table holds the steps of the scripts it calls, and its last line says how it ended") {
+    // .ci/run, copied into a tree whose quickstart.sh and sanitize.sh are stand-ins: each times
+    // one step through the real scripts/phase.sh; the sanitizers' step exits with $STAND_IN.
+    const std::string tree = test::ScratchDir("ci_run");
+    fs::create_directories(tree + "/.ci");
+    fs::create_directories(tree + "/scripts");
+    fs::copy_file(test::SourceDir() + "/.ci/run", tree + "/.ci/run");
+    fs::copy_file(test::SourceDir() + "/scripts/phase.sh", tree + "/scripts/phase.sh");
+    std::ofstream(tree + "/scripts/quickstart.sh") << "source scripts/phase.sh\nphase \"stand-in build\" true\n";
+    std::ofstream(tree + "/scripts/sanitize.sh")
+        << "source scripts/phase.sh\nphase \"stand-in sanitizers\" bash -c \"exit $STAND_IN\"\n";
+    for (const int status : {0, 5}) {
+      CAPTURE(status);
+      const auto r = test::RunCommand("STAND_IN=" + std::to_string(status) + " bash " + Q(tree + "/.ci/run"));
+      CAPTURE(r.out);
+      CHECK((r.exit_code == 0) == (status == 0));
+      CHECK(r.out.find("stand-in build") != std::string::npos);
+      CHECK(r.out.find("stand-in sanitizers") != std::string::npos);
+      CHECK(r.out.find("\ntotal") != std::string::npos);
+      const auto last = r.out.rfind("CI: ");
+      REQUIRE(last != std::string::npos);
+      const std::string line = r.out.substr(last, r.out.find('\n', last) - last);
+      CHECK(line.find(status == 0 ? "s in all, passed" : "s in all, FAILED (exit 5)") != std::string::npos);
+    }
   }
 }
 

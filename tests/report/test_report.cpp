@@ -131,6 +131,12 @@ TEST_SUITE("report") {
       REQUIRE((f[3] == "<=" || f[3] == ">="));
       CHECK(f[4] == ((f[3] == ">=" ? figure >= limit : figure <= limit) ? "pass" : "FAIL"));
       CHECK(!f[5].empty());
+      // The wavelet cases ran on the scene asked for, ground and knot alike: 48 x 6 + 11^2 = 409
+      // vertices under a sanitizer (kSanitizedStability), 192 x 20 + 41^2 = 5,521 otherwise.
+      if (name.rfind("wavelet_sun_", 0) == 0)
+        CHECK(f[5].find(prt::test::kSanitized ? "on a 10 x 10 ground under sky (2-degree sun), 409 vertices,"
+                                              : "on a 40 x 40 ground under sky (2-degree sun), 5521 vertices,") !=
+              std::string::npos);
     }
     CHECK(seen.size() == limits.size());  // every case ran
     CHECK(seen.count("rotation_36000_frames") == 1);
@@ -144,6 +150,23 @@ TEST_SUITE("report") {
       CHECK(refused.err.find("not used by report --stability") != std::string::npos);
       CHECK(!std::filesystem::exists(dir + "/refused"));
     }
+  }
+
+  TEST_CASE("stability: the wavelet cases run on the scene StabilityOptions asks for") {
+    // A knot of 16 x 3 over a 2 x 2 ground: 48 + 3^2 = 57 vertices, named with its ground in each
+    // wavelet case's checks; the cases with fixed inputs left out. The wavelet cases' figures on
+    // a scene this coarse are not the measured ones, so only that they are numbers is checked.
+    const auto cases = prt::RunStabilityCases(prt::StabilityOptions{16, 3, 2, false});
+    CHECK(cases.size() == 2);
+    int wavelet = 0;
+    for (const auto& c : cases) {
+      if (c.name.rfind("wavelet_sun_", 0) != 0) continue;
+      CAPTURE(c.checks);
+      CHECK(c.checks.find("on a 2 x 2 ground under sky (2-degree sun), 57 vertices,") != std::string::npos);
+      CHECK(std::isfinite(c.figure));
+      ++wavelet;
+    }
+    CHECK(wavelet == 2);
   }
 
   TEST_CASE("--lmax auto: the smallest band count whose irradiance error is within the tolerance") {
