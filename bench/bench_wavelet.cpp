@@ -19,8 +19,9 @@
 #include "env/procedural.h"
 #include "geometry/procedural.h"
 #include "precompute/light.h"
-#include "precompute/transport_wavelet.h"
-#include "render/frame_light.h"
+#include "wavelet/transport.h"
+#include "sh_basis/frame_light.h"
+#include "wavelet/frame_light.h"
 
 namespace prt::bench {
 

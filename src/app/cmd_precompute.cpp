@@ -96,9 +96,10 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
   if (cpca && !options.material.glossy)
     args.Fail("--cpca: compresses a glossy material's transfer matrices (expected --material phong:N,KS, or no --cpca)");
   if (!out) args.Fail("--out DIR is required");
-  if (options.basis != "sh")
-    args.Fail("--basis " + options.basis + ": precompute writes the course's SH files (light.txt, transport.txt) only; "
-              "render, demo and report take --basis wavelet");
+  if (!options.basis->course_files)
+    args.Fail("--basis " + std::string(options.basis->name) +
+              ": precompute writes the course's SH files (light.txt, transport.txt) only; render, demo and report "
+              "take --basis " + options.basis->name);
   if (options.max_edge > 0.0)
     args.Fail("--max-edge: not with precompute (the course's transport.txt has three rows per face of the OBJ "
               "file, and split triangles are other faces; render and reference take it)");

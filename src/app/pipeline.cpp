@@ -81,11 +81,11 @@ std::string ApplyAutoWindow(ShRgb& light) {
 
 /// kDefaultWindow for the frames of `view`: the auto window when they would show the light's
 /// ringing (FindSeenRinging), else none; the run-summary clause ("" when nothing was checked).
-std::string DefaultWindow(ShRgb& light, const SceneOptions& options, const std::string& view) {
-  // The wavelet basis keeps the direct light in Haar wavelets; its SH light feeds only the
-  // bounces, which keep the raw light. (kMaxLmax <= kMaxAutoWindowLmax: auto takes any lmax here.)
+std::string DefaultWindow(ShRgb& light, const SceneOptions& options, View view) {
+  // A basis whose frames are not lit by the SH light (the wavelets: its SH light feeds only the
+  // bounces) keeps the raw light. (kMaxLmax <= kMaxAutoWindowLmax: auto takes any lmax here.)
   static_assert(kMaxLmax <= kMaxAutoWindowLmax);
-  if (options.basis != "sh") return "";
+  if (!options.basis->windowed_light) return "";
   const auto t0 = std::chrono::steady_clock::now();
   const SeenRinging seen = FindSeenRinging(light, options.material, view);
   if (seen.what.empty()) return "";  // --view albedo or transport shows no light
@@ -107,7 +107,7 @@ std::unique_ptr<Environment> LoadSceneEnvironment(const SceneOptions& options, O
   return env;
 }
 
-ShRgb ComputeLight(const Environment& env, const SceneOptions& options, const std::string& view) {
+ShRgb ComputeLight(const Environment& env, const SceneOptions& options, View view) {
   const auto t0 = std::chrono::steady_clock::now();
   ShRgb light = ProjectLight(env, options.lmax);
   std::string line = "light: lmax " + std::to_string(options.lmax) + " (" +
@@ -207,28 +207,6 @@ std::string DirectionsText(const SceneOptions& options, const TransportOptions& 
 }
 
 }  // namespace
-
-void ReportBounces(const TransportReport& r, int channels) {
-  std::string bounces = "bounces: ";
-  for (std::size_t b = 0; b < r.bounce_share.size(); ++b) bounces += Formatted(b ? ", %.3g" : "%.3g", r.bounce_share[b]);
-  if (r.bounce_share.empty()) bounces += "none";
-  bounces += " of the direct energy; " + r.bounce_stop + Formatted(" [%.3f s]", r.bounce_seconds);
-  if (channels == 3) bounces += "; coloured albedo: one transport vector per colour channel";
-  if (r.senders.done)
-    bounces += "; triangles with edges longer than " + Formatted("%.3g", double(r.senders.max_edge)) + " (" +
-               Formatted("%g", 100.0 * kSenderEdge) +
-               "% of the scene's diagonal) split for the bounces only, so the light a bounce reads does not "
-               "depend on how coarsely the mesh is triangulated (" + std::to_string(r.senders.vertices_added) +
-               " vertices added, not in the output)";
-  Summary(bounces);
-  if (r.senders.needed && !r.senders.done)
-    Warn("bounces: the mesh has edges longer than " + Formatted("%.3g", double(r.senders.max_edge)) + " (" +
-         Formatted("%g", 100.0 * kSenderEdge) + "% of its diagonal), and splitting them for the bounces would make " +
-         Formatted("about %.2g", double(r.senders.triangles_estimate)) +
-         " triangles: the light a bounce reads from such a large triangle is interpolated from its corners and "
-         "can be far off inside it (split the mesh with --max-edge " + Formatted("%g", 100.0 * kSenderEdge) +
-         "%, or in the modeller)");
-}
 
 Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, const CachePlan& cache,
                                 const std::vector<std::uint8_t>& seen, const Camera* camera, bool matrices) {

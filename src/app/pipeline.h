@@ -22,8 +22,8 @@
 #include "cpca/cpca_transfer.h"
 #include "env/environment.h"
 #include "geometry/mesh.h"
+#include "precompute/bounce_summary.h"
 #include "precompute/transport.h"
-#include "precompute/transport_wavelet.h"
 #include "raster/camera.h"
 #include "render/render_frames.h"
 #include "sh/coeffs.h"
@@ -47,7 +47,7 @@ void ReportAutoExposure(double ev, const std::string& what);
 /// kDefaultWindow is resolved for the frames of `view` (app/seen_ringing.h): the auto window
 /// where they would show the light's ringing, said on the run summary with what went negative,
 /// else none; the wavelet basis keeps its SH bounce light unwindowed.
-ShRgb ComputeLight(const Environment& env, const SceneOptions& options, const std::string& view = "radiance");
+ShRgb ComputeLight(const Environment& env, const SceneOptions& options, View view = View::kRadiance);
 
 /// The mesh of `--mesh` (or the embedded demo scene): an inside-out mesh turned right way out
 /// where that is unambiguous (geometry/orientation.h), `--albedo` applied, triangles split by
@@ -84,17 +84,6 @@ CachePlan PlanCache(const std::string& option, OutputFolder* folder);
 Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, const CachePlan& cache,
                                 const std::vector<std::uint8_t>& seen = {}, const Camera* camera = nullptr,
                                 bool matrices = false);
-
-/// Says on the run summary what interreflection's bounces added and how (split senders), and
-/// warns when the senders needed a split too large to make.
-void ReportBounces(const TransportReport& report, int channels);
-
-/// The wavelet transport of `mesh` (precompute/transport_wavelet.h) for --basis wavelet, its
-/// bounces in SH at --lmax with `seen` as ComputeSceneTransport takes it; the run summary says
-/// the cube, the budget, what was kept, the bytes, and what the truncation costs under `env`
-/// (frame 0's direct light of a sample of vertices, kept against unkept). Not cached.
-WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const SceneOptions& options, const Environment& env,
-                                      const std::vector<std::uint8_t>& seen = {});
 
 /// Says on the run summary what the transfer matrices of `mesh` will take, and throws Error,
 /// naming the largest lmax that fits, when that is more than the memory available allows.

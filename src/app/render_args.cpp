@@ -24,6 +24,11 @@
 namespace prt {
 namespace {
 
+/// The --view value of `o` as the command line writes it (transport:K with its index).
+std::string ViewText(const RenderOptions& o) {
+  return o.view == View::kTransport ? "transport:" + std::to_string(o.transport_index) : ViewName(o.view);
+}
+
 std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
   const RenderOptions demo = WithDemoCamera({});  // the embedded scene's camera
   std::map<std::string, OptionSpec> s;
@@ -53,7 +58,7 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
        "the albedo; the K-th transport coefficient in false colour with a legend, on a grey background; the "
        "light as the SH coefficients reconstruct it (on the mesh: in the normal's direction); a glossy "
        "material's lobe term alone (the highlights, without the diffuse part)",
-       d.view == "transport" ? "transport:" + std::to_string(d.transport_index) : d.view});
+       ViewText(d)});
   add({"--eye", "X,Y,Z", "camera position",
        d.eye ? VecText(*d.eye)
              : "a three-quarter view fitted to the mesh's projected bounds; " + VecText(*demo.eye) + " for the embedded scene"});
@@ -125,16 +130,16 @@ void ReadBackground(Args& args, RenderOptions& o, const RenderOptions& d) {
 }
 
 void ReadView(Args& args, RenderOptions& o, const RenderOptions& d) {
-  const std::string view = args.String("--view", d.view == "transport" ? "transport:" + std::to_string(d.transport_index) : d.view);
+  const std::string view = args.String("--view", ViewText(d));
   if (view.rfind("transport:", 0) == 0) {
     const std::string k = view.substr(10);
     char* end = nullptr;
     const long index = std::strtol(k.c_str(), &end, 10);
     if (k.empty() || *end != '\0' || index < 0 || index >= CoeffCount(kMaxLmax))
       args.Fail("--view: '" + view + "' is not a coefficient index (expected transport:K with K an integer from 0)");
-    o.view = "transport", o.transport_index = static_cast<int>(index);
-  } else if (view == "radiance" || view == "irradiance" || view == "albedo" || view == "light" || view == "glossy") {
-    o.view = view;
+    o.view = View::kTransport, o.transport_index = static_cast<int>(index);
+  } else if (const auto v = ViewFromName(view); v && *v != View::kTransport) {
+    o.view = *v;
   } else {
     args.Fail("--view: unknown value '" + view + "' (expected radiance, irradiance, albedo, transport:K, light or glossy)");
   }
@@ -287,10 +292,10 @@ RenderOptions CompleteRenderOptions(Args& args, RenderOptions o, const SceneOpti
       if (!file->empty() && !input.empty() && std::filesystem::exists(input) && SameFile(*file, input))
         args.Fail(std::string(option) + ": '" + *file + "' is an input of this run (expected another name: the run would "
                   "replace " + input + ")");
-  if (o.view == "transport" && scene.basis != "sh")
-    args.Fail("--view transport: shows one SH transfer coefficient per vertex; --basis " + scene.basis +
-              " keeps the direct light in wavelets (expected --basis sh, or another view such as light)");
-  if (o.view == "transport" && o.transport_index >= CoeffCount(scene.lmax))
+  if (o.view == View::kTransport && !scene.basis->coefficient_view)
+    args.Fail("--view transport: shows one SH transfer coefficient per vertex; --basis " + std::string(scene.basis->name) +
+              " has none (expected --basis " + DefaultBasis()->name + ", or another view such as light)");
+  if (o.view == View::kTransport && o.transport_index >= CoeffCount(scene.lmax))
     args.Fail("--view: transport:" + std::to_string(o.transport_index) + " is out of range (expected 0 to " +
               std::to_string(CoeffCount(scene.lmax) - 1) + " for lmax " + std::to_string(scene.lmax) + ")");
   CheckCpcaTerms(args, o, scene.lmax);

@@ -4,6 +4,7 @@
 #include <memory>
 #include <regex>
 
+#include "app/basis_table.h"
 #include "app/pipeline.h"
 #include "app/render_video.h"
 #include "app/seen_ringing.h"
@@ -12,7 +13,6 @@
 #include "core/text.h"
 #include "precompute/shade.h"
 #include "precompute_io/transport_txt.h"
-#include "render/frame_light.h"
 #include "render/render_frames.h"
 #include "render/seen_vertices.h"
 
@@ -79,7 +79,7 @@ std::unique_ptr<SingleFileOutput> WriteVertexRadiance(const Mesh& mesh, FrameLig
 /// vectors do not); otherwise the shadows' Monte Carlo estimate undershoots where --samples is
 /// low (both measured on the demo scene under sky:sun=1000 and 100000 with the auto window:
 /// none with a fixed camera, none at --samples 64 where --samples 8 made 28 pixels).
-std::string RingingNote(std::size_t pixels, const ShRgb& light, const SceneOptions& scene, const std::string& view,
+std::string RingingNote(std::size_t pixels, const ShRgb& light, const SceneOptions& scene, View view,
                         bool matrices) {
   const std::string note = "ringing: " + std::to_string(pixels) +
                            " pixels over all frames had negative radiance (SH ringing), clamped to 0; ";
@@ -112,7 +112,7 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
   // checked before the light is loaded.
   // (Views that show no lobe do not need them.)
   const bool matrices =
-      scene.material.glossy && render.orbit != 0.0 && (render.view == "radiance" || render.view == "glossy");
+      scene.material.glossy && render.orbit != 0.0 && (render.view == View::kRadiance || render.view == View::kGlossy);
   if (matrices) CheckMatrixMemory(mesh, scene);
 
   const auto env = LoadSceneEnvironment(scene, &folder);
@@ -120,40 +120,23 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
   // The vertices the frames show take --samples directions, the others --hidden-samples.
   std::vector<std::uint8_t> seen;
   if (scene.transport != "unshadowed" && scene.hidden_samples != scene.samples) seen = SeenVertices(mesh, camera, render);
-  // The transport in its basis, and the light each frame turns for it.
-  Transport transport;
-  CpcaTransfer cpca;
-  WaveletTransport wavelets;
-  std::unique_ptr<FrameLight> frame_light;
-  if (scene.basis == "wavelet") {
-    wavelets = ComputeSceneWavelets(mesh, scene, *env, seen);
-    frame_light = MakeWaveletFrameLight(wavelets, *env, light, render.axis, scene.light_terms, WaveletOptions{}.selection);
-    Summary("rotation: the environment turned and resampled onto the wavelet cube each frame (each texel its mean "
-            "radiance, the sun's energy kept exactly)" +
-            std::string(wavelets.bounce.coeffs.empty() ? "" : "; the bounces' SH light turned by its band matrices"));
-  } else {
-    transport = ComputeSceneTransport(mesh, scene, cache, seen, &camera, matrices);
-    const bool compressed = matrices && render.cpca_clusters > 0;
-    if (compressed) cpca = CompressSceneMatrices(transport, render.cpca_clusters, render.cpca_terms);
-    frame_light = MakeShFrameLight(transport, light, render.axis, compressed ? &cpca : nullptr);
-    const AxisRotation rotation(render.axis, transport.lmax);
-    Summary("rotation: " + rotation.Describe() + "; only the " + std::to_string(CoeffCount(transport.lmax)) +
-            " coefficients the transport has are turned");
-  }
+  // The transport in its basis (app/basis_table.h), and the light each frame turns for it.
+  const PreparedBasis basis = scene.basis->prepare({mesh, scene, render, *env, light, seen, camera, cache, matrices});
+  FrameLight& frame_light = *basis.light;
   std::unique_ptr<SingleFileOutput> radiance_outside;
   if (!render.vertex_radiance.empty())
-    radiance_outside = WriteVertexRadiance(mesh, *frame_light, camera, render.vertex_radiance, folder);
+    radiance_outside = WriteVertexRadiance(mesh, frame_light, camera, render.vertex_radiance, folder);
 
   RenderVideo video(render, folder);
-  const FrameStats stats = RenderFrames(mesh, *frame_light, *env, camera, render, folder, video.writer());
+  const FrameStats stats = RenderFrames(mesh, frame_light, *env, camera, render, folder, video.writer());
   if (stats.legend_left_out)
     Summary("legend: left out, a " + std::to_string(render.width) + "x" + std::to_string(render.height) +
             " frame is too small to hold it readably");
-  if (!render.exposure && render.view != "transport") ReportAutoExposure(stats.exposure, "frame 0's mesh pixels");
+  if (!render.exposure && render.view != View::kTransport) ReportAutoExposure(stats.exposure, "frame 0's mesh pixels");
   Summary("frames: " + std::to_string(stats.frames) + " of " + std::to_string(render.width) + "x" +
           std::to_string(render.height) + " in " + folder.dir() + "/" +
           Formatted(" [draw %.3f s, waiting for PNG encoding %.3f s]", stats.draw_seconds, stats.encode_seconds));
-  if (stats.negative_pixels > 0 && scene.basis == "sh")
+  if (stats.negative_pixels > 0 && scene.basis->windowed_light)
     Summary(RingingNote(stats.negative_pixels, light, scene, render.view, matrices));
   if (stats.nan_pixels > 0) Summary("warning: " + std::to_string(stats.nan_pixels) + " NaN pixels set to 0");
   if (const std::string line = video.Finish(); !line.empty()) Summary(line);

@@ -44,7 +44,7 @@ SceneOptions LookSceneDefaults(Look look, SceneOptions d) {
 
 RenderOptions LookRenderDefaults(Look look, RenderOptions d) {
   if (look != Look::kCourse) return d;
-  d.view = "irradiance";  // light . transport, albedo 1: the viewer's shader has no albedo
+  d.view = View::kIrradiance;  // light . transport, albedo 1: the viewer's shader has no albedo
   d.tonemap = ToneCurve::kSrgb;
   d.exposure = 0.0;
   d.eye = Vec(kCourseEye), d.target = Vec(kCourseTarget), d.fov = kCourseFov;
@@ -53,9 +53,10 @@ RenderOptions LookRenderDefaults(Look look, RenderOptions d) {
 
 std::string CheckLook(Args& args, Look look, const SceneOptions& scene) {
   if (look != Look::kCourse) return "";
-  if (scene.basis != "sh")
+  if (!scene.basis->coefficient_view)
     args.Fail("--look course: shows what the course's viewer draws from light.txt and transport.txt, which hold SH "
-              "coefficients; --basis " + scene.basis + " has none (expected --basis sh, or --look default)");
+              "coefficients; --basis " + std::string(scene.basis->name) + " has none (expected --basis " +
+              DefaultBasis()->name + ", or --look default)");
   if (scene.lmax != kCourseLmax)
     Warn("--look course with lmax " + std::to_string(scene.lmax) + ": the course's WebGL viewer reads exactly 9 "
          "numbers a row (lmax 2) and draws garbage, without an error, from precompute's files at any other lmax; "

@@ -19,6 +19,15 @@
 namespace prt {
 namespace {
 
+/// --basis's help: the names of the table's rows, then what each but the default is.
+std::string BasisHelp() {
+  std::string names, what;
+  for (const Basis& b : Bases()) {
+    names += (names.empty() ? "" : " | ") + std::string(b.name);
+    if (*b.help) what += std::string(" ") + b.help;
+  }
+  return names + ": the basis of the transport." + what;
+}
 
 std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
   const std::string albedo =
@@ -88,18 +97,15 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
        "split triangles until no edge is longer than L world units (`2%`: 2 % of the bounding-box diagonal), so "
        "per-vertex transport can show shadows inside large triangles",
        d.max_edge > 0 ? Formatted("%g", double(d.max_edge)) + (d.max_edge_relative ? "%" : "") : "none"});
-  add({"--basis", "B",
-       "sh | wavelet: the basis of the transport. wavelet keeps each vertex's direct light in Haar wavelets on a "
-       "cube (all-frequency: sharp shadows of small bright sources), its bounces in SH at --lmax",
-       d.basis});
+  add({"--basis", "B", BasisHelp(), d.basis->name});
   add({"--cube-size", "F", "wavelet basis: the cube's face size, a power of two from 8 to 64 (6 F^2 texels)",
-       std::to_string(d.cube_size)});
+       std::to_string(d.wavelet.face_size)});
   add({"--wavelet-terms", "N",
        "wavelet basis: coefficients kept per vertex, the 6 faces' means among them, 6..6 F^2 (4 bytes a detail)",
-       std::to_string(d.wavelet_terms)});
+       std::to_string(d.wavelet.budget)});
   add({"--light-terms", "K",
        "wavelet basis: light coefficients kept per frame, the K most important (0: all), 0..6 F^2",
-       d.light_terms ? std::to_string(d.light_terms) : "0 (all)"});
+       d.wavelet.light_terms ? std::to_string(d.wavelet.light_terms) : "0 (all)"});
   return s;
 }
 
@@ -282,22 +288,28 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
       o.max_edge_relative = relative;
     }
   }
-  if (has("--basis")) o.basis = args.Choice("--basis", d.basis, {"sh", "wavelet"});
+  if (has("--basis")) o.basis = FindBasis(args.Choice("--basis", d.basis->name, BasisNames()));
   if (has("--cube-size")) {
-    o.cube_size = args.Int("--cube-size", d.cube_size, 8, 64);
-    if (o.cube_size & (o.cube_size - 1))
-      args.Fail("--cube-size: " + std::to_string(o.cube_size) + " is not a power of two (expected 8, 16, 32 or 64)");
+    o.wavelet.face_size = args.Int("--cube-size", d.wavelet.face_size, 8, kMaxWaveletFace);
+    if (o.wavelet.face_size & (o.wavelet.face_size - 1))
+      args.Fail("--cube-size: " + std::to_string(o.wavelet.face_size) +
+                " is not a power of two (expected 8, 16, 32 or 64)");
   }
-  const int texels = 6 * o.cube_size * o.cube_size;
-  if (has("--wavelet-terms")) o.wavelet_terms = args.Int("--wavelet-terms", d.wavelet_terms, 6, texels);
-  if (has("--light-terms")) o.light_terms = args.Int("--light-terms", d.light_terms, 0, texels);
-  o.wavelet_terms = std::min(o.wavelet_terms, texels);
-  if (o.basis == "wavelet" && o.material.glossy)
-    args.Fail("--basis wavelet: glossy materials are not built in the wavelet basis (--material " + o.material.Name() +
-              "); use --basis sh, or --material diffuse");
-  if (o.basis != "wavelet")
-    for (const char* name : {"--cube-size", "--wavelet-terms", "--light-terms"})
-      if (has(name) && args.Has(name)) args.Fail(std::string(name) + ": applies to --basis wavelet only");
+  const int texels = 6 * o.wavelet.face_size * o.wavelet.face_size;
+  if (has("--wavelet-terms")) o.wavelet.budget = args.Int("--wavelet-terms", d.wavelet.budget, 6, texels);
+  if (has("--light-terms")) o.wavelet.light_terms = args.Int("--light-terms", d.wavelet.light_terms, 0, texels);
+  o.wavelet.budget = std::min(o.wavelet.budget, texels);
+  if (!o.basis->glossy && o.material.glossy)
+    args.Fail("--basis " + std::string(o.basis->name) + ": glossy materials are not built in the " + o.basis->name +
+              " basis (--material " + o.material.Name() + "); use --basis " + DefaultBasis()->name +
+              ", or --material diffuse");
+  // A basis's own options are refused with another basis.
+  for (const Basis& basis : Bases())
+    if (&basis != o.basis)
+      for (const std::string& name : basis.options)
+        if (has(name.c_str()) && args.Has(name) &&
+            std::find(o.basis->options.begin(), o.basis->options.end(), name) == o.basis->options.end())
+          args.Fail(name + ": applies to --basis " + basis.name + " only");
   SetQuiet(args.Flag("--quiet"));
   SetThreadCount(o.threads);
   CheckInputs(args, o);

@@ -13,9 +13,11 @@
 #include <glm/vec3.hpp>
 
 #include "app/args.h"
+#include "app/basis_table.h"
 #include "env/cube_faces.h"
 #include "material/material.h"
 #include "sh/coeffs.h"
+#include "wavelet/options.h"
 
 namespace prt {
 
@@ -54,11 +56,10 @@ struct SceneOptions {
   /// a fraction of the bounding-box diagonal when max_edge_relative.
   double max_edge = 0.0;
   bool max_edge_relative = false;
-  /// --basis: sh | wavelet (all-frequency: direct light in Haar wavelets, precompute/transport_wavelet.h)
-  std::string basis = "sh";
-  int cube_size = 32;        ///< --cube-size: the wavelet cube's face size F
-  int wavelet_terms = 512;   ///< --wavelet-terms: coefficients kept per vertex
-  int light_terms = 0;       ///< --light-terms: light coefficients kept per frame (0: all)
+  /// --basis: the row of app/basis_table.h whose folder stores the transport.
+  const Basis* basis = DefaultBasis();
+  /// The wavelet basis's own options (--cube-size, --wavelet-terms, --light-terms).
+  WaveletOptions wavelet;
 };
 
 /// Every scene option in help order: what `render` takes.

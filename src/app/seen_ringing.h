@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "material/material.h"
+#include "render/render_options.h"
 #include "sh/coeffs.h"
 
 namespace prt {
@@ -50,7 +51,7 @@ struct ShownLight {
 
 /// The convolutions of the light that frames of `view` ("radiance", "irradiance", "glossy",
 /// "light", "albedo", "transport") show with `material`, at bands 0..lmax (table above).
-std::vector<ShownLight> ShownLights(const Material& material, const std::string& view, int lmax);
+std::vector<ShownLight> ShownLights(const Material& material, View view, int lmax);
 
 /// The shown convolution that goes lowest relative to its peak, and whether it rings.
 struct SeenRinging {
@@ -61,6 +62,6 @@ struct SeenRinging {
 };
 
 /// Whether frames of `view` with `material` would show the ringing of `light` (bands 0..lmax).
-SeenRinging FindSeenRinging(const ShRgb& light, const Material& material, const std::string& view);
+SeenRinging FindSeenRinging(const ShRgb& light, const Material& material, View view);
 
 }  // namespace prt

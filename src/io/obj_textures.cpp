@@ -3,7 +3,7 @@
 #include <filesystem>
 
 #include "geometry/mesh_ops.h"
-#include "texture/load_texture.h"
+#include "io/load_texture.h"
 
 namespace prt {
 namespace {

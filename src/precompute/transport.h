@@ -148,7 +148,7 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
 
 /// The light interreflection adds to shadowed transport, alone: ComputeTransport in mode
 /// interreflection (whatever options.mode says; diffuse) minus its own direct part, the same
-/// directions for both. What the wavelet basis takes from SH (transport_wavelet.h).
+/// directions for both. What the wavelet basis takes from SH (wavelet/transport.h).
 Transport ComputeBouncedTransport(const Mesh& mesh, const TransportOptions& options, TransportReport* report);
 
 /// Monte Carlo estimate of the unshadowed transfer from a direction set (weights 4 pi/N), kept

@@ -17,7 +17,6 @@
 #include "geometry/mesh_ops.h"
 #include "io/image_load.h"
 #include "io/png_io.h"
-#include "precompute/shade.h"
 #include "raster/annotate.h"
 #include "raster/exposure.h"
 #include "sh/rotation.h"
@@ -27,31 +26,40 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+/// The transport view needs coefficient `index` of every vertex; a basis without them, or an
+/// index beyond them, is refused (render_args refuses both before any work).
+void CheckViewCoefficient(const FrameLight& light, int index) {
+  if (light.ViewCoefficients() == 0)
+    throw Error("--view transport shows SH coefficients; this transport has none (--basis sh)");
+  if (index < 0 || index >= light.ViewCoefficients())
+    throw Error("--view transport:" + std::to_string(index) + ": the transport has " +
+                std::to_string(light.ViewCoefficients()) + " coefficients per vertex (internal)");
+}
+
 /// Per-vertex colours of the chosen view into `colors`; `scale` is TransportViewScale for the
 /// transport view.
 void ViewColors(const Mesh& mesh, const FrameLight& light, const RenderOptions& o, double scale,
                 const glm::dvec3& eye, std::vector<glm::vec3>& colors) {
-  if (o.view == "irradiance") return light.ShadeInto(mesh, false, nullptr, colors);
-  if (o.view == "albedo") {
+  if (o.view == View::kIrradiance) return light.ShadeInto(mesh, false, nullptr, colors);
+  if (o.view == View::kAlbedo) {
     colors = mesh.albedo;
     return;
   }
-  if (o.view == "glossy") {
+  if (o.view == View::kGlossy) {
     colors = light.Glossy(mesh, &eye);
     return;
   }
   colors.resize(mesh.vertex_count());
-  if (o.view == "light") {
+  if (o.view == View::kLight) {
     for (std::size_t v = 0; v < colors.size(); ++v) colors[v] = light.Kept(glm::dvec3(mesh.normals[v]));
     return;
   }
-  if (o.view == "transport") {
-    const Transport* transport = light.ShTransport();
-    if (!transport) throw Error("--view transport shows SH coefficients; this transport has none (--basis sh)");
+  if (o.view == View::kTransport) {
+    CheckViewCoefficient(light, o.transport_index);
     const double s = scale > 0 ? scale : 1.0;
     for (std::size_t v = 0; v < colors.size(); ++v) {
       // Palette colours are display values: decode them so the sRGB tone curve restores them.
-      const glm::vec3 c = DivergingColor(transport->at(v, 0)[o.transport_index] / s);
+      const glm::vec3 c = DivergingColor(light.Coefficient(v, o.transport_index) / s);
       colors[v] = glm::vec3(SrgbToLinear(c.x), SrgbToLinear(c.y), SrgbToLinear(c.z));
     }
     return;
@@ -108,17 +116,16 @@ const RasterImage& FrameDrawer::Draw(const Mesh& mesh, FrameLight& light, const 
   light.Turn(angle);
   // A textured mesh is shaded per pixel: the texture's albedo times the interpolated irradiance
   // (the vertex colour without albedo), plus a glossy lobe, which the albedo does not scale.
-  const bool textured = mesh.textured() && (o.view == "radiance" || o.view == "albedo");
+  const bool textured = mesh.textured() && (o.view == View::kRadiance || o.view == View::kAlbedo);
   added_.clear();
   if (!textured) {
     ViewColors(mesh, light, o, view_scale, glm::dvec3(camera.eye), colors_);
-  } else if (o.view == "albedo") {
+  } else if (o.view == View::kAlbedo) {
     colors_.assign(mesh.vertex_count(), glm::vec3(1.f));
   } else {
     const glm::dvec3 eye(camera.eye);
     light.ShadeInto(mesh, false, nullptr, colors_);
-    const Transport* sh = light.ShTransport();
-    if (sh && sh->material.glossy) added_ = light.Glossy(mesh, &eye);
+    if (light.HasGlossy()) added_ = light.Glossy(mesh, &eye);
   }
   RasterTexturing texturing{&mesh.corner_uv, &mesh.triangle_texture, &mesh.textures, added_.empty() ? nullptr : &added_};
   RasterOptions ro;
@@ -128,9 +135,9 @@ const RasterImage& FrameDrawer::Draw(const Mesh& mesh, FrameLight& light, const 
   ro.tone_map = tone;
   ro.tone_mapped = toned;
   ro.keep_linear = false;  // with tone mapping asked for, only the 8-bit frame is needed
-  if (o.view == "transport") {
+  if (o.view == View::kTransport) {
     ro.background.color = glm::vec3(static_cast<float>(SrgbToLinear(0.5f)));  // neutral grey: no colour to confuse with T
-  } else if (o.view == "light") {
+  } else if (o.view == View::kLight) {
     ro.background.radiance = [&light](const glm::vec3& d) { return light.Kept(glm::dvec3(d)); };
   } else if (o.env_background) {
     const glm::mat3 inverse(glm::transpose(AxisAngle(glm::normalize(o.axis), angle)));
@@ -146,15 +153,8 @@ const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, Fram
   return drawer.Draw(mesh, light, env, camera, o, angle, view_scale);
 }
 
-const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport,
-                                  const ShRgb& light, const Environment& env,
-                                  const Camera& camera, const RenderOptions& o, double angle, double view_scale) {
-  const auto sh = MakeShFrameLight(transport, light, o.axis);
-  return RasterizeFrame(rasterizer, mesh, *sh, env, camera, o, angle, view_scale);
-}
-
 ToneMapOptions FrameToneMap(const RenderOptions& o, double exposure_ev) {
-  if (o.view == "transport") return ToneMapOptions{};  // false colours pass through unchanged
+  if (o.view == View::kTransport) return ToneMapOptions{};  // false colours pass through unchanged
   ToneMapOptions tone;
   tone.curve = o.tonemap;
   tone.exposure_ev = float(exposure_ev);
@@ -162,7 +162,7 @@ ToneMapOptions FrameToneMap(const RenderOptions& o, double exposure_ev) {
 }
 
 void FinishFrame(Image8& image, const RenderOptions& o, double view_scale) {
-  if (o.view == "transport") DrawDivergingLegend(image, view_scale, "T" + std::to_string(o.transport_index));
+  if (o.view == View::kTransport) DrawDivergingLegend(image, view_scale, "T" + std::to_string(o.transport_index));
 }
 
 ToneMapped ToneMapFrame(const RasterImage& frame, const RenderOptions& o, double exposure_ev, double view_scale) {
@@ -171,19 +171,17 @@ ToneMapped ToneMapFrame(const RasterImage& frame, const RenderOptions& o, double
   return mapped;
 }
 
-double TransportViewScale(const Transport& transport, int index) {
+double TransportViewScale(const FrameLight& light, std::size_t vertices, int index) {
+  CheckViewCoefficient(light, index);
   double scale = 0.0;
-  for (std::size_t v = 0; v < transport.vertices; ++v)
-    scale = std::max(scale, double(std::abs(transport.at(v, 0)[index])));
+  for (std::size_t v = 0; v < vertices; ++v) scale = std::max(scale, std::abs(light.Coefficient(v, index)));
   return scale;
 }
 
-ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                     const Environment& env, const Camera& camera,
-                     const RenderOptions& o, double angle, double exposure_ev) {
-  const double scale = o.view == "transport" ? TransportViewScale(transport, o.transport_index) : 0.0;
-  const auto sh = MakeShFrameLight(transport, light, o.axis);
-  return ToneMapFrame(RasterizeFrame(rasterizer, mesh, *sh, env, camera, o, angle, scale), o, exposure_ev, scale);
+ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, FrameLight& light, const Environment& env,
+                     const Camera& camera, const RenderOptions& o, double angle, double exposure_ev) {
+  const double scale = o.view == View::kTransport ? TransportViewScale(light, mesh.vertex_count(), o.transport_index) : 0.0;
+  return ToneMapFrame(RasterizeFrame(rasterizer, mesh, light, env, camera, o, angle, scale), o, exposure_ev, scale);
 }
 
 FrameStats RenderFrames(const Mesh& mesh, FrameLight& light, const Environment& env, const Camera& camera,
@@ -191,10 +189,8 @@ FrameStats RenderFrames(const Mesh& mesh, FrameLight& light, const Environment& 
   FrameStats stats;
   stats.frames = o.frames;
   Rasterizer rasterizer;
-  const bool transport_view = o.view == "transport";
-  const Transport* sh = light.ShTransport();
-  if (transport_view && !sh) throw Error("--view transport shows SH coefficients; this transport has none (--basis sh)");
-  const double view_scale = transport_view ? TransportViewScale(*sh, o.transport_index) : 0.0;
+  const bool transport_view = o.view == View::kTransport;
+  const double view_scale = transport_view ? TransportViewScale(light, mesh.vertex_count(), o.transport_index) : 0.0;
   stats.legend_left_out =
       transport_view && !LayoutDivergingLegend(o.width, o.height, view_scale, "T" + std::to_string(o.transport_index));
   // The automatic exposure is measured on frame 0 (its light at angle 0) and used for all frames.

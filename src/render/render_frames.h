@@ -4,7 +4,7 @@
 ///     a_i = 2 pi * turns * i / N
 /// about the axis (from the absolute angle: no drift) and the camera by orbit * i / N degrees
 /// about its target (raster/camera.h, Orbit), the vertices are shaded by their transport in its
-/// basis (frame_light.h), the mesh is rasterized over the environment
+/// basis (basis/frame_light.h), the mesh is rasterized over the environment
 /// turned by the same rotation, tone-mapped, and written as DIR/frame_NNNN.png (four digits, more
 /// when N needs them, so names sort in frame order), and appended to the video if one is asked
 /// for. Encoding frame i overlaps drawing i+1.
@@ -13,17 +13,14 @@
 #include <string>
 #include <vector>
 
+#include "basis/frame_light.h"
 #include "core/output_folder.h"
 #include "env/environment.h"
 #include "geometry/mesh.h"
-#include "precompute/transport.h"
 #include "raster/camera.h"
 #include "raster/rasterizer.h"
 #include "raster/tonemap.h"
-#include "render/frame_light.h"
 #include "render/render_options.h"
-#include "sh/axis_rotation.h"
-#include "sh/coeffs.h"
 #include "video/video_writer.h"
 
 namespace prt {
@@ -37,8 +34,9 @@ struct FrameStats {
   bool legend_left_out = false;     ///< transport view: the frame is too small for a readable legend
 };
 
-/// The largest |T_index| over the vertices: the ends of the transport view's colour scale.
-double TransportViewScale(const Transport& transport, int index);
+/// The largest |T_index| over the first `vertices` vertices (FrameLight::Coefficient): the ends
+/// of the transport view's colour scale.
+double TransportViewScale(const FrameLight& light, std::size_t vertices, int index);
 
 /// The camera of the options: what they give, the rest from automatic framing of the mesh
 /// (raster/camera.h, fitted to its projected vertices), clip planes fitted to the mesh. When no
@@ -75,12 +73,6 @@ class FrameDrawer {
 const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, FrameLight& light, const Environment& env,
                                   const Camera& camera, const RenderOptions& options, double angle, double view_scale);
 
-/// The same for an SH transport, its light turned about options.axis.
-const RasterImage& RasterizeFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport,
-                                  const ShRgb& light, const Environment& env,
-                                  const Camera& camera, const RenderOptions& options, double angle,
-                                  double view_scale);
-
 /// How the frames of `options` are tone mapped at `exposure_ev` (the transport view: passed
 /// through unchanged).
 ToneMapOptions FrameToneMap(const RenderOptions& options, double exposure_ev);
@@ -94,9 +86,8 @@ ToneMapped ToneMapFrame(const RasterImage& frame, const RenderOptions& options, 
 
 /// One frame, RasterizeFrame then ToneMapFrame (for tests: RenderFrames does the same once per
 /// frame, with the scale computed once).
-ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, const Transport& transport, const ShRgb& light,
-                     const Environment& env, const Camera& camera,
-                     const RenderOptions& options, double angle, double exposure_ev);
+ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, FrameLight& light, const Environment& env,
+                     const Camera& camera, const RenderOptions& options, double angle, double exposure_ev);
 
 /// Renders all frames into `folder`, each named through folder.Output(), and hands each to
 /// `video` (if given) once its PNG is encoded; the automatic exposure (raster/exposure.h) is

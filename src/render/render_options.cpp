@@ -1,6 +1,28 @@
 #include "render/render_options.h"
 
+#include <utility>
+
 namespace prt {
+namespace {
+
+constexpr std::pair<View, const char*> kViews[] = {
+    {View::kRadiance, "radiance"}, {View::kIrradiance, "irradiance"}, {View::kAlbedo, "albedo"},
+    {View::kTransport, "transport"}, {View::kLight, "light"}, {View::kGlossy, "glossy"},
+};
+
+}  // namespace
+
+const char* ViewName(View view) {
+  for (const auto& [v, name] : kViews)
+    if (v == view) return name;
+  return "radiance";
+}
+
+std::optional<View> ViewFromName(const std::string& name) {
+  for (const auto& [v, word] : kViews)
+    if (name == word) return v;
+  return std::nullopt;
+}
 
 RenderOptions WithDemoCamera(RenderOptions o) {
   o.eye = glm::dvec3(6.0, 3.2, 9.0);

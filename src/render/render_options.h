@@ -13,6 +13,21 @@
 
 namespace prt {
 
+/// What a frame shows (--view).
+enum class View {
+  kRadiance,    ///< the final colour
+  kIrradiance,  ///< as if every albedo were 1 and the material diffuse
+  kAlbedo,      ///< the albedo alone
+  kTransport,   ///< transfer coefficient transport_index in false colour
+  kLight,       ///< the light as the basis keeps it
+  kGlossy,      ///< a glossy material's lobe term alone
+};
+
+/// The --view word of `view` ("transport" without its index).
+const char* ViewName(View view);
+/// The view called `name` (ViewName's words), or nullopt.
+std::optional<View> ViewFromName(const std::string& name);
+
 struct RenderOptions {
   int frames = 120;
   int width = 640, height = 480;
@@ -30,10 +45,7 @@ struct RenderOptions {
   int ssaa = 2;
   std::optional<glm::dvec3> eye, target, up;
   std::optional<double> fov;
-  /// What to draw: radiance (the final colour), irradiance (albedo 1), albedo, transport (the
-  /// coefficient transport_index in false colour), light (the SH-reconstructed light) or glossy
-  /// (a glossy material's lobe term alone).
-  std::string view = "radiance";
+  View view = View::kRadiance;  ///< what to draw (View)
   int transport_index = 0;
   /// The transport cache to reuse and update: empty for "DIR/transport.cache", "none" for none.
   std::string cache;

@@ -9,10 +9,11 @@
 #include "precompute/light.h"
 #include "precompute/sample_rule.h"
 #include "precompute/shade.h"
-#include "report/markdown_table.h"
 #include "raster/exposure.h"
+#include "report/markdown_table.h"
 #include "render/render_frames.h"
 #include "render/seen_vertices.h"
+#include "sh_basis/frame_light.h"
 
 namespace prt {
 
@@ -33,7 +34,8 @@ Image8 NoiseFrame(const Mesh& mesh, const Transport& transport, const ShRgb& lig
                   const RenderOptions& picture, std::optional<double>& ev) {
   Rasterizer rasterizer;
   const Camera camera = ChooseCamera(mesh, picture);
-  const RasterImage& frame = RasterizeFrame(rasterizer, mesh, transport, light, env, camera, picture, 0.0, 1.0);
+  const auto sh = MakeShFrameLight(transport, light, picture.axis);
+  const RasterImage& frame = RasterizeFrame(rasterizer, mesh, *sh, env, camera, picture, 0.0, 1.0);
   if (!ev) ev = AutoExposureEv(frame, picture.tonemap);
   return ToneMapFrame(frame, picture, *ev, 1.0).image;
 }

@@ -12,8 +12,8 @@
 #include "precompute/light.h"
 #include "precompute/reference.h"
 #include "precompute/shade.h"
-#include "precompute/shade_wavelet.h"
-#include "precompute/transport_wavelet.h"
+#include "wavelet/shade.h"
+#include "wavelet/transport.h"
 #include "report/report_sweep.h"
 #include "wavelet/light_cube.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The basis section of `prt report --basis wavelet`: spherical harmonics against Haar wavelets
-/// (all-frequency PRT [1], precompute/transport_wavelet.h) on one scene, each scored against
+/// (all-frequency PRT [1], wavelet/transport.h) on one scene, each scored against
 /// prt reference's ground truth (precompute/reference.h) by the per-vertex relative RMS error of
 /// the outgoing radiance, beside what it costs: the transport's memory per vertex and its
 /// precompute time. Per transport mode (shadowed; with the full report interreflection too):
@@ -35,7 +35,7 @@
 #include "geometry/mesh.h"
 #include "precompute/error_metrics.h"
 #include "precompute/transport.h"
-#include "precompute/transport_wavelet.h"
+#include "wavelet/transport.h"
 #include "report/stability.h"
 #include "wavelet/selection.h"
 

@@ -58,7 +58,7 @@ std::string WaveletMarkdown(const WaveletStudy& d) {
                  "most important coefficients (N the budget, the six faces' means among them; %s-weighted; zeros "
                  "never kept, so a vertex may keep fewer); memory as the transport stores them (the means as "
                  "floats, each other coefficient a 16-bit index and a 16-bit value, a step and an offset per "
-                 "vertex: precompute/transport_wavelet.h)",
+                 "vertex: wavelet/transport.h)",
                  c.face_size, c.split * c.split, SelectionName(c.selection)) +
        Formatted("; with interreflection the bounced light in SH at lmax %d from %d directions, its 3 x %d floats "
                  "counted in the bytes. ",

@@ -7,7 +7,7 @@
 ///   L_t = (1 / Omega_t) integral over texel t of L(R^T w) dw,
 ///
 /// so that sum_t L_t T_t is the integral of the light times a transport T_t that is itself an
-/// integral over the texel (precompute/transport_wavelet.h). Two parts, each kept exact where
+/// integral over the texel (transport.h). Two parts, each kept exact where
 /// it matters:
 ///   - the radiance the environment's grid resolves (RadianceWithoutDisks) is averaged over
 ///     `split` x `split` sub-squares of every texel, each weighted by its exact solid angle, so a

@@ -44,18 +44,18 @@ TEST_SUITE("app") {
   TEST_CASE("ShownLights: each view shows the convolutions its frames draw, and only those") {
     const Material diffuse, glossy = ParseMaterial("phong:50,0.3"), no_coat = ParseMaterial("phong:50,0");
     using V = std::vector<std::string>;
-    CHECK(Names(ShownLights(diffuse, "radiance", 4)) == V{kIrradiance});
-    CHECK(Names(ShownLights(glossy, "radiance", 4)) == V{kIrradiance, kLobe});
+    CHECK(Names(ShownLights(diffuse, View::kRadiance, 4)) == V{kIrradiance});
+    CHECK(Names(ShownLights(glossy, View::kRadiance, 4)) == V{kIrradiance, kLobe});
     // The irradiance view leaves the lobe out (albedo 1, diffuse): catches a lobe added there.
-    CHECK(Names(ShownLights(glossy, "irradiance", 4)) == V{kIrradiance});
-    CHECK(Names(ShownLights(glossy, "glossy", 4)) == V{kLobe});
-    CHECK(Names(ShownLights(diffuse, "glossy", 4)).empty());
-    CHECK(Names(ShownLights(no_coat, "radiance", 4)) == V{kIrradiance});  // KS 0 shows no lobe
-    CHECK(Names(ShownLights(glossy, "light", 4)) == V{kLight});
-    CHECK(ShownLights(glossy, "albedo", 4).empty());
-    CHECK(ShownLights(glossy, "transport", 4).empty());
+    CHECK(Names(ShownLights(glossy, View::kIrradiance, 4)) == V{kIrradiance});
+    CHECK(Names(ShownLights(glossy, View::kGlossy, 4)) == V{kLobe});
+    CHECK(Names(ShownLights(diffuse, View::kGlossy, 4)).empty());
+    CHECK(Names(ShownLights(no_coat, View::kRadiance, 4)) == V{kIrradiance});  // KS 0 shows no lobe
+    CHECK(Names(ShownLights(glossy, View::kLight, 4)) == V{kLight});
+    CHECK(ShownLights(glossy, View::kAlbedo, 4).empty());
+    CHECK(ShownLights(glossy, View::kTransport, 4).empty());
     // The kernels: the lobe's zonal coefficients h_0 = 52/51, h_1 = 1 for N = 50.
-    const std::vector<ShownLight> shown = ShownLights(glossy, "glossy", 1);
+    const std::vector<ShownLight> shown = ShownLights(glossy, View::kGlossy, 1);
     REQUIRE(shown.size() == 1);
     const std::vector<double>& lobe = shown[0].kernel;
     REQUIRE(lobe.size() == 2);
@@ -66,28 +66,28 @@ TEST_SUITE("app") {
   TEST_CASE("FindSeenRinging: 1 + 1.2 z rings as itself and through a sharp lobe, not as irradiance") {
     const ShRgb light = Linear(1.0, 1.2);  // lowest -0.2 at the south pole
     // Seen as itself (--view light): it rings.
-    const SeenRinging itself = FindSeenRinging(light, Material{}, "light");
+    const SeenRinging itself = FindSeenRinging(light, Material{}, View::kLight);
     CHECK(itself.rings);
     CHECK(itself.what == kLight);
     CHECK(itself.lowest == doctest::Approx(-0.2).epsilon(kSearchTolerance));
     CHECK(itself.peak == doctest::Approx(2.2).epsilon(kSearchTolerance));
     // A diffuse surface shows pi - 0.8 pi > 0: no window. Catches a rule that checks the light
     // itself whatever the view.
-    const SeenRinging diffuse = FindSeenRinging(light, Material{}, "radiance");
+    const SeenRinging diffuse = FindSeenRinging(light, Material{}, View::kRadiance);
     CHECK_FALSE(diffuse.rings);
     CHECK(diffuse.what == kIrradiance);
     CHECK(diffuse.lowest == doctest::Approx(0.2 * kPi).epsilon(kSearchTolerance));
     // phong:50 shows 52/51 - 1.2 < 0 through its lobe, though the irradiance stays positive: the
     // lobe is the worst of the two. Catches a rule that looks at the irradiance alone.
-    const SeenRinging coat = FindSeenRinging(light, ParseMaterial("phong:50,0.3"), "radiance");
+    const SeenRinging coat = FindSeenRinging(light, ParseMaterial("phong:50,0.3"), View::kRadiance);
     CHECK(coat.rings);
     CHECK(coat.what == kLobe);
     CHECK(coat.lowest == doctest::Approx(52.0 / 51.0 - 1.2).epsilon(kSearchTolerance));
     CHECK(coat.peak == doctest::Approx(52.0 / 51.0 + 1.2).epsilon(kSearchTolerance));
     // phong:1 is broad (h_0 = 3/2): 1.5 - 1.2 > 0. Catches "glossy, so always a window".
-    CHECK_FALSE(FindSeenRinging(light, ParseMaterial("phong:1,0.3"), "radiance").rings);
+    CHECK_FALSE(FindSeenRinging(light, ParseMaterial("phong:1,0.3"), View::kRadiance).rings);
     // Views without light decide nothing.
-    const SeenRinging albedo = FindSeenRinging(light, Material{}, "albedo");
+    const SeenRinging albedo = FindSeenRinging(light, Material{}, View::kAlbedo);
     CHECK_FALSE(albedo.rings);
     CHECK(albedo.what.empty());
   }
@@ -102,10 +102,10 @@ TEST_SUITE("app") {
     for (double scale : {1e-6, 1.0, 1e6}) {
       CAPTURE(scale);
       // A tenth of the tolerance below zero: rounding-level, no ringing. Catches a tolerance of 0.
-      CHECK_FALSE(FindSeenRinging(light_with_share(0.1 * kSeenRingingTolerance, scale), Material{}, "light").rings);
+      CHECK_FALSE(FindSeenRinging(light_with_share(0.1 * kSeenRingingTolerance, scale), Material{}, View::kLight).rings);
       // Ten times it: ringing. Catches a tolerance in absolute units (wrong at 1e-6 or 1e6) or one
       // far looser than documented.
-      CHECK(FindSeenRinging(light_with_share(10.0 * kSeenRingingTolerance, scale), Material{}, "light").rings);
+      CHECK(FindSeenRinging(light_with_share(10.0 * kSeenRingingTolerance, scale), Material{}, View::kLight).rings);
     }
   }
 }

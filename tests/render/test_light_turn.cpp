@@ -16,6 +16,7 @@
 #include "precompute/transport.h"
 #include "render/render_frames.h"
 #include "sh/axis_rotation.h"
+#include "sh_basis/frame_light.h"
 #include "tests/sh/sh_test_util.h"
 
 namespace prt {
@@ -67,12 +68,12 @@ TEST_SUITE("render") {
         const Camera camera = ChooseCamera(mesh, o);
         for (double angle : {1.1, -2.0}) {
           Rasterizer rasterizer;
-          o.view = "light";
-          const RasterImage sh = RasterizeFrame(rasterizer, mesh, transport, light, env, camera, o, angle, 0.0);
+          o.view = View::kLight;
+          const RasterImage sh = RasterizeFrame(rasterizer, mesh, *MakeShFrameLight(transport, light, o.axis), env, camera, o, angle, 0.0);
           Rasterizer rasterizer2;
-          o.view = "radiance";
+          o.view = View::kRadiance;
           o.env_background = true;
-          const RasterImage drawn = RasterizeFrame(rasterizer2, mesh, transport, light, env, camera, o, angle, 0.0);
+          const RasterImage drawn = RasterizeFrame(rasterizer2, mesh, *MakeShFrameLight(transport, light, o.axis), env, camera, o, angle, 0.0);
           double worst = 0.0;
           std::size_t background = 0;
           for (std::size_t i = 0; i < sh.image.pixels.size(); ++i) {

@@ -15,6 +15,7 @@
 #include "raster/tonemap.h"
 #include "render/render_frames.h"
 #include "sh/rotation.h"
+#include "sh_basis/frame_light.h"
 #include "tests/golden.h"
 #include "tests/test_support.h"
 
@@ -61,8 +62,8 @@ Scene MakeScene(TransportMode mode, int lmax, const std::string& material = "dif
 
 Image8 Draw(const Scene& s, const RenderOptions& o, double angle) {
   Rasterizer r;
-  return DrawFrame(r, s.mesh, s.transport, s.light, *s.env,
-                   ChooseCamera(s.mesh, o), o, angle, *o.exposure)
+  const auto light = MakeShFrameLight(s.transport, s.light, o.axis);
+  return DrawFrame(r, s.mesh, *light, *s.env, ChooseCamera(s.mesh, o), o, angle, *o.exposure)
       .image;
 }
 

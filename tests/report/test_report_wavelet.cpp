@@ -11,7 +11,7 @@
 #include "core/atomic_file.h"
 #include "env/procedural.h"
 #include "io/png_io.h"
-#include "precompute/transport_wavelet.h"
+#include "wavelet/transport.h"
 #include "report/report_wavelet.h"
 #include "sh/coeffs.h"
 #include "tests/test_support.h"

@@ -8,10 +8,10 @@
 #include "core/error.h"
 #include "io/hdr_writer.h"
 #include "io/image_load.h"
+#include "io/load_texture.h"
 #include "io/png_io.h"
-#include "tests/test_support.h"
-#include "texture/load_texture.h"
 #include "texture/texture.h"
+#include "tests/test_support.h"
 
 using namespace prt;
 

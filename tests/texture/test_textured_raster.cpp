@@ -24,6 +24,7 @@
 #include "raster/tonemap.h"
 #include "render/render_frames.h"
 #include "sh/axis_rotation.h"
+#include "sh_basis/frame_light.h"
 #include "tests/golden.h"
 #include "tests/test_support.h"
 
@@ -253,8 +254,7 @@ Image8 DrawScene(const Mesh& mesh, const Environment& env, const RenderOptions& 
   const Transport transport = ComputeTransport(mesh, t, nullptr);
   const ShRgb light = ProjectLight(env, 2);
   Rasterizer r;
-  return DrawFrame(r, mesh, transport, light, env, ChooseCamera(mesh, o), o,
-                   0.0, *o.exposure)
+  return DrawFrame(r, mesh, *MakeShFrameLight(transport, light, o.axis), env, ChooseCamera(mesh, o), o, 0.0, *o.exposure)
       .image;
 }
 

@@ -1,39 +1,20 @@
-// The frame's light per basis (render/frame_light.h): each is what its own pieces give, turned
-// by the same rotation.
+// The wavelet basis's frame light (wavelet/frame_light.h): the turned sky resampled onto the cube,
+// cut to K terms, shaded as its own pieces shade it.
 #include <doctest/doctest.h>
 
 #include <cmath>
 
 #include "env/procedural.h"
 #include "geometry/procedural.h"
-#include "precompute/light.h"
-#include "precompute/shade.h"
-#include "precompute/shade_wavelet.h"
-#include "render/frame_light.h"
-#include "sh/axis_rotation.h"
 #include "sh/rotation.h"
+#include "wavelet/cube_grid.h"
+#include "wavelet/frame_light.h"
+#include "wavelet/light_cube.h"
+#include "wavelet/shade.h"
 
 namespace prt {
 
-TEST_SUITE("render") {
-  TEST_CASE("frame light: SH is the band-rotated light dotted with each transfer vector") {
-    const Mesh mesh = MakeSphere(16);
-    TransportOptions o;
-    o.mode = TransportMode::kUnshadowed;
-    o.lmax = 3;
-    const Transport t = ComputeTransport(mesh, o, nullptr);
-    const auto sky = MakeSky(SkyParams{});
-    const ShRgb light = ProjectLight(*sky, 6);  // more bands than the transport: the first are used
-    const glm::dvec3 axis(0.3, 1.0, 0.2);
-    const auto frame = MakeShFrameLight(t, light, axis);
-    frame->Turn(0.8);
-    const ShRgb turned = AxisRotation(axis, 3).Rotate(FirstBands(light, 3), 0.8);
-    const auto got = frame->Shade(mesh, true, nullptr), expected = ShadeVertices(mesh, t, turned, true);
-    for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
-      for (int c = 0; c < 3; ++c) CHECK(got[v][c] == expected[v][c]);
-    CHECK(frame->ShTransport() == &t);
-  }
-
+TEST_SUITE("wavelet") {
   TEST_CASE("frame light: wavelets resample the turned sky, keep K light terms and show what they keep") {
     const Mesh mesh = MakeSphere(12);
     TransportOptions o;
@@ -67,7 +48,9 @@ TEST_SUITE("render") {
     for (std::size_t texel = 0; texel < grid.texels(); ++texel)
       differ += std::abs(all->Kept(grid.Direction(texel)).y - frame->Kept(grid.Direction(texel)).y);
     CHECK(differ > 0.01);
-    CHECK(frame->ShTransport() == nullptr);
+    // No SH coefficients for the transport view, and no lobe.
+    CHECK(frame->ViewCoefficients() == 0);
+    CHECK_FALSE(frame->HasGlossy());
   }
 }
 

@@ -1,13 +1,14 @@
-// ComputeSceneWavelets (pipeline.h): the wavelet transport of --basis wavelet and its summary.
+#include "wavelet/summary.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 
-#include "app/pipeline.h"
 #include "core/log.h"
 #include "core/text.h"
-#include "precompute/shade_wavelet.h"
+#include "precompute/bounce_summary.h"
 #include "wavelet/light_cube.h"
+#include "wavelet/shade.h"
 
 namespace prt {
 namespace {
@@ -30,15 +31,8 @@ double TruncationCost(const WaveletTransport& t, const Environment& env, int lig
 
 }  // namespace
 
-WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const SceneOptions& options, const Environment& env,
-                                      const std::vector<std::uint8_t>& seen) {
-  TransportOptions sh = TransportOptionsOf(options);
-  sh.seen = seen;
-  WaveletOptions w;
-  w.face_size = options.cube_size;
-  w.budget = options.wavelet_terms;
-  w.selection = WaveletOptions{}.selection;
-  w.light_terms = options.light_terms;
+WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const TransportOptions& sh, const WaveletOptions& w,
+                                      const Environment& env) {
   TransportReport r;
   const WaveletTransport t = ComputeWaveletTransport(mesh, sh, w, &r);
   const std::size_t texels = std::size_t(6) * w.face_size * w.face_size;
@@ -47,7 +41,7 @@ WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const SceneOptions& opti
                      std::to_string(w.face_size) + "^2 texels (--cube-size " + std::to_string(w.face_size) + ")" +
                      Formatted(" [%.3f s]", t.seconds) + "; ";
   std::size_t hidden = 0;
-  for (std::uint8_t s : seen) hidden += s == 0;
+  for (std::uint8_t s : sh.seen) hidden += s == 0;
   if (sh.mode == TransportMode::kUnshadowed) {
     line += "no rays (nothing blocks); ";
   } else {
@@ -64,8 +58,8 @@ WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const SceneOptions& opti
   Summary(line);
   Summary("wavelet truncation: frame 0's direct light at " + std::to_string(t.probes.size()) +
           " sample vertices differs from their unkept transport's by " +
-          Formatted("%.3g%%", 100.0 * TruncationCost(t, env, options.light_terms)) + " RMS (relative)" +
-          (options.light_terms > 0 ? ", the light kept to its " + std::to_string(options.light_terms) +
+          Formatted("%.3g%%", 100.0 * TruncationCost(t, env, w.light_terms)) + " RMS (relative)" +
+          (w.light_terms > 0 ? ", the light kept to its " + std::to_string(w.light_terms) +
                                          " most important coefficients (--light-terms)"
                                    : ", every light coefficient used (--light-terms 0)"));
   if (sh.mode == TransportMode::kInterreflection) {

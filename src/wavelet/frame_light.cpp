@@ -1,58 +1,14 @@
-#include "render/frame_light.h"
+#include "wavelet/frame_light.h"
 
 #include <glm/geometric.hpp>
 
-#include "core/error.h"
-#include "precompute/shade.h"
-#include "sh/basis.h"
-#include "sh/rotation.h"
+#include "sh/axis_rotation.h"
+#include "wavelet/cube_grid.h"
+#include "wavelet/light_cube.h"
+#include "wavelet/shade.h"
 
 namespace prt {
 namespace {
-
-class ShFrameLight : public FrameLight {
- public:
-  ShFrameLight(const Transport& transport, const ShRgb& light, const glm::dvec3& axis, const CpcaTransfer* cpca)
-      : transport_(transport), cpca_(cpca), light_(FirstBands(light, transport.lmax)), rotation_(axis, transport.lmax),
-        lit_(light_) {}
-
-  void Turn(double angle) override { lit_ = rotation_.Rotate(light_, angle); }
-  std::vector<glm::vec3> Shade(const Mesh& mesh, bool albedo, const glm::dvec3* eye) const override {
-    if (cpca_ && albedo && transport_.material.glossy) return ShadeVerticesCpca(mesh, transport_, *cpca_, lit_, albedo, Eye(eye));
-    return ShadeVertices(mesh, transport_, lit_, albedo, eye);
-  }
-  void ShadeInto(const Mesh& mesh, bool albedo, const glm::dvec3* eye, std::vector<glm::vec3>& out) const override {
-    if (albedo && transport_.material.glossy) {  // the lobe's shading has its own buffers
-      out = Shade(mesh, albedo, eye);
-      return;
-    }
-    ShadeVerticesInto(mesh, transport_, lit_, albedo, eye, out);
-  }
-  std::vector<glm::vec3> Glossy(const Mesh& mesh, const glm::dvec3* eye) const override {
-    if (cpca_) return GlossyFromCpca(mesh, *cpca_, transport_.material, lit_, Eye(eye));
-    return ShadeGlossy(mesh, transport_, lit_, eye);
-  }
-  glm::vec3 Kept(const glm::dvec3& d) const override {
-    double y[CoeffCount(kMaxLmax)];
-    EvalBasis(transport_.lmax, d, y);
-    glm::dvec3 sum(0.0);
-    for (std::size_t k = 0; k < lit_.size(); ++k) sum += y[k] * lit_[k];
-    return glm::vec3(sum);
-  }
-  const Transport* ShTransport() const override { return &transport_; }
-
- private:
-  static const glm::dvec3& Eye(const glm::dvec3* eye) {
-    if (!eye) throw Error("shading by compressed transfer matrices needs the camera's eye (internal)");
-    return *eye;
-  }
-
-  const Transport& transport_;
-  const CpcaTransfer* cpca_;
-  ShRgb light_;
-  AxisRotation rotation_;
-  ShRgb lit_;
-};
 
 class WaveletFrameLight : public FrameLight {
  public:
@@ -84,7 +40,9 @@ class WaveletFrameLight : public FrameLight {
     const std::size_t t = grid_.TexelOf(d);
     return glm::vec3(float(kept_.c[0][t]), float(kept_.c[1][t]), float(kept_.c[2][t]));
   }
-  const Transport* ShTransport() const override { return nullptr; }
+  bool HasGlossy() const override { return false; }
+  int ViewCoefficients() const override { return 0; }
+  double Coefficient(std::size_t, int) const override { return 0.0; }
 
  private:
   const WaveletTransport& transport_;
@@ -101,11 +59,6 @@ class WaveletFrameLight : public FrameLight {
 };
 
 }  // namespace
-
-std::unique_ptr<FrameLight> MakeShFrameLight(const Transport& transport, const ShRgb& light, const glm::dvec3& axis,
-                                             const CpcaTransfer* cpca) {
-  return std::make_unique<ShFrameLight>(transport, light, axis, cpca);
-}
 
 std::unique_ptr<FrameLight> MakeWaveletFrameLight(const WaveletTransport& transport, const Environment& env,
                                                   const ShRgb& sh_light, const glm::dvec3& axis, int light_terms,

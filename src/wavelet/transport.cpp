@@ -1,4 +1,4 @@
-#include "precompute/transport_wavelet.h"
+#include "wavelet/transport.h"
 
 #include <algorithm>
 #include <atomic>

@@ -1,4 +1,4 @@
-#include "texture/load_texture.h"
+#include "io/load_texture.h"
 
 #include <cmath>
 

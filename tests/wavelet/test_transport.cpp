@@ -1,5 +1,5 @@
-// Transport in the Haar wavelet basis (precompute/transport_wavelet.h) and its shading
-// (precompute/shade_wavelet.h): the white furnace exactly, one texel of light, agreement with
+// Transport in the Haar wavelet basis (wavelet/transport.h) and its shading
+// (wavelet/shade.h): the white furnace exactly, one texel of light, agreement with
 // prt reference under a sun, the SH bounces, and the same bytes for any thread count.
 #include <doctest/doctest.h>
 
@@ -15,8 +15,8 @@
 #include "precompute/light.h"
 #include "precompute/reference.h"
 #include "precompute/shade.h"
-#include "precompute/shade_wavelet.h"
-#include "precompute/transport_wavelet.h"
+#include "wavelet/shade.h"
+#include "wavelet/transport.h"
 #include "tests/test_support.h"
 #include "wavelet/light_cube.h"
 
@@ -49,7 +49,7 @@ Mesh SunScene() {
 
 }  // namespace
 
-TEST_SUITE("precompute") {
+TEST_SUITE("wavelet") {
   TEST_CASE("wavelet transport: white furnace, nothing blocking: the radiance is the albedo exactly") {
     // A sphere blocks none of its own directions. Truncated to a few terms, each vertex still
     // keeps its faces' scaling coefficients, which are all a constant light has.

@@ -1,12 +1,12 @@
 #pragma once
 /// \file
-/// Shading with wavelet transport (transport_wavelet.h): the outgoing radiance of vertex v is
+/// Shading with wavelet transport (transport.h): the outgoing radiance of vertex v is
 ///
 ///   albedo(v) * ( sum over v's kept k of L^_k T^_k(v)   +   sum_j L_j B_j(v) )
 ///
 /// per colour channel: the direct light a sparse dot product with the frame's light in the Haar
 /// basis (wavelet/light_cube.h), the bounced light B (SH, with interreflection) a dot product
-/// with the frame's SH light, as shade.h does.
+/// with the frame's SH light, as precompute/shade.h does.
 
 #include <vector>
 
@@ -14,7 +14,7 @@
 #include <glm/vec4.hpp>
 
 #include "geometry/mesh.h"
-#include "precompute/transport_wavelet.h"
+#include "wavelet/transport.h"
 #include "sh/coeffs.h"
 #include "wavelet/light_cube.h"
 

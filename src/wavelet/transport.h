@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Per-vertex transport in a Haar wavelet basis on a cube map (all-frequency PRT [1]), beside
-/// the SH transport of transport.h. What it stores, per vertex:
+/// the SH transport of precompute/transport.h. What it stores, per vertex:
 ///
 ///   direct     the transport of each texel t of the cube (wavelet/cube_grid.h),
 ///                T_t = (1/pi) integral over texel t of V(w) max(0, n.w) dw,
@@ -13,7 +13,7 @@
 ///              L_t (wavelet/light_cube.h) sends out  rho sum_t L_t T_t = rho sum_k L^_k T^_k
 ///              (the transform is orthonormal), a sparse dot product over the kept k.
 ///   bounced    with interreflection, the light that arrives after one or more bounces, as SH
-///              transfer vectors (transport.h, the bounced part alone): bounced light is low
+///              transfer vectors (precompute/transport.h, the bounced part alone): bounced light is low
 ///              frequency, and the SH light of the same environment lights it.
 ///
 /// The texel integral: the clamped cosine over the texel is exact (CubeGrid::ClampedCosine), and
@@ -55,23 +55,12 @@
 
 #include "geometry/mesh.h"
 #include "precompute/transport.h"
-#include "wavelet/selection.h"
+#include "wavelet/options.h"
 
 namespace prt {
 
-/// How the wavelet transport is sampled and truncated.
-struct WaveletOptions {
-  int face_size = 32;   ///< F: the cube's faces are F x F texels
-  int budget = 512;     ///< coefficients kept per vertex, the 6 faces' means among them
-  int split = 2;        ///< rays per texel: split x split
-  Selection selection = Selection::kArea;  ///< measured below: area beats magnitude at 512
-  int light_terms = 0;  ///< light coefficients kept per frame (0: all)
-};
-
 /// Jittered fans in the pool the vertices draw from.
 inline constexpr int kJitterSets = 8;
-/// The largest face size: 6 F^2 indices must fit 16 bits.
-inline constexpr int kMaxWaveletFace = 64;
 /// Quantisation steps on each side of 0 (a detail is an int16 times the vertex's step).
 inline constexpr double kQuantSteps = 32767.0;
 
@@ -83,7 +72,7 @@ struct WaveletTransport {
   std::vector<std::uint16_t> index;    ///< detail index (face * F^2 + row * F + col), increasing per vertex
   std::vector<std::int16_t> value;     ///< detail / scale[v], rounded
   std::vector<float> scale;            ///< per vertex: its quantisation step
-  /// Interreflection: the bounced light as SH transfer (transport.h layout); no coefficients
+  /// Interreflection: the bounced light as SH transfer (precompute/transport.h layout); no coefficients
   /// otherwise.
   Transport bounce;
   /// A sample of vertices with every coefficient kept (the unkept transport), to measure what

@@ -1,4 +1,4 @@
-#include "precompute/shade_wavelet.h"
+#include "wavelet/shade.h"
 
 #include <algorithm>
 

@@ -1,0 +1,71 @@
+#pragma once
+/// \file
+/// The bases prt stores transport in, in one table: `--basis` reads its names, `prt help` lists
+/// them, and every command asks the row what its basis can do instead of comparing names. A
+/// basis is a folder of src/ behind basis/frame_light.h (sh_basis/, wavelet/) and one row here:
+///
+///   name    course  glossy  coefficient  SH light   own options
+///           files           view         windowed
+///   sh      yes     yes     yes          yes        -
+///   wavelet no      no      no           no         --cube-size --wavelet-terms --light-terms
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "basis/frame_light.h"
+#include "env/environment.h"
+#include "geometry/mesh.h"
+#include "raster/camera.h"
+#include "sh/coeffs.h"
+
+namespace prt {
+
+struct SceneOptions;
+struct RenderOptions;
+struct CachePlan;
+
+/// What the main job hands a basis to make its transport and its frames' light.
+struct BasisInputs {
+  const Mesh& mesh;
+  const SceneOptions& scene;
+  const RenderOptions& render;
+  const Environment& env;
+  const ShRgb& light;                     ///< the environment in SH (ComputeLight)
+  const std::vector<std::uint8_t>& seen;  ///< the vertices some frame shows (empty: all)
+  const Camera& camera;
+  const CachePlan& cache;
+  bool matrices;                          ///< a glossy orbit: transfer matrices wanted
+};
+
+/// A basis made ready for the frames: the frame light, and what it reads (its transport),
+/// kept alive as long as the light.
+struct PreparedBasis {
+  std::shared_ptr<const void> transport;
+  std::unique_ptr<FrameLight> light;
+};
+
+struct Basis {
+  const char* name;          ///< the --basis value
+  const char* help;          ///< what `prt help` says of it after its name ("" for the default)
+  bool course_files;         ///< precompute writes the course's light.txt and transport.txt from it
+  bool glossy;               ///< materials with a lobe (--material phong:N,KS)
+  bool coefficient_view;     ///< its coefficients per vertex are SH transfer: --view transport, --look course
+  bool windowed_light;       ///< its frames are lit by the windowed SH light, whose ringing the run reports
+  bool report_study;         ///< prt report --basis NAME measures it against SH (report/report_wavelet.h)
+  std::vector<std::string> options;  ///< the options that apply to this basis alone
+  /// Computes the transport (said on the run summary) and makes the frames' light.
+  PreparedBasis (*prepare)(const BasisInputs& inputs);
+};
+
+/// Every basis, the default first.
+const std::vector<Basis>& Bases();
+/// The default basis (the first row).
+const Basis* DefaultBasis();
+/// The row named `name`, or nullptr.
+const Basis* FindBasis(const std::string& name);
+/// The names in table order.
+std::vector<std::string> BasisNames();
+
+}  // namespace prt

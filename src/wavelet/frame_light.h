@@ -1,0 +1,33 @@
+#pragma once
+/// \file
+/// Haar wavelets as a basis of the frame loop (basis/frame_light.h). A frame:
+///
+///   light     the environment turned by the frame's rotation and resampled onto the cube, each
+///             texel its mean radiance (light_cube.h), taken to Haar coefficients; optionally only
+///             the K most important kept (Ng's non-linear approximation, selection.h);
+///   shading   each vertex a sparse dot product of its kept transport coefficients with that
+///             light, plus its bounces through the SH light turned by the band rotations (shade.h);
+///   kept      the kept light back on the texels (the light view).
+///
+/// The transport view shows SH coefficients, which this basis has none of to show.
+
+#include <memory>
+
+#include <glm/vec3.hpp>
+
+#include "basis/frame_light.h"
+#include "env/environment.h"
+#include "sh/coeffs.h"
+#include "wavelet/selection.h"
+#include "wavelet/transport.h"
+
+namespace prt {
+
+/// Wavelets: `transport` under `env` turned about `axis`, `sh_light` lighting its bounces (may
+/// be empty without them); `light_terms` > 0 keeps only that many light coefficients per frame,
+/// chosen by `selection`. `env` and `transport` must outlive the result.
+std::unique_ptr<FrameLight> MakeWaveletFrameLight(const WaveletTransport& transport, const Environment& env,
+                                                  const ShRgb& sh_light, const glm::dvec3& axis, int light_terms,
+                                                  Selection selection);
+
+}  // namespace prt
