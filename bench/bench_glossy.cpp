@@ -94,9 +94,7 @@ void BenchGlossy(int runs, int threads, int samples, int lmax) {
   Print("ratio_matrix_frame_vs_diffuse_frame", frame.ratio);
 
   // The same orbit frame from the matrices compressed by clustered PCA at render's default --cpca.
-  CpcaOptions co;
-  co.clusters = RenderOptions{}.cpca_clusters;
-  co.terms = RenderOptions{}.cpca_terms;
+  const CpcaOptions co = RenderJobOptions{}.cpca;
   CpcaTransfer cpca;
   const double cpca_s = MedianSeconds(std::min(runs, 3), [&] { cpca = CompressTransferMatrices(m, co); });
   const double full_bytes = double(TransferMatrixBytes(mesh.vertex_count(), lmax, m.channels));

@@ -6,7 +6,6 @@
 #include "core/log.h"
 #include "cpca/cpca_transfer.h"
 #include "precompute/transport.h"
-#include "render/render_options.h"
 #include "sh/axis_rotation.h"
 #include "sh_basis/frame_light.h"
 #include "wavelet/frame_light.h"
@@ -25,11 +24,11 @@ struct ShData {
 PreparedBasis PrepareSh(const BasisInputs& in) {
   auto data = std::make_shared<ShData>();
   data->transport = ComputeSceneTransport(in.mesh, in.scene, in.cache, in.seen, &in.camera, in.matrices);
-  const bool compressed = in.matrices && in.render.cpca_clusters > 0;
-  if (compressed) data->cpca = CompressSceneMatrices(data->transport, in.render.cpca_clusters, in.render.cpca_terms);
+  const bool compressed = in.matrices && in.cpca.clusters > 0;
+  if (compressed) data->cpca = CompressSceneMatrices(data->transport, in.cpca.clusters, in.cpca.terms);
   PreparedBasis prepared;
-  prepared.light = MakeShFrameLight(data->transport, in.light, in.render.axis, compressed ? &data->cpca : nullptr);
-  const AxisRotation rotation(in.render.axis, data->transport.lmax);
+  prepared.light = MakeShFrameLight(data->transport, in.light, in.axis, compressed ? &data->cpca : nullptr);
+  const AxisRotation rotation(in.axis, data->transport.lmax);
   Summary("rotation: " + rotation.Describe() + "; only the " + std::to_string(CoeffCount(data->transport.lmax)) +
           " coefficients the transport has are turned");
   prepared.transport = std::move(data);
@@ -41,7 +40,7 @@ PreparedBasis PrepareWavelet(const BasisInputs& in) {
   sh.seen = in.seen;
   auto transport = std::make_shared<WaveletTransport>(ComputeSceneWavelets(in.mesh, sh, in.scene.wavelet, in.env));
   PreparedBasis prepared;
-  prepared.light = MakeWaveletFrameLight(*transport, in.env, in.light, in.render.axis, in.scene.wavelet.light_terms,
+  prepared.light = MakeWaveletFrameLight(*transport, in.env, in.light, in.axis, in.scene.wavelet.light_terms,
                                          in.scene.wavelet.selection);
   Summary("rotation: the environment turned and resampled onto the wavelet cube each frame (each texel its mean "
           "radiance, the sun's energy kept exactly)" +

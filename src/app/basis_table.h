@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "basis/frame_light.h"
+#include "cpca/cpca.h"
 #include "env/environment.h"
 #include "geometry/mesh.h"
 #include "raster/camera.h"
@@ -23,14 +24,14 @@
 namespace prt {
 
 struct SceneOptions;
-struct RenderOptions;
 struct CachePlan;
 
 /// What the main job hands a basis to make its transport and its frames' light.
 struct BasisInputs {
   const Mesh& mesh;
   const SceneOptions& scene;
-  const RenderOptions& render;
+  const glm::dvec3& axis;                 ///< the light turns about it
+  const CpcaOptions& cpca;                ///< --cpca: a glossy orbit's matrices compressed (0 clusters: off)
   const Environment& env;
   const ShRgb& light;                     ///< the environment in SH (ComputeLight)
   const std::vector<std::uint8_t>& seen;  ///< the vertices some frame shows (empty: all)

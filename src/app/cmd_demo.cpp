@@ -15,9 +15,16 @@ SceneOptions DemoScene() {
 
 /// The demo's render defaults; the demo camera itself comes from CompleteRenderOptions, only
 /// for the embedded scene (a --mesh of the user's is framed automatically).
-RenderOptions DemoRender() {
-  RenderOptions r;
+RenderJobOptions DemoRender() {
+  RenderJobOptions r;
   r.out = "out/demo";
+  return r;
+}
+
+/// The same with the demo camera, as its help documents the defaults.
+RenderJobOptions DemoRenderWithCamera() {
+  RenderJobOptions r = DemoRender();
+  r.draw = WithDemoCamera(r.draw);
   return r;
 }
 
@@ -29,14 +36,14 @@ CommandSpec DemoSpec() {
           "built-in HDR sky with a sun, interreflection with 1 bounce, lmax 4, a full turn of the light in 120 "
           "frames of 640x480 written to out/demo. Every option of prt render may override a default; the defaults "
           "below are the demo's.",
-          {SceneOptionGroup(DemoScene(), AllSceneOptionNames()), RenderOptionGroup(WithDemoCamera(DemoRender()), AllRenderOptionNames()),
+          {SceneOptionGroup(DemoScene(), AllSceneOptionNames()), RenderOptionGroup(DemoRenderWithCamera(), AllRenderOptionNames()),
            {"other options", {QuietOption()}}}};
 }
 
 int RunDemo(const std::vector<std::string>& tokens) {
   Args args("demo", tokens, DemoSpec());
   const SceneOptions scene = ReadSceneOptions(args, DemoScene());
-  const RenderOptions render = CompleteRenderOptions(args, ReadRenderOptions(args, DemoRender()), scene);
+  const RenderJobOptions render = CompleteRenderOptions(args, ReadRenderOptions(args, DemoRender()), scene);
   args.Finish();
   RenderJob(scene, render);
   return 0;

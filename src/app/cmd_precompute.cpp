@@ -35,9 +35,9 @@ Transport LuminanceMix(const Transport& t) {
 }  // namespace
 
 CommandSpec PrecomputeSpec() {
-  RenderOptions no_out;
+  RenderJobOptions no_out;
   no_out.out.clear();  // its help then says "required"
-  no_out.cpca_clusters = 0;  // the compressed file only when asked for
+  no_out.cpca.clusters = 0;  // the compressed file only when asked for
   OptionGroup output = RenderOptionGroup(no_out, {"--out", "--replace", "--cache", "--cpca"}, "output options");
   for (auto& o : output.options)
     if (o.name == "--cpca")
@@ -87,11 +87,11 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
   const auto out = args.String("--out");
   const std::string cache_option = args.String("--cache", "");
   const bool replace = args.Flag("--replace");
-  RenderOptions cpca_option;
-  cpca_option.cpca_clusters = 0;
+  CpcaOptions cpca_option;
+  cpca_option.clusters = 0;
   ReadCpca(args, cpca_option);
   CheckCpcaTerms(args, cpca_option, options.lmax);
-  const bool cpca = cpca_option.cpca_clusters > 0;
+  const bool cpca = cpca_option.clusters > 0;
   args.Finish();
   if (cpca && !options.material.glossy)
     args.Fail("--cpca: compresses a glossy material's transfer matrices (expected --material phong:N,KS, or no --cpca)");
@@ -146,7 +146,7 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
              "/transfer_matrices.bin (layout in docs/CLI.md)";
   }
   if (cpca) {
-    const CpcaTransfer compressed = CompressSceneMatrices(transport, cpca_option.cpca_clusters, cpca_option.cpca_terms);
+    const CpcaTransfer compressed = CompressSceneMatrices(transport, cpca_option.clusters, cpca_option.terms);
     WriteCpcaMatrixFile(folder.Output("transfer_matrices_cpca.bin"), mesh, transport, compressed);
     wrote += "; the same compressed by clustered PCA in " + *out + "/transfer_matrices_cpca.bin (layout in docs/CLI.md)";
   }

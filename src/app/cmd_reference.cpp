@@ -19,8 +19,8 @@ const std::vector<std::string> kSceneNames = {"--mesh",    "--env",  "--transpor
 const std::vector<std::string> kPictureNames = {"--out", "--replace", "--size", "--background", "--tonemap", "--exposure",
                                                 "--ssaa", "--eye", "--target", "--up", "--fov"};
 
-RenderOptions PictureDefaults() {
-  RenderOptions o;
+RenderJobOptions PictureDefaults() {
+  RenderJobOptions o;
   o.out.clear();  // required
   return o;
 }
@@ -48,10 +48,11 @@ int RunReference(const std::vector<std::string>& tokens) {
   Args args("reference", tokens, ReferenceSpec());
   const SceneOptions scene = ReadSceneOptions(args);
   const int samples = args.Int("--reference-samples", 8192, 2, 1 << 24);
-  const RenderOptions render = CompleteRenderOptions(args, ReadRenderOptions(args, PictureDefaults()), scene);
+  const RenderJobOptions job = CompleteRenderOptions(args, ReadRenderOptions(args, PictureDefaults()), scene);
+  const RenderOptions& render = job.draw;
   args.Finish();
-  if (render.out.empty()) args.Fail("--out DIR is required");
-  OutputFolder folder(render.out, {"reference", {"reference.txt", "reference.png"}, render.replace});
+  if (job.out.empty()) args.Fail("--out DIR is required");
+  OutputFolder folder(job.out, {"reference", {"reference.txt", "reference.png"}, job.replace});
 
   const Mesh mesh = LoadSceneMesh(scene, &folder);
   const Camera camera = SceneCamera(mesh, render);
@@ -87,7 +88,7 @@ int RunReference(const std::vector<std::string>& tokens) {
   WritePng(folder.Output("reference.png"), DrawVertexColors(mesh, ToFloat(ref.radiance), *env, camera, render, &exposure));
   if (!render.exposure) ReportAutoExposure(exposure, "this picture");
   FinishOutputs(folder);
-  Summary("wrote " + render.out + "/reference.txt and " + render.out + "/reference.png");
+  Summary("wrote " + job.out + "/reference.txt and " + job.out + "/reference.png");
   return 0;
 }
 

@@ -15,7 +15,7 @@ SceneOptions RenderScene() {
 
 /// The render options of `prt render`: --look (render's own) first, then those it shares with demo.
 OptionGroup RenderGroup() {
-  OptionGroup group = RenderOptionGroup(RenderOptions{}, AllRenderOptionNames());
+  OptionGroup group = RenderOptionGroup(RenderJobOptions{}, AllRenderOptionNames());
   group.options.insert(group.options.begin(), LookOption());
   return group;
 }
@@ -38,8 +38,9 @@ int RunRender(const std::vector<std::string>& tokens) {
   // The look first: it gives the defaults that the options on the command line override.
   const Look look = ReadLook(args);
   const SceneOptions scene = ReadSceneOptions(args, LookSceneDefaults(look, RenderScene()));
-  const RenderOptions render =
-      CompleteRenderOptions(args, ReadRenderOptions(args, LookRenderDefaults(look, RenderOptions{})), scene);
+  RenderJobOptions defaults;
+  defaults.draw = LookRenderDefaults(look, defaults.draw);
+  const RenderJobOptions render = CompleteRenderOptions(args, ReadRenderOptions(args, defaults), scene);
   const std::string look_line = CheckLook(args, look, scene);
   args.Finish();
   if (!look_line.empty()) Summary(look_line);

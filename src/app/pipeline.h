@@ -103,6 +103,6 @@ void FinishOutputs(OutputFolder& folder);
 /// The whole main job: the output folder (render.out), mesh, camera, light, transport, frames,
 /// then the folder finished; each stage reports on the run summary, and frame files there that
 /// prt has no record of are counted. Used by `render` and `demo`.
-void RenderJob(const SceneOptions& scene, const RenderOptions& render);
+void RenderJob(const SceneOptions& scene, const RenderJobOptions& job);
 
 }  // namespace prt

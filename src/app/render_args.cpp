@@ -29,7 +29,8 @@ std::string ViewText(const RenderOptions& o) {
   return o.view == View::kTransport ? "transport:" + std::to_string(o.transport_index) : ViewName(o.view);
 }
 
-std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
+std::map<std::string, OptionSpec> RenderSpecs(const RenderJobOptions& job) {
+  const RenderOptions& d = job.draw;
   const RenderOptions demo = WithDemoCamera({});  // the embedded scene's camera
   std::map<std::string, OptionSpec> s;
   auto add = [&s](OptionSpec o) { s[o.name] = std::move(o); };
@@ -40,7 +41,7 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
        "output folder, created if missing; one run at a time; after a successful run it holds this run's outputs, "
        "and what earlier runs of this command wrote and this one did not is removed (other commands' outputs and "
        "files prt did not write are never touched)",
-       d.out.empty() ? "required" : d.out});
+       job.out.empty() ? "required" : job.out});
   add(ReplaceOption());
   add({"--axis", "X,Y,Z", "rotation axis of the light", VecText(d.axis) + ", world up"});
   add({"--turns", "T", "full turns of the light over all frames, -1e6..1e6", Formatted("%g", double(d.turns))});
@@ -80,22 +81,23 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderOptions& d) {
        "a glossy --orbit's transfer matrices compressed by clustered PCA: C clusters (1..65536), each a mean and K "
        "principal matrices (0..(lmax+1)^4), each vertex K weights; the run summary says the memory and the error "
        "measured; off: the full matrices",
-       d.cpca_clusters > 0 ? std::to_string(d.cpca_clusters) + "," + std::to_string(d.cpca_terms) : "off"});
+       job.cpca.clusters > 0 ? std::to_string(job.cpca.clusters) + "," + std::to_string(job.cpca.terms) : "off"});
   add({"--vertex-radiance", "FILE",
        "write frame 0's per-vertex linear RGB radiance toward the camera (albedo in, before tone mapping) in "
        "transport.txt's layout: the welded vertex count, then three `R G B` rows per face of the mesh in file "
        "order, one per corner",
-       d.vertex_radiance.empty() ? "none" : d.vertex_radiance});
+       job.vertex_radiance.empty() ? "none" : job.vertex_radiance});
   add({"--video", "FILE",
        "the frames also as one video: .png or .apng an animated PNG that loops (written by prt, plays in every "
        "browser), .mp4 H.264 or .webm VP9 through Debian's ffmpeg program; written when the run succeeds, like the "
        "frames",
-       d.video.empty() ? "none" : d.video});
-  add({"--fps", "F", "frames per second of --video, 0.1..240 (at most 90 for an animated PNG)", Formatted("%g", d.fps)});
+       job.video.path.empty() ? "none" : job.video.path});
+  add({"--fps", "F", "frames per second of --video, 0.1..240 (at most 90 for an animated PNG)",
+       Formatted("%g", job.video.fps)});
   add({"--cache", "PATH",
        "transport cache to reuse and update, so a re-run with the same mesh and options skips the precompute; "
        "`none` disables it; a path that cannot be used is a warning, not an error",
-       d.cache.empty() ? "DIR/transport.cache" : d.cache});
+       job.cache.empty() ? "DIR/transport.cache" : job.cache});
   return s;
 }
 
@@ -166,11 +168,11 @@ void ReadCamera(Args& args, RenderOptions& o) {
 
 }  // namespace
 
-void ReadCpca(Args& args, RenderOptions& o) {
+void ReadCpca(Args& args, CpcaOptions& o) {
   const auto text = args.String("--cpca");
   if (!text) return;
   if (*text == "off") {
-    o.cpca_clusters = 0;
+    o.clusters = 0;
     return;
   }
   const auto comma = text->find(',');
@@ -178,18 +180,18 @@ void ReadCpca(Args& args, RenderOptions& o) {
   const auto k = comma == std::string::npos ? std::nullopt : ParseNumber(text->substr(comma + 1));
   if (!c || !k || std::floor(*c) != *c || std::floor(*k) != *k || *c < 1 || *c > 65536 || *k < 0 || *k > 40401.0 * 40401.0)
     args.Fail("--cpca: '" + *text + "' (expected C,K with C clusters from 1 to 65536 and K terms from 0, or off)");
-  o.cpca_clusters = int(*c), o.cpca_terms = int(std::min(*k, 1e9));
+  o.clusters = int(*c), o.terms = int(std::min(*k, 1e9));
 }
 
-void CheckCpcaTerms(Args& args, const RenderOptions& o, int lmax) {
+void CheckCpcaTerms(Args& args, const CpcaOptions& o, int lmax) {
   const long long dim = (long long)CoeffCount(lmax) * CoeffCount(lmax);
-  if (o.cpca_clusters > 0 && o.cpca_terms > dim)
-    args.Fail("--cpca: " + std::to_string(o.cpca_terms) + " terms is more than the " + std::to_string(dim) +
+  if (o.clusters > 0 && o.terms > dim)
+    args.Fail("--cpca: " + std::to_string(o.terms) + " terms is more than the " + std::to_string(dim) +
               " numbers of a transfer matrix at lmax " + std::to_string(lmax) + " (expected K from 0 to " +
               std::to_string(dim) + ")");
 }
 
-bool IsFolderOwnName(const std::string& file, const RenderOptions& o) {
+bool IsFolderOwnName(const std::string& file, const RenderJobOptions& o) {
   const std::string name = std::filesystem::path(file).filename().string();
   static const std::regex frame("frame_[0-9]+\\.png", std::regex::icase);
   if (LiesIn(file, o.out) && (std::regex_match(name, frame) || name.rfind(".prt", 0) == 0)) return true;
@@ -211,18 +213,20 @@ const std::vector<std::string>& AllRenderOptionNames() {
   return names;
 }
 
-OptionGroup RenderOptionGroup(const RenderOptions& defaults, const std::vector<std::string>& names,
+OptionGroup RenderOptionGroup(const RenderJobOptions& defaults, const std::vector<std::string>& names,
                               const std::string& title) {
   return PickOptions(RenderSpecs(defaults), names, title);
 }
 
-RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
-  RenderOptions o = d;
+RenderJobOptions ReadRenderOptions(Args& args, const RenderJobOptions& job_defaults) {
+  RenderJobOptions job = job_defaults;
+  const RenderOptions& d = job_defaults.draw;
+  RenderOptions& o = job.draw;
   const auto has = [&args](const char* name) { return args.Accepts(name); };
   if (has("--frames")) o.frames = args.Int("--frames", d.frames, 1, 100000);
   if (has("--size")) ReadSize(args, o);
-  if (has("--out")) o.out = args.String("--out", d.out);
-  if (has("--replace")) o.replace = args.Flag("--replace");
+  if (has("--out")) job.out = args.String("--out", job_defaults.out);
+  if (has("--replace")) job.replace = args.Flag("--replace");
   if (has("--axis")) {
     if (const auto axis = args.Vec3("--axis")) {
       if (glm::length(*axis) < 1e-12)
@@ -253,20 +257,20 @@ RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
               " samples per side (expected a smaller --ssaa or --size)");
   if (has("--view")) ReadView(args, o, d);
   if (has("--eye")) ReadCamera(args, o);
-  if (has("--cache")) o.cache = args.String("--cache", d.cache);
+  if (has("--cache")) job.cache = args.String("--cache", job_defaults.cache);
   if (has("--orbit")) o.orbit = args.Double("--orbit", d.orbit, -1e6, 1e6);
-  if (has("--cpca")) ReadCpca(args, o);
+  if (has("--cpca")) ReadCpca(args, job.cpca);
   if (has("--vertex-radiance") && args.Has("--vertex-radiance")) {
-    o.vertex_radiance = args.String("--vertex-radiance", d.vertex_radiance);
+    job.vertex_radiance = args.String("--vertex-radiance", job_defaults.vertex_radiance);
     // Checked now, not after the precompute: the folder exists and takes new files.
     namespace fs = std::filesystem;
     std::error_code ec;
-    const std::string& file = o.vertex_radiance;
+    const std::string& file = job.vertex_radiance;
     const std::string expected = " (expected a file name in a writable folder for --vertex-radiance)";
     if (file.empty()) args.Fail("--vertex-radiance: an empty name" + expected);
     if (HasControlCharacter(file))
       args.Fail("--vertex-radiance: the name has a control character (a newline, a tab)" + expected);
-    if (IsFolderOwnName(file, o))
+    if (IsFolderOwnName(file, job))
       args.Fail("--vertex-radiance: '" + file + "' is the name of one of the run's own files (a frame, the transport "
                 "cache or prt's own .prt-* files; expected another name, such as radiance.txt)");
     if (fs::is_directory(file, ec)) throw Error(file + ": is a folder" + expected);
@@ -280,13 +284,15 @@ RenderOptions ReadRenderOptions(Args& args, const RenderOptions& d) {
     ::close(fd);
     ::unlink(probe.c_str());
   }
-  ReadVideoOptions(args, o, d);
-  return o;
+  ReadVideoOptions(args, job, job_defaults);
+  return job;
 }
 
-RenderOptions CompleteRenderOptions(Args& args, RenderOptions o, const SceneOptions& scene) {
+RenderJobOptions CompleteRenderOptions(Args& args, RenderJobOptions job, const SceneOptions& scene) {
+  RenderOptions& o = job.draw;
   // A file the run writes must not be one it reads.
-  const std::pair<const char*, const std::string*> written[] = {{"--video", &o.video}, {"--vertex-radiance", &o.vertex_radiance}};
+  const std::pair<const char*, const std::string*> written[] = {{"--video", &job.video.path},
+                                                                {"--vertex-radiance", &job.vertex_radiance}};
   for (const auto& [option, file] : written)
     for (const std::string& input : {scene.mesh, scene.texture, scene.env})
       if (!file->empty() && !input.empty() && std::filesystem::exists(input) && SameFile(*file, input))
@@ -298,7 +304,7 @@ RenderOptions CompleteRenderOptions(Args& args, RenderOptions o, const SceneOpti
   if (o.view == View::kTransport && o.transport_index >= CoeffCount(scene.lmax))
     args.Fail("--view: transport:" + std::to_string(o.transport_index) + " is out of range (expected 0 to " +
               std::to_string(CoeffCount(scene.lmax) - 1) + " for lmax " + std::to_string(scene.lmax) + ")");
-  CheckCpcaTerms(args, o, scene.lmax);
+  CheckCpcaTerms(args, job.cpca, scene.lmax);
   if (scene.mesh.empty()) {
     // The embedded scene: each camera value not given is the demo's (help promises them one by
     // one), so --fov 50 alone widens the demo's view instead of refitting the camera.
@@ -314,7 +320,7 @@ RenderOptions CompleteRenderOptions(Args& args, RenderOptions o, const SceneOpti
     if (args.Has("--up") && glm::length(glm::cross(glm::normalize(*o.target - *o.eye), glm::normalize(*o.up))) < 1e-6)
       args.Fail("--up: parallel to the view direction --target - --eye (expected a direction across it)");
   }
-  return o;
+  return job;
 }
 
 }  // namespace prt

@@ -6,6 +6,7 @@
 
 #include "app/basis_table.h"
 #include "app/pipeline.h"
+#include "app/render_args.h"
 #include "app/render_video.h"
 #include "app/seen_ringing.h"
 #include "core/atomic_file.h"
@@ -43,10 +44,10 @@ void NoteForeignFrames(OutputFolder& folder) {
 
 /// What a render writes into its folder, known before any work: the frames, and the video and
 /// --vertex-radiance file when they lie in it.
-OutputPlan RenderPlan(const RenderOptions& r) {
+OutputPlan RenderPlan(const RenderJobOptions& r) {
   OutputPlan plan{"render", {}, r.replace};
-  for (int i = 0; i < r.frames; ++i) plan.names.push_back(FrameName(i, r.frames));
-  for (const std::string& file : {r.video, r.vertex_radiance})
+  for (int i = 0; i < r.draw.frames; ++i) plan.names.push_back(FrameName(i, r.draw.frames));
+  for (const std::string& file : {r.video.path, r.vertex_radiance})
     if (!file.empty() && LiesIn(file, r.out)) plan.names.push_back(std::filesystem::path(file).filename().string());
   return plan;
 }
@@ -100,9 +101,10 @@ std::string RingingNote(std::size_t pixels, const ShRgb& light, const SceneOptio
 
 }  // namespace
 
-void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
-  OutputFolder folder(render.out, RenderPlan(render));
-  const CachePlan cache = PlanCache(render.cache, &folder);
+void RenderJob(const SceneOptions& scene, const RenderJobOptions& job) {
+  const RenderOptions& render = job.draw;  // all that the frame loop reads
+  OutputFolder folder(job.out, RenderPlan(job));
+  const CachePlan cache = PlanCache(job.cache, &folder);
 
   // Mesh and camera first: a camera that cannot see is refused before any light is loaded.
   const Mesh mesh = LoadSceneMesh(scene, &folder);
@@ -121,13 +123,13 @@ void RenderJob(const SceneOptions& scene, const RenderOptions& render) {
   std::vector<std::uint8_t> seen;
   if (scene.transport != "unshadowed" && scene.hidden_samples != scene.samples) seen = SeenVertices(mesh, camera, render);
   // The transport in its basis (app/basis_table.h), and the light each frame turns for it.
-  const PreparedBasis basis = scene.basis->prepare({mesh, scene, render, *env, light, seen, camera, cache, matrices});
+  const PreparedBasis basis = scene.basis->prepare({mesh, scene, render.axis, job.cpca, *env, light, seen, camera, cache, matrices});
   FrameLight& frame_light = *basis.light;
   std::unique_ptr<SingleFileOutput> radiance_outside;
-  if (!render.vertex_radiance.empty())
-    radiance_outside = WriteVertexRadiance(mesh, frame_light, camera, render.vertex_radiance, folder);
+  if (!job.vertex_radiance.empty())
+    radiance_outside = WriteVertexRadiance(mesh, frame_light, camera, job.vertex_radiance, folder);
 
-  RenderVideo video(render, folder);
+  RenderVideo video(job.video, render, folder);
   const FrameStats stats = RenderFrames(mesh, frame_light, *env, camera, render, folder, video.writer());
   if (stats.legend_left_out)
     Summary("legend: left out, a " + std::to_string(render.width) + "x" + std::to_string(render.height) +

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <regex>
 
+#include "app/render_args.h"
 #include "core/error.h"
 #include "core/log.h"  // SecondsSince
 #include "core/text.h"
@@ -16,20 +17,23 @@ namespace {
 
 /// True if `file` names an output the run writes itself: a frame or a file of prt's own in the
 /// output folder, the transport cache, the --vertex-radiance file.
-bool IsRunOutputName(const std::string& file, const RenderOptions& o) {
+bool IsRunOutputName(const std::string& file, const RenderJobOptions& o) {
   return IsFolderOwnName(file, o) ||
          (!o.vertex_radiance.empty() && ResolvedPath(file) == ResolvedPath(o.vertex_radiance));
 }
 
 }  // namespace
 
-void ReadVideoOptions(Args& args, RenderOptions& o, const RenderOptions& d) {
+void ReadVideoOptions(Args& args, RenderJobOptions& job, const RenderJobOptions& job_defaults) {
+  VideoOptions& o = job.video;
+  const VideoOptions& d = job_defaults.video;
+  const RenderOptions& draw = job.draw;
   if (!args.Accepts("--video")) return;
   const bool has_video = args.Has("--video");
   if (args.Has("--fps") && !has_video) args.Fail("--fps: sets the rate of --video, which is not given (expected --video FILE)");
   if (!has_video) return;
-  o.video = args.String("--video", d.video);
-  const std::string& v = o.video;
+  o.path = args.String("--video", d.path);
+  const std::string& v = o.path;
   if (HasControlCharacter(v))
     args.Fail("--video: the name has a control character (a newline, a tab) (expected a plain file name)");
   const auto format = VideoFormatOf(v);
@@ -40,10 +44,10 @@ void ReadVideoOptions(Args& args, RenderOptions& o, const RenderOptions& d) {
   if (*format == VideoFormat::kApng && o.fps > kApngMaxFps)
     args.Fail("--fps: " + Formatted("%g", o.fps) + " is too fast for an animated PNG (expected at most " +
               Formatted("%g", kApngMaxFps) + ": browsers play frames of 10 ms or less at 10 frames per second)");
-  if (*format == VideoFormat::kMp4 && (o.width % 2 != 0 || o.height % 2 != 0))
-    args.Fail("--video: H.264 in '" + v + "' needs an even frame size, not " + std::to_string(o.width) + "x" +
-              std::to_string(o.height) + " (expected even --size values, or a .png or .webm video)");
-  if (IsRunOutputName(v, o))
+  if (*format == VideoFormat::kMp4 && (draw.width % 2 != 0 || draw.height % 2 != 0))
+    args.Fail("--video: H.264 in '" + v + "' needs an even frame size, not " + std::to_string(draw.width) + "x" +
+              std::to_string(draw.height) + " (expected even --size values, or a .png or .webm video)");
+  if (IsRunOutputName(v, job))
     args.Fail("--video: '" + v + "' is the name of one of the run's own outputs (a frame, the transport cache or the "
               "--vertex-radiance file; expected another name, such as turn.png)");
   std::error_code ec;
@@ -52,20 +56,20 @@ void ReadVideoOptions(Args& args, RenderOptions& o, const RenderOptions& d) {
     o.ffmpeg = FindFfmpeg(*format == VideoFormat::kMp4 ? FfmpegCodec::kH264Mp4 : FfmpegCodec::kVp9Webm, "--video " + v);
 }
 
-RenderVideo::RenderVideo(const RenderOptions& o, OutputFolder& folder) : path_(o.video) {
-  if (o.video.empty()) return;
+RenderVideo::RenderVideo(const VideoOptions& o, const RenderOptions& draw, OutputFolder& folder) : path_(o.path) {
+  if (o.path.empty()) return;
   VideoSpec spec;
-  spec.format = *VideoFormatOf(o.video);
-  spec.width = o.width, spec.height = o.height, spec.frames = o.frames, spec.fps = o.fps;
+  spec.format = *VideoFormatOf(o.path);
+  spec.width = draw.width, spec.height = draw.height, spec.frames = draw.frames, spec.fps = o.fps;
   spec.ffmpeg = o.ffmpeg;
   std::string write_path;
-  if (LiesIn(o.video, folder.dir())) {
-    write_path = folder.Output(fs::path(o.video).filename().string());
+  if (LiesIn(o.path, folder.dir())) {
+    write_path = folder.Output(fs::path(o.path).filename().string());
   } else {
-    outside_ = std::make_unique<SingleFileOutput>(o.video);
+    outside_ = std::make_unique<SingleFileOutput>(o.path);
     write_path = outside_->temp_path();
   }
-  writer_ = std::make_unique<VideoWriter>(spec, write_path, o.video);
+  writer_ = std::make_unique<VideoWriter>(spec, write_path, o.path);
 }
 
 RenderVideo::~RenderVideo() = default;

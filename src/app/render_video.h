@@ -12,23 +12,33 @@
 #include <string>
 
 #include "app/args.h"
-#include "app/render_args.h"
 #include "core/output_folder.h"
+#include "render/render_options.h"
 #include "video/video_writer.h"
 
 namespace prt {
 
-/// Reads --video and --fps into `o` (after --size and --out): the extension names a format, the
-/// rate suits it, the size suits H.264, the name is not one of the run's other outputs, and
-/// ffmpeg with its encoder is installed for .mp4 and .webm. Throws UsageError (through `args`)
-/// or Error.
-void ReadVideoOptions(Args& args, RenderOptions& o, const RenderOptions& defaults);
+struct RenderJobOptions;
+
+/// The video of a run: where (empty: none), at what rate, and the ffmpeg program for .mp4 and
+/// .webm (found when the options are read).
+struct VideoOptions {
+  std::string path;
+  double fps = 30.0;
+  std::string ffmpeg;
+};
+
+/// Reads --video and --fps into `job.video` (after --size and --out): the extension names a
+/// format, the rate suits it, the size suits H.264, the name is not one of the run's other
+/// outputs, and ffmpeg with its encoder is installed for .mp4 and .webm. Throws UsageError
+/// (through `args`) or Error.
+void ReadVideoOptions(Args& args, RenderJobOptions& job, const RenderJobOptions& defaults);
 
 class RenderVideo {
  public:
-  /// The video of a run of `options` into `folder`; nothing when options.video is empty.
-  /// Creates the video's folder if missing. Throws Error if it cannot be started.
-  RenderVideo(const RenderOptions& options, OutputFolder& folder);
+  /// The video `video` of the frames `draw` describes into `folder`; nothing when video.path is
+  /// empty. Creates the video's folder if missing. Throws Error if it cannot be started.
+  RenderVideo(const VideoOptions& video, const RenderOptions& draw, OutputFolder& folder);
   ~RenderVideo();
 
   /// The writer the frame loop hands each frame to, or null without --video.

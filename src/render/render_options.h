@@ -1,8 +1,10 @@
 #pragma once
 /// \file
 /// What a render draws and how (docs/CLI.md, "Render options"): frames, size, the light's turn,
-/// background, tone mapping, exposure, supersampling, the view, the camera, the video. The
-/// values only: app/render_args.h reads and checks them from the command line.
+/// background, tone mapping, exposure, supersampling, the view, the camera and its orbit. The
+/// values only, and only what drawing reads: app/render_args.h reads and checks them from the
+/// command line, with the options of the job's other stages (the output folder, the cache, the
+/// compressed matrices, the extra files), which it keeps beside these.
 
 #include <optional>
 #include <string>
@@ -31,9 +33,6 @@ std::optional<View> ViewFromName(const std::string& name);
 struct RenderOptions {
   int frames = 120;
   int width = 640, height = 480;
-  std::string out = "out/render";
-  /// --replace: files in `out` that prt did not write may be replaced (kept as NAME.orig).
-  bool replace = false;
   glm::dvec3 axis{0.0, 1.0, 0.0};  ///< rotation axis of the light (world up)
   double turns = 1.0;              ///< full turns over all frames
   bool env_background = true;      ///< the environment behind the mesh, else background_color
@@ -47,23 +46,9 @@ struct RenderOptions {
   std::optional<double> fov;
   View view = View::kRadiance;  ///< what to draw (View)
   int transport_index = 0;
-  /// The transport cache to reuse and update: empty for "DIR/transport.cache", "none" for none.
-  std::string cache;
   /// Degrees the camera turns about the target (around its up direction) over all frames: frame
   /// i is seen from the camera turned by orbit * i / frames.
   double orbit = 0.0;
-  /// --cpca: the transfer matrices of a glossy --orbit compressed by clustered PCA (cpca/cpca.h)
-  /// into `cpca_clusters` clusters of a mean and `cpca_terms` principal matrices; 0 clusters: the
-  /// full matrices (--cpca off). The defaults: measured on the demo scene (app/scene_cpca.cpp).
-  int cpca_clusters = 256;
-  int cpca_terms = 4;
-  /// Where frame 0's per-vertex linear radiance is written (precompute_io/transport_txt.h); empty: nowhere.
-  std::string vertex_radiance;
-  /// The frames also as one video file (app/render_video.h); empty: none. Its rate in frames
-  /// per second, and the ffmpeg program for .mp4 and .webm (found when the options are read).
-  std::string video;
-  double fps = 30.0;
-  std::string ffmpeg;
 };
 
 /// The camera of `prt demo`, also used by render and reference on the embedded scene: a

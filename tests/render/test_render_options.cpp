@@ -1,0 +1,86 @@
+// RenderOptions (render/render_options.h) holds only what drawing reads: every field is read by
+// the frame loop's own sources, so the options of the job's other stages (the output folder,
+// the cache, --cpca, --video ...) cannot drift back into it. And --view's words name each View
+// once.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/atomic_file.h"
+#include "render/render_options.h"
+#include "tests/test_support.h"
+
+namespace prt {
+namespace {
+namespace fs = std::filesystem;
+
+/// The field names of `struct NAME { ... };` in `header`, read from its declarations (several
+/// declarators on a line each count; initialisers and comments skipped).
+std::vector<std::string> FieldsOf(const std::string& header, const std::string& name) {
+  const std::string text = ReadFile(header);
+  const std::size_t start = text.find("struct " + name + " {");
+  REQUIRE(start != std::string::npos);
+  const std::string body = text.substr(start, text.find("\n};", start) - start);
+  std::vector<std::string> fields;
+  std::istringstream lines(body);
+  for (std::string line; std::getline(lines, line);) {
+    line = std::regex_replace(line, std::regex("//.*"), "");
+    line = std::regex_replace(line, std::regex("\\{[^}]*\\}"), "");    // brace initialisers
+    line = std::regex_replace(line, std::regex("<[^>]*>"), "");        // template arguments
+    if (line.find(';') == std::string::npos || line.find('(') != std::string::npos) continue;
+    line = line.substr(0, line.find(';'));
+    std::istringstream parts(line);
+    for (std::string part; std::getline(parts, part, ',');) {
+      part = part.substr(0, part.find('='));
+      std::smatch m;
+      if (std::regex_search(part, m, std::regex("([A-Za-z_][A-Za-z_0-9]*)\\s*$"))) fields.push_back(m[1]);
+    }
+  }
+  return fields;
+}
+
+}  // namespace
+
+TEST_SUITE("render") {
+  TEST_CASE("render options: every field is read by the frame loop's own sources") {
+    const std::string dir = test::SourceDir() + "/src/render";
+    const std::vector<std::string> fields = FieldsOf(dir + "/render_options.h", "RenderOptions");
+    // The fields known today, so that the reader above cannot silently find none.
+    for (const char* known : {"frames", "width", "height", "axis", "view", "transport_index", "orbit", "eye"})
+      CHECK(std::count(fields.begin(), fields.end(), known) == 1);
+    std::string sources;
+    for (const auto& file : fs::directory_iterator(dir)) {
+      const std::string name = file.path().filename().string();
+      if (name.rfind("render_options", 0) == 0 || name == "CMakeLists.txt") continue;
+      sources += ReadFile(file.path().string());
+    }
+    for (const std::string& field : fields) {
+      CAPTURE(field);
+      CHECK(std::regex_search(sources, std::regex("\\." + field + "\\b")));
+    }
+  }
+
+  TEST_CASE("render options: each --view word names one View and reads back") {
+    const std::vector<View> views = {View::kRadiance, View::kIrradiance, View::kAlbedo,
+                                     View::kTransport, View::kLight,     View::kGlossy};
+    std::set<std::string> words;
+    for (View v : views) {
+      const std::string word = ViewName(v);
+      words.insert(word);
+      REQUIRE(ViewFromName(word).has_value());
+      CHECK(*ViewFromName(word) == v);
+    }
+    CHECK(words.size() == views.size());
+    CHECK(words == std::set<std::string>{"radiance", "irradiance", "albedo", "transport", "light", "glossy"});
+    CHECK_FALSE(ViewFromName("Radiance").has_value());
+    CHECK_FALSE(ViewFromName("transport:3").has_value());  // the index is the command line's to split
+    CHECK_FALSE(ViewFromName("").has_value());
+  }
+}
+
+}  // namespace prt
