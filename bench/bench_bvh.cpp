@@ -14,6 +14,7 @@
 #include <glm/geometric.hpp>
 
 #include "bench/bench.h"
+#include "core/constants.h"
 #include "core/parallel.h"
 #include "geometry/brute_force.h"
 #include "geometry/bvh.h"
@@ -38,7 +39,7 @@ std::vector<glm::vec3> Fibonacci(int n) {
   const double golden = (1.0 + std::sqrt(5.0)) / 2.0;
   for (int i = 0; i < n; ++i) {
     const double z = 1.0 - (2.0 * i + 1.0) / n, x = i / golden;
-    const double phi = 2.0 * 3.14159265358979323846 * (x - std::floor(x));
+    const double phi = 2.0 * kPi * (x - std::floor(x));
     const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
     d.emplace_back(static_cast<float>(r * std::cos(phi)), static_cast<float>(r * std::sin(phi)), static_cast<float>(z));
   }

@@ -5,6 +5,7 @@
 
 #include "app/commands.h"
 #include "app/pipeline.h"
+#include "core/constants.h"
 #include "core/log.h"
 #include "core/text.h"
 #include "precompute_io/light_txt.h"
@@ -13,8 +14,6 @@
 
 namespace prt {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 struct Turn {
   glm::dvec3 axis;

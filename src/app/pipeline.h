@@ -2,11 +2,12 @@
 /// \file
 /// The stages of prt as the commands chain them (docs/ARCHITECTURE.md):
 ///
-///   args -> SceneOptions, RenderOptions            (checked before any work)
+///   args -> SceneOptions, RenderJobOptions         (checked before any work)
 ///        -> OutputFolder (created, locked)
 ///        -> LoadSceneMesh -> Mesh (oriented, split)  -> SceneCamera
 ///        -> LoadSceneEnvironment -> ComputeLight -> light SH
-///        -> ComputeSceneTransport (or the cache) -> Transport
+///        -> the basis's prepare (app/basis_table.h): its transport (SH: ComputeSceneTransport,
+///           or the cache) and the FrameLight that turns each frame's light
 ///        -> RenderFrames -> frame_0000.png ...     -> OutputFolder::Finish
 ///
 /// Each stage is a function from const inputs to a returned value and reports what it did (and
@@ -100,7 +101,7 @@ CpcaTransfer CompressSceneMatrices(Transport& transport, int clusters, int terms
 /// --replace replaced as NAME.orig, and says so on the run summary.
 void FinishOutputs(OutputFolder& folder);
 
-/// The whole main job: the output folder (render.out), mesh, camera, light, transport, frames,
+/// The whole main job: the output folder (job.out), mesh, camera, light, transport, frames,
 /// then the folder finished; each stage reports on the run summary, and frame files there that
 /// prt has no record of are counted. Used by `render` and `demo`.
 void RenderJob(const SceneOptions& scene, const RenderJobOptions& job);

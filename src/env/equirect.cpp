@@ -5,13 +5,11 @@
 
 #include <glm/common.hpp>
 
+#include "core/constants.h"
 #include "core/log.h"
 #include "io/image_load.h"
 
 namespace prt {
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
 
 EquirectEnvironment::EquirectEnvironment(ImageF image, std::string description)
     : image_(std::move(image)), description_(std::move(description)) {

@@ -7,13 +7,12 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "sh/basis.h"
 #include "sh/quadrature.h"
 
 namespace prt {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// A Gauss product rule whose polar axis is world +Y, one row per latitude.
 class GaussRows {

@@ -188,15 +188,8 @@ PRT_LANES RayMask OccludedPacket(const WideBvh& bvh, const WideRay* rays, int n,
 template <Isa isa, bool fused>
 PRT_LANES std::uint32_t BoxEntries(const WideNode& n, const WideRay& r, float tmax, V8& tnear) {
   using namespace lanes;
-  const V8 nx = PlaneDistance<isa, fused>(n, r.near[0], 0, r);
-  const V8 ny = PlaneDistance<isa, fused>(n, r.near[1], 1, r);
-  const V8 nz = PlaneDistance<isa, fused>(n, r.near[2], 2, r);
-  const V8 fx = PlaneDistance<isa, fused>(n, r.far[0], 0, r);
-  const V8 fy = PlaneDistance<isa, fused>(n, r.far[1], 1, r);
-  const V8 fz = PlaneDistance<isa, fused>(n, r.far[2], 2, r);
-  const V8 tn = Max(Max(nx, ny), Max(nz, Splat(r.tmin)));
-  const V8 tfar = Min(Min(fx, fy), Min(fz, Splat(tmax))) * kSlabFarScale;
-  const auto in = tn <= tfar;
+  V8 tn;
+  const auto in = SlabLanes<isa, fused>(n, r, tmax, tn);
   tnear = in ? tn : Splat(std::numeric_limits<float>::infinity());
   return Bits<isa>(in);
 }

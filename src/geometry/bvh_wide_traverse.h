@@ -83,9 +83,11 @@ PRT_LANES V8 PlaneDistance(const WideNode& n, int row, int axis, const WideRay& 
   else return (lanes::Load(n.planes[row]) - r.org[axis]) * r.inv[axis];
 }
 
-/// Lanes whose child box the ray enters within (tmin, tmax); their entry distances in tnear.
+/// The slab test of the eight child boxes, the one both traversals use: each lane's entry
+/// distance into `tnear`, and as a lane mask the lanes whose box the ray enters within
+/// (tmin, tmax).
 template <Isa isa, bool fused>
-PRT_LANES std::uint32_t BoxHits(const WideNode& n, const WideRay& r, float tmax, V8& tnear) {
+PRT_LANES auto SlabLanes(const WideNode& n, const WideRay& r, float tmax, V8& tnear) {
   using namespace lanes;
   const V8 nx = PlaneDistance<isa, fused>(n, r.near[0], 0, r);
   const V8 ny = PlaneDistance<isa, fused>(n, r.near[1], 1, r);
@@ -95,7 +97,13 @@ PRT_LANES std::uint32_t BoxHits(const WideNode& n, const WideRay& r, float tmax,
   const V8 fz = PlaneDistance<isa, fused>(n, r.far[2], 2, r);
   tnear = Max(Max(nx, ny), Max(nz, Splat(r.tmin)));
   const V8 tfar = Min(Min(fx, fy), Min(fz, Splat(tmax))) * kSlabFarScale;
-  return Bits<isa>(tnear <= tfar);
+  return tnear <= tfar;
+}
+
+/// Lanes whose child box the ray enters within (tmin, tmax); their entry distances in tnear.
+template <Isa isa, bool fused>
+PRT_LANES std::uint32_t BoxHits(const WideNode& n, const WideRay& r, float tmax, V8& tnear) {
+  return lanes::Bits<isa>(SlabLanes<isa, fused>(n, r, tmax, tnear));
 }
 
 /// Watertight test of one ray against the eight triangles of `b`: the lanes hit within

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "geometry/mesh_ops.h"  // Bounds3
 #include "geometry/position_ids.h"
 
@@ -28,7 +29,6 @@ constexpr double kFlatVolumeRatio = 1e-6;
 
 // The constant of the isoperimetric inequality: a closed curve of length L bounds a plane
 // region of area at most L^2 / (4 pi), and any region it bounds that is smaller.
-constexpr double kPi = 3.14159265358979323846;
 
 // A part with holes is judged only when flat caps of its holes would cover at most this share of
 // its area: a scan open at its base, not a bowl or a dome (whose cap is half its area), which is

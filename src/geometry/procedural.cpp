@@ -2,15 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "geometry/mesh_ops.h"
 
 namespace prt {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
+constexpr float kPiF = static_cast<float>(kPi);
 
 using Index = std::uint32_t;
 
@@ -32,9 +34,9 @@ Mesh MakeSphere(int segments, float radius, const glm::vec3& center, const glm::
   // Vertex 0 is the north pole, then (rings - 1) latitude circles, then the south pole.
   add(glm::vec3(0.0f, 1.0f, 0.0f));
   for (int r = 1; r < rings; ++r) {
-    const float theta = kPi * static_cast<float>(r) / static_cast<float>(rings);
+    const float theta = kPiF * static_cast<float>(r) / static_cast<float>(rings);
     for (int s = 0; s < seg; ++s) {
-      const float phi = 2.0f * kPi * static_cast<float>(s) / static_cast<float>(seg);
+      const float phi = 2.0f * kPiF * static_cast<float>(s) / static_cast<float>(seg);
       add(glm::vec3(std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi)));
     }
   }
@@ -117,7 +119,7 @@ Mesh MakeTorusKnot(int p, int q, float tube_radius, int segments, int sides, con
   };
   Mesh m;
   for (int i = 0; i < ns; ++i) {
-    const float phi = 2.0f * kPi * static_cast<float>(i) / static_cast<float>(ns);
+    const float phi = 2.0f * kPiF * static_cast<float>(i) / static_cast<float>(ns);
     const glm::vec3 c = curve(phi);
     // Frame: tangent by central difference, normal = the curve point's direction from the
     // Z axis made orthogonal to the tangent (never parallel to it on a torus knot).
@@ -127,7 +129,7 @@ Mesh MakeTorusKnot(int p, int q, float tube_radius, int segments, int sides, con
     const glm::vec3 nrm = glm::normalize(radial - glm::dot(radial, t) * t);
     const glm::vec3 bin = glm::cross(t, nrm);
     for (int j = 0; j < nt; ++j) {
-      const float a = 2.0f * kPi * static_cast<float>(j) / static_cast<float>(nt);
+      const float a = 2.0f * kPiF * static_cast<float>(j) / static_cast<float>(nt);
       const glm::vec3 dir = std::cos(a) * nrm + std::sin(a) * bin;
       m.positions.push_back(c + tube_radius * dir);
       m.normals.push_back(dir);
@@ -148,14 +150,19 @@ void StandUpright(Mesh& mesh, float height, float lift) {
   TransformMesh(mesh, scale, glm::vec3(0.0f, lift - scale * b.lo.y, 0.0f));
 }
 
+Mesh MakeKnotOverGround(const KnotOverGround& s) {
+  Mesh knot = MakeTorusKnot(2, 3, 0.16f, s.segments, s.sides, s.knot_albedo);
+  StandUpright(knot, s.height, s.lift);
+  Mesh ground = MakePlane(s.ground_size, s.ground_quads, 0.0f, s.ground_albedo);
+  Mesh& first = s.ground_first ? ground : knot;
+  AppendMesh(first, s.ground_first ? knot : ground);
+  return std::move(first);
+}
+
 Mesh MakeDemoScene() {
-  // A warm terracotta knot on a light grey ground: colour bleeding shows in the bounces.
-  Mesh knot = MakeTorusKnot(2, 3, 0.16f, 512, 48, glm::vec3(0.80f, 0.38f, 0.20f));
-  StandUpright(knot, 3.4f);
-  // Per-vertex shading: the ground needs vertices about as dense as its shadows are sharp.
-  Mesh scene = MakePlane(12.0f, 96, 0.0f, glm::vec3(0.7f, 0.7f, 0.7f));
-  AppendMesh(scene, knot);
-  return scene;
+  // A warm terracotta knot on a light grey ground: colour bleeding shows in the bounces. Per-vertex
+  // shading: the ground needs vertices about as dense as its shadows are sharp (96 quads a side).
+  return MakeKnotOverGround(KnotOverGround{});
 }
 
 }  // namespace prt

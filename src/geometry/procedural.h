@@ -51,9 +51,23 @@ Mesh MakeTorusKnot(int p = 2, int q = 3, float tube_radius = 0.16f, int segments
 /// point is at y = `lift`: an object standing on (or `lift` above) a ground at y = 0.
 void StandUpright(Mesh& mesh, float height, float lift = 0.0f);
 
-/// The embedded demo scene: a (2, 3) torus knot about 3.4 units tall standing upright (facing
-/// +Z) on a 12 x 12 ground plane at y = 0, merged into one mesh. Sized like the course's mary
-/// model so the course camera (0, 8, 22) -> (0, 1, 1) frames it.
+/// A (2, 3) torus knot standing upright (facing +Z) on a square ground at y = 0, merged into one
+/// mesh: the scene of the demo, the report and the wavelet study, each with its own sizes.
+struct KnotOverGround {
+  int segments = 512, sides = 48;                       ///< the knot's tube (MakeTorusKnot)
+  glm::vec3 knot_albedo{0.80f, 0.38f, 0.20f};
+  float height = 3.4f;                                  ///< the knot's height (StandUpright)
+  float lift = 0.0f;                                    ///< its lowest point above the ground
+  float ground_size = 12.0f;                            ///< the ground's side
+  int ground_quads = 96;                                ///< quads along each side
+  glm::vec3 ground_albedo{0.7f, 0.7f, 0.7f};
+  bool ground_first = true;                             ///< the ground's vertices before the knot's
+};
+Mesh MakeKnotOverGround(const KnotOverGround& scene);
+
+/// The embedded demo scene: MakeKnotOverGround's defaults, a knot about 3.4 units tall on a
+/// 12 x 12 ground. Sized like the course's mary model so the course camera (0, 8, 22) ->
+/// (0, 1, 1) frames it.
 Mesh MakeDemoScene();
 
 }  // namespace prt

@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/constants.h"
 #include "sh/quadrature.h"
 
 namespace prt {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 /// P_0..P_lmax at x by the three-term recurrence.
 void Legendre(int lmax, double x, double* p) {

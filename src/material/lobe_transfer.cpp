@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "core/constants.h"
 #include "core/frame.h"
 #include "core/parallel.h"
 #include "sh/basis.h"
@@ -18,7 +19,6 @@
 namespace prt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 /// Gauss–Legendre nodes per theta piece and per arc beyond the arc's polynomial degree.
 constexpr int kThetaNodes = 24;
 constexpr int kArcExtraNodes = 16;

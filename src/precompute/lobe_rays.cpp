@@ -2,13 +2,13 @@
 
 #include <cmath>
 
+#include "core/constants.h"
 #include "core/frame.h"
 #include "core/rng.h"
 
 namespace prt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInvGolden = 0.61803398874989484820;
 
 double Frac(double x) { return x - std::floor(x); }

@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "core/error.h"
 #include "core/frame.h"
 #include "core/parallel.h"
@@ -14,14 +15,13 @@
 #include "geometry/mesh_texture.h"
 #include "geometry/ray.h"
 #include "material/lobe_transfer.h"
+#include "precompute/hit_light.h"  // FrontSide
 #include "precompute/lobe_rays.h"  // kLobeStream: a half's lobe samples, apart from its other streams
 #include "precompute/reference_env_sampler.h"
-#include "precompute/transport_steps.h"  // FrontSide
 
 namespace prt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInvGolden = 0.61803398874989484820;  // 1 / golden ratio
 
 /// Fractional part in [0, 1).

@@ -4,12 +4,12 @@
 #include <cmath>
 
 #include "core/color.h"
+#include "core/constants.h"
 #include "core/parallel.h"
 
 namespace prt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 
 /// The unit direction at height y (= cos theta about +Y) and azimuth phi.

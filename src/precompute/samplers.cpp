@@ -1,11 +1,9 @@
 #include "precompute/samplers.h"
+#include "core/constants.h"
 
 #include <cmath>
 
 namespace prt {
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
 
 Sampler SamplerFromName(const std::string& name) {
   if (name == "stratified") return Sampler::kStratified;

@@ -6,17 +6,18 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "core/frame.h"
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "material/lobe_transfer.h"
-#include "precompute/transport_steps.h"
+#include "precompute/hit_light.h"
+#include "precompute/transport_direct.h"
 #include "sh/basis.h"
 #include "sh/quadrature.h"
 
 namespace prt {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 
 /// out += f * a b^T (n x n).
@@ -72,7 +73,7 @@ void ComputeTransferMatrices(const Mesh& mesh, const DirectionPlan* plan, const 
       else std::fill(m.begin(), m.begin() + nn, 0.0);
       for (int c = 1; c < channels; ++c) std::copy(m.begin(), m.begin() + nn, m.begin() + c * nn);
       if (direct) {
-        // The blocked directions the direct pass found, with what they hit (transport_steps.h).
+        // The blocked directions the direct pass found, with what they hit (transport_direct.h).
         const std::size_t directions = plan->PoolOf(v).size();  // the camera's vertices take more
         const double vertex_weight = 4.0 * kPi / double(directions);
         for (const VertexHit& h : direct->hits[v]) {

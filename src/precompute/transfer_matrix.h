@@ -23,7 +23,7 @@
 /// is a polynomial of degree 2 lmax + 1, integrated by lmax + 1 Gauss–Legendre nodes in z and
 /// 2 lmax + 2 azimuths), minus the Monte Carlo estimate over the pool's blocked directions (the
 /// same control variate as the diffuse transfer: unoccluded vertices get the exact matrix). The
-/// blocked directions are those the direct pass records (transport_steps.h): no second tracing.
+/// blocked directions are those the direct pass records (transport_direct.h): no second tracing.
 ///
 /// References
 /// [1] Sloan, Kautz, Snyder, "Precomputed Radiance Transfer for Real-Time Rendering in Dynamic,
@@ -42,6 +42,8 @@
 #include "sh/coeffs.h"
 
 namespace prt {
+
+struct DirectResult;  // transport_direct.h
 
 /// Bytes the matrices of `vertices` vertices take at `lmax` with `channels` channels (floats).
 std::uint64_t TransferMatrixBytes(std::size_t vertices, int lmax, int channels);
@@ -68,5 +70,11 @@ void LobeRows(const Mesh& mesh, std::size_t begin, std::size_t end, const glm::d
 /// ShadeVerticesFromMatrices (shade.h).
 std::vector<glm::vec3> GlossyFromMatrices(const Mesh& mesh, const Transport& transport, const Material& material,
                                           const ShRgb& light, const glm::dvec3& eye);
+
+/// The transfer matrices of every vertex into transport.matrices (above), from the
+/// blocked directions and hits `direct` recorded (null: unshadowed, no pool); `hit_transfer`
+/// (BounceResult::before_last, transport.channels channels) with interreflection, else null.
+void ComputeTransferMatrices(const Mesh& mesh, const DirectionPlan* plan, const DirectResult* direct, int lmax,
+                             const std::vector<double>* hit_transfer, Transport& transport);
 
 }  // namespace prt

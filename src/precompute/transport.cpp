@@ -9,12 +9,15 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/parallel.h"
 #include "precompute/bounce_senders.h"
 #include "precompute/transfer_matrix.h"
-#include "precompute/transport_steps.h"
+#include "precompute/transport_bounce.h"
+#include "precompute/transport_direct.h"
+#include "precompute/transport_glossy.h"
 #include "sh/basis.h"
 #include "sh/zonal.h"
 
@@ -140,7 +143,6 @@ const char* TransportModeName(TransportMode mode) {
 }
 
 std::vector<double> EstimateUnshadowed(const std::vector<glm::dvec3>& dirs, const glm::dvec3& normal, int lmax) {
-  constexpr double kPi = 3.14159265358979323846;
   std::vector<double> t(CoeffCount(lmax), 0.0), y(CoeffCount(lmax));
   const double weight = 4.0 * kPi / double(dirs.size()) / kPi;
   for (const auto& d : dirs) {

@@ -125,7 +125,7 @@ struct TransportReport {
   bool bvh_built = false;
   double bvh_seconds = 0, direct_seconds = 0, bounce_seconds = 0;
   std::uint64_t rays = 0;                 ///< rays actually traced
-  std::uint64_t basis_evaluations = 0;    ///< directions whose SH basis was evaluated (transport_steps.h)
+  std::uint64_t basis_evaluations = 0;    ///< directions whose SH basis was evaluated (transport_direct.h)
   std::size_t closed_form_vertices = 0;   ///< vertices given the exact closed form
   int directions_per_vertex = 0;          ///< directions of each vertex the camera sees
   int hidden_directions = 0;              ///< directions of each it does not see (0: none such)

@@ -7,9 +7,10 @@
 #include <glm/geometric.hpp>
 
 #include "core/parallel.h"
-#include "geometry/mesh_texture.h"
 #include "core/progress.h"
-#include "precompute/transport_steps.h"
+#include "geometry/mesh_texture.h"
+#include "precompute/hit_light.h"
+#include "precompute/transport_bounce.h"
 
 namespace prt {
 namespace {
@@ -31,15 +32,12 @@ double Energy(const std::vector<double>& t, int count) {
 
 }  // namespace
 
+// Declared in hit_light.h; defined here, where the bounces' loop calls them.
 glm::vec3 HitAlbedo(const Mesh& mesh, std::size_t vertex, std::uint32_t triangle, float u, float v,
                     std::size_t directions) {
   const auto& tri = mesh.triangles[triangle];
   const glm::vec3 point = (1.f - u - v) * mesh.positions[tri[0]] + u * mesh.positions[tri[1]] + v * mesh.positions[tri[2]];
   return SurfaceAlbedo(mesh, triangle, u, v, RayFootprint(glm::length(point - mesh.positions[vertex]), directions));
-}
-
-int TransportChannels(const Mesh& mesh, TransportMode mode) {
-  return mode == TransportMode::kInterreflection && !GreyAlbedo(mesh) ? 3 : 1;
 }
 
 void AddHitLight(const Mesh& mesh, std::uint32_t triangle, float u, float v, const std::vector<double>& transfer,
@@ -57,6 +55,10 @@ void AddHitLight(const Mesh& mesh, std::uint32_t triangle, float u, float v, con
   const double* t2 = transfer.data() + tri[2] * stride + c * count;
   const double f = scale * rho;
   for (int k = 0; k < count; ++k) out[k] += f * (b[0] * t0[k] + b[1] * t1[k] + b[2] * t2[k]);
+}
+
+int TransportChannels(const Mesh& mesh, TransportMode mode) {
+  return mode == TransportMode::kInterreflection && !GreyAlbedo(mesh) ? 3 : 1;
 }
 
 BounceResult AddBounces(const Mesh& mesh, const DirectionPlan& plan, const DirectResult& direct,

@@ -13,17 +13,13 @@
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "geometry/ray.h"
-#include "precompute/transport_steps.h"
+#include "precompute/transport_direct.h"
 #include "sh/basis.h"
 #include "sh/zonal.h"
 
 namespace prt {
 
-/// Does the ray along `dir` hit the lit side of the triangle, the side its vertex normals face?
-/// The side is decided by the triangle's plane (the geometric normal), oriented by the sum of
-/// its vertex normals so that the file's winding order does not matter. (Testing the
-/// interpolated shading normal instead would call grazing hits on coarse smooth meshes "back"
-/// and lose their light.)
+// Declared in hit_light.h; defined here, where the direct pass's loop calls it.
 bool FrontSide(const Mesh& mesh, const Hit& hit, const glm::vec3& dir) {
   const auto& tri = mesh.triangles[hit.triangle];
   const glm::vec3& p0 = mesh.positions[tri[0]];

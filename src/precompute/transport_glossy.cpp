@@ -11,8 +11,9 @@
 #include "core/progress.h"
 #include "geometry/ray.h"
 #include "material/lobe_transfer.h"
+#include "precompute/hit_light.h"
 #include "precompute/lobe_rays.h"
-#include "precompute/transport_steps.h"
+#include "precompute/transport_glossy.h"
 #include "sh/basis.h"
 
 namespace prt {

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "raster/annotate.h"
 #include "sh/basis.h"
 
@@ -33,7 +34,7 @@ Image8 DrawBasisChart(int lmax, int cell) {
 
   for (int l = 0; l <= lmax; ++l) {
     // Normalise each band by its largest value, sqrt((2l+1)/(4 pi)) (reached at the poles by m = 0).
-    const double band_max = std::sqrt((2.0 * l + 1.0) / (4.0 * 3.14159265358979323846));
+    const double band_max = std::sqrt((2.0 * l + 1.0) / (4.0 * kPi));
     for (int m = -l; m <= l; ++m) {
       const int cx = label_w + (m + lmax) * cell + cell / 2, cy = label_h + l * cell + cell / 2;
       const double radius = 0.45 * cell;

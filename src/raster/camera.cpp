@@ -9,14 +9,15 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/constants.h"
 #include "core/error.h"
 #include "core/text.h"
 
 namespace prt {
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
-constexpr float kDegToRad = kPi / 180.f;
+constexpr float kPiF = static_cast<float>(kPi);
+constexpr float kDegToRad = kPiF / 180.f;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
@@ -197,7 +198,7 @@ Camera Orbit(const Camera& camera, double degrees, const glm::vec3& min, const g
   if (degrees == 0.0) return camera;
   const glm::dvec3 axis = glm::normalize(glm::dvec3(camera.up));
   const glm::dvec3 offset = glm::dvec3(camera.eye - camera.target);
-  const double a = degrees * 3.14159265358979323846 / 180.0;
+  const double a = degrees * kPi / 180.0;
   // Rodrigues' rotation of the offset about the axis.
   const glm::dvec3 turned = offset * std::cos(a) + glm::cross(axis, offset) * std::sin(a) +
                             axis * glm::dot(axis, offset) * (1.0 - std::cos(a));

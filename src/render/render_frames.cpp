@@ -1,5 +1,6 @@
 #include "render/render_frames.h"
 
+#include "core/constants.h"
 #include "render/frame_writer.h"
 
 #include <chrono>
@@ -23,8 +24,6 @@
 
 namespace prt {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// The transport view needs coefficient `index` of every vertex; a basis without them, or an
 /// index beyond them, is refused (render_args refuses both before any work).

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "core/constants.h"
 #include "core/log.h"
 #include "core/text.h"
 #include "cpca/cpca_transfer.h"
@@ -22,7 +23,7 @@ std::vector<glm::dvec3> OrbitEyes(const glm::dvec3& eye, const glm::dvec3& targe
   std::vector<glm::dvec3> eyes;
   const glm::dvec3 d = eye - target;
   for (int i = 0; i < count; ++i) {
-    const double a = 2.0 * 3.14159265358979323846 * i / count, c = std::cos(a), s = std::sin(a);
+    const double a = 2.0 * kPi * i / count, c = std::cos(a), s = std::sin(a);
     eyes.push_back(target + glm::dvec3(c * d.x + s * d.z, d.y, -s * d.x + c * d.z));
   }
   return eyes;

@@ -68,11 +68,9 @@ int LightSupersample(int size) { return std::max(2, (kFineFaceSize + size - 1) /
 }  // namespace
 
 Mesh MakeReportScene() {
-  Mesh knot = MakeTorusKnot(2, 3, 0.16f, 128, 16, glm::vec3(0.80f, 0.38f, 0.20f));
-  StandUpright(knot, 3.4f);
-  Mesh scene = MakePlane(12.0f, 24, 0.0f, glm::vec3(0.7f, 0.7f, 0.7f));
-  AppendMesh(scene, knot);
-  return scene;
+  KnotOverGround s;  // the demo's scene, coarser
+  s.segments = 128, s.sides = 16, s.ground_quads = 24;
+  return MakeKnotOverGround(s);
 }
 
 Transport TimedTransport(const Mesh& mesh, const TransportOptions& o, double& seconds, int& directions,

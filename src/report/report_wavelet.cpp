@@ -58,10 +58,12 @@ WaveletStudyConfig MakeWaveletStudyConfig(bool quick, int bounces, std::uint64_t
 }
 
 Mesh MakeSunScene(int segments, int sides, int ground) {
-  Mesh scene = MakeTorusKnot(2, 3, 0.16f, segments, sides, glm::vec3(0.80f, 0.30f, 0.20f));
-  StandUpright(scene, 2.0f, 0.05f);
-  AppendMesh(scene, MakePlane(8.0f, ground, 0.0f, glm::vec3(0.75f)));
-  return scene;
+  KnotOverGround s;
+  s.segments = segments, s.sides = sides, s.ground_quads = ground;
+  s.knot_albedo = glm::vec3(0.80f, 0.30f, 0.20f), s.ground_albedo = glm::vec3(0.75f);
+  s.height = 2.0f, s.lift = 0.05f, s.ground_size = 8.0f;
+  s.ground_first = false;  // the knot's vertices first, as the measurements were made
+  return MakeKnotOverGround(s);
 }
 
 WaveletStudy RunWaveletStudy(const Mesh& mesh, const Environment& env, const WaveletStudyConfig& c) {

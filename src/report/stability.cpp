@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "core/parallel.h"
 #include "core/rng.h"
 #include "core/text.h"
@@ -29,8 +30,6 @@
 
 namespace prt {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 StabilityCase Case(std::string name, std::string checks, double figure, double limit, bool at_least = false,
                    std::string note = "") {

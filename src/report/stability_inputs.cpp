@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "env/equirect.h"
 #include "env/procedural.h"
 #include "geometry/mesh_ops.h"
@@ -25,7 +26,6 @@ namespace prt {
 namespace {
 
 constexpr double kY00 = 0.28209479177387814;  // 1 / (2 sqrt(pi))
-constexpr double kPi = 3.14159265358979323846;
 
 std::string F(const char* fmt, double v) {
   char b[64];

@@ -1,4 +1,5 @@
 #include "sh/axis_rotation.h"
+#include "core/constants.h"
 
 #include <cmath>
 #include <cstdio>
@@ -14,7 +15,7 @@ glm::dmat3 ToPole(const glm::dvec3& k) {
   const glm::dvec3 z(0, 0, 1);
   const glm::dvec3 c = glm::cross(k, z);
   const double s = glm::length(c), cosine = glm::dot(k, z);
-  if (s < 1e-15) return cosine > 0 ? glm::dmat3(1.0) : AxisAngle({1, 0, 0}, 3.14159265358979323846);
+  if (s < 1e-15) return cosine > 0 ? glm::dmat3(1.0) : AxisAngle({1, 0, 0}, kPi);
   return AxisAngle(c / s, std::atan2(s, cosine));
 }
 

@@ -9,8 +9,6 @@
 namespace prt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 /// a_lm and b_lm of the recurrence for every (l, m) with l <= kMaxBasisLmax, built once.
 struct RecurrenceTable {
   std::vector<double> a, b;  // indexed by ShIndex(l, m), m >= 0

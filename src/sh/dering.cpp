@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "core/error.h"
 #include "core/parallel.h"
 #include "core/text.h"
@@ -18,7 +19,6 @@
 namespace prt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kStrictness = 1e-6;  // share of a constant kernel mixed into k (header)
 constexpr double kMarginT = 1e-6;     // margin added to the least t found
 constexpr int kStarts = 16;           // grid points a compass search starts from

@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/constants.h"
 #include "sh/quadrature.h"
 
 namespace prt {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// P_0(x) .. P_n(x) by the three-term recurrence.
 std::vector<double> Legendre(int n, double x) {

@@ -1,11 +1,11 @@
 #include "sh/quadrature.h"
+#include "core/constants.h"
 
 #include <cmath>
 
 namespace prt {
 
 void GaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weights) {
-  constexpr double kPi = 3.14159265358979323846;
   nodes.assign(n, 0.0);
   weights.assign(n, 0.0);
   for (int i = 0; i < (n + 1) / 2; ++i) {
@@ -33,7 +33,6 @@ void GaussLegendre(int n, std::vector<double>& nodes, std::vector<double>& weigh
 }
 
 SphereQuadrature GaussSphere(int n) {
-  constexpr double kPi = 3.14159265358979323846;
   std::vector<double> z, w;
   GaussLegendre(n, z, w);
   SphereQuadrature q;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/constants.h"
 #include "core/error.h"
 
 namespace prt {
@@ -15,7 +16,6 @@ const char* WindowName(Window w) {
 }
 
 double WindowWeight(Window w, int l, int lmax) {
-  constexpr double kPi = 3.14159265358979323846;
   const double x = kPi * l / (lmax + 1.0);
   switch (w) {
     case Window::kHann: return 0.5 * (1.0 + std::cos(x));

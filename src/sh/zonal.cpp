@@ -3,12 +3,10 @@
 #include <cmath>
 #include <vector>
 
+#include "core/constants.h"
 #include "sh/basis.h"
 
 namespace prt {
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
 
 double ClampedCosineBand(int l) {
   if (l == 0) return kPi;

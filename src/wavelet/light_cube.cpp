@@ -7,14 +7,13 @@
 #include <glm/matrix.hpp>
 
 #include "core/color.h"
+#include "core/constants.h"
 #include "core/parallel.h"
 #include "env/cube_faces.h"
 #include "wavelet/haar.h"
 
 namespace prt {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// A frame (x, y, axis) around unit `axis`.
 void Frame(const glm::dvec3& axis, glm::dvec3& x, glm::dvec3& y) {

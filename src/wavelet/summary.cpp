@@ -1,7 +1,6 @@
 #include "wavelet/summary.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
 #include "core/log.h"
@@ -14,12 +13,13 @@ namespace prt {
 namespace {
 
 /// Relative RMS difference, over the probes, of the direct light the kept coefficients give and
-/// the one every coefficient gives, under `env` as frame 0 sees it.
-double TruncationCost(const WaveletTransport& t, const Environment& env, int light_terms) {
+/// the one every coefficient gives, under `env` as frame 0 sees it (its light kept as the
+/// options keep it).
+double TruncationCost(const WaveletTransport& t, const Environment& env, const WaveletOptions& w) {
   const CubeGrid grid(t.face_size);
   CubeRgb rgb;
-  const WaveletLight light = TurnedWaveletLight(LightCube(env, grid), glm::dmat3(1.0), light_terms,
-                                                SelectionWeights(grid.size(), WaveletOptions{}.selection), rgb);
+  const WaveletLight light = TurnedWaveletLight(LightCube(env, grid), glm::dmat3(1.0), w.light_terms,
+                                                SelectionWeights(grid.size(), w.selection), rgb);
   double num = 0.0, den = 0.0;
   for (std::size_t p = 0; p < t.probes.size(); ++p) {
     const glm::vec3 full = ShadeDense(t.probe_coeffs.data() + p * grid.texels(), light);
@@ -58,7 +58,7 @@ WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const TransportOptions& 
   Summary(line);
   Summary("wavelet truncation: frame 0's direct light at " + std::to_string(t.probes.size()) +
           " sample vertices differs from their unkept transport's by " +
-          Formatted("%.3g%%", 100.0 * TruncationCost(t, env, w.light_terms)) + " RMS (relative)" +
+          Formatted("%.3g%%", 100.0 * TruncationCost(t, env, w)) + " RMS (relative)" +
           (w.light_terms > 0 ? ", the light kept to its " + std::to_string(w.light_terms) +
                                          " most important coefficients (--light-terms)"
                                    : ", every light coefficient used (--light-terms 0)"));

@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/parallel.h"
@@ -23,7 +24,6 @@
 namespace prt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr std::size_t kProbes = 64;  ///< vertices whose unkept transport is kept too
 
 /// One jittered fan: split^2 directions per texel, in texel order, each with its sub-square's

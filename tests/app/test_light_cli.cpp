@@ -11,6 +11,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "precompute_io/light_txt.h"
 #include "sh/coeffs.h"
 #include "tests/sh/sh_test_util.h"
@@ -21,7 +22,6 @@ using namespace prt::test;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // light.txt prints 9 significant digits: relative rounding 5e-9 a coefficient.
 constexpr double kPrintedTolerance = 2e-8;
 

@@ -96,6 +96,34 @@ TEST_SUITE("app") {
     }
   }
 
+  TEST_CASE("architecture: docs/ARCHITECTURE.md names every header of src/ and bench/") {
+    // Named as folder/name.h anywhere, or as name.h in its folder's own section ("## src/F").
+    const std::string doc = ReadFile(test::SourceDir() + "/docs/ARCHITECTURE.md");
+    std::map<std::string, std::string> sections;  // "src/F" or "bench" -> its text
+    std::string current;
+    std::istringstream lines(doc);
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind("## ", 0) == 0) {
+        current = line.substr(3);
+        while (!current.empty() && current.back() == '/') current.pop_back();
+      }
+      sections[current] += line + "\n";
+    }
+    int headers = 0;
+    for (const std::string top : {"src", "bench"})
+      for (const auto& entry : fs::recursive_directory_iterator(test::SourceDir() + "/" + top)) {
+        if (entry.path().extension() != ".h") continue;
+        ++headers;
+        const std::string folder = fs::relative(entry.path().parent_path(), test::SourceDir()).string();
+        const std::string name = entry.path().filename().string();
+        const std::string qualified = entry.path().parent_path().filename().string() + "/" + name;
+        CAPTURE(folder);
+        CAPTURE(name);
+        CHECK((doc.find(qualified) != std::string::npos || sections[folder].find(name) != std::string::npos));
+      }
+    CHECK(headers > 100);
+  }
+
   TEST_CASE("module includes: the project's own includes all point down its table") {
     const test::RunResult r = CheckIncludes(test::SourceDir());
     INFO(r.err);

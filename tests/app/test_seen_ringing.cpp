@@ -10,13 +10,12 @@
 #include <vector>
 
 #include "app/seen_ringing.h"
+#include "core/constants.h"
 #include "material/material.h"
 
 using namespace prt;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// The compass search ends with steps of 1e-9 rad; the value it misses at a smooth extremum is
 /// second order in the step, and the sums round near 1e-15: 1e-12 is far above both.

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/constants.h"
 #include "env/equirect.h"
 #include "io/hdr_writer.h"
 #include "io/png_io.h"
@@ -74,7 +75,7 @@ TEST_SUITE("app") {
     const std::string dir = ScratchDir("wavelet_turn");
     SampleScene(dir);
     const auto sky = LoadEquirect(dir + "/sky.hdr");
-    const glm::dmat3 quarter = AxisAngle({0, 1, 0}, 3.14159265358979323846 / 2);
+    const glm::dmat3 quarter = AxisAngle({0, 1, 0}, kPi / 2);
     const ImageF turned = EquirectImage([&](const glm::dvec3& d) { return sky->Radiance(glm::transpose(quarter) * d); }, 1024, 512);
     WriteFileAtomic(dir + "/turned.hdr", EncodeHdr(turned));
     const ImageF wrong = EquirectImage([&](const glm::dvec3& d) { return sky->Radiance(quarter * d); }, 1024, 512);

@@ -7,13 +7,12 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "env/cube_faces.h"
 #include "env/cubemap.h"
 
 namespace prt {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// Sum over every texel of value x solid angle: the integral of the radiance the cubemap holds.
 double Power(const std::array<ImageF, 6>& faces) {

@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "core/rng.h"
 #include "env/cube_faces.h"
 #include "env/cubemap.h"
@@ -12,7 +13,7 @@
 using namespace prt;
 
 namespace {
-constexpr double kFourPi = 4.0 * 3.14159265358979323846;
+constexpr double kFourPi = 4.0 * kPi;
 // Exact texel solid angles sum to 4 pi up to rounding.
 constexpr double kSolidAngleSumTolerance = 1e-12;
 

@@ -4,13 +4,14 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "env/equirect.h"
 #include "tests/env/env_test_util.h"
 
 using namespace prt;
 
 namespace {
-constexpr double kFourPi = 4.0 * 3.14159265358979323846;
+constexpr double kFourPi = 4.0 * kPi;
 // Exact row solid angles: their sum is 4 pi up to rounding.
 constexpr double kSolidAngleSumTolerance = 1e-12;
 }  // namespace

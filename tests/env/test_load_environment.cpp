@@ -12,6 +12,7 @@
 #include <OpenEXR/ImfRgbaFile.h>
 
 #include "core/atomic_file.h"
+#include "core/constants.h"
 #include "core/error.h"
 #include "env/load_environment.h"
 #include "precompute/light.h"
@@ -108,10 +109,10 @@ TEST_SUITE("env") {
     const auto env = LoadEnvironment(dir, CubeLayout::kStandard);
     const ShRgb L = ProjectLight(*env, 2);
     // Grey 128 in sRGB is 0.2158605 linear; six equal faces are a furnace.
-    CHECK(L[0].x == doctest::Approx(2 * std::sqrt(3.14159265358979323846) * 0.2158605).epsilon(1e-6));
+    CHECK(L[0].x == doctest::Approx(2 * std::sqrt(kPi) * 0.2158605).epsilon(1e-6));
     // The course's decoding is pow(128/255, 2.2) = 0.2195 instead (CONVENTIONS.md).
     const ShRgb course = ProjectLight(*LoadEnvironment(dir, CubeLayout::kGames202), 2);
-    CHECK(course[0].x == doctest::Approx(2 * std::sqrt(3.14159265358979323846) * std::pow(128.0 / 255.0, 2.2)).epsilon(1e-6));
+    CHECK(course[0].x == doctest::Approx(2 * std::sqrt(kPi) * std::pow(128.0 / 255.0, 2.2)).epsilon(1e-6));
   }
 
   TEST_CASE("unknown names and bad sky parameters are errors, not crashes") {
@@ -132,7 +133,7 @@ TEST_SUITE("env") {
       const ShRgb L = ProjectLight(*LoadEnvironment(path, CubeLayout::kStandard), 2);
       // Half floats store 2.0 exactly; DWAB is lossy (a quantised DCT): 0.1% on a flat image.
       const double tolerance = compression == Imf::DWAB_COMPRESSION ? 2e-3 : 1e-9;
-      CHECK(L[0].x == doctest::Approx(2 * std::sqrt(3.14159265358979323846) * 2.0).epsilon(tolerance));
+      CHECK(L[0].x == doctest::Approx(2 * std::sqrt(kPi) * 2.0).epsilon(tolerance));
     }
     const std::string bad = dir + "/bad.exr";
     WriteExr(bad, 64, 32, Imf::ZIP_COMPRESSION, [](int x, int y) {

@@ -2,16 +2,13 @@
 
 #include <cmath>
 
+#include "core/constants.h"
 #include "env/procedural.h"
 #include "precompute/light.h"
 #include "sh/basis.h"
 #include "sh/quadrature.h"
 
 using namespace prt;
-
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
 
 TEST_SUITE("env") {
   TEST_CASE("cap integrals of P_l match exact Gauss-Legendre quadrature on [cos a, 1]") {

@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "core/rng.h"
 #include "geometry/bvh_kernels.h"
 #include "geometry/mesh.h"
@@ -47,7 +48,7 @@ inline std::vector<NamedMesh> TestMeshes() {
 
 inline glm::vec3 UniformSphere(Pcg32& rng) {
   const float z = static_cast<float>(2.0 * rng.NextDouble() - 1.0);
-  const float phi = static_cast<float>(2.0 * 3.14159265358979 * rng.NextDouble());
+  const float phi = static_cast<float>(2.0 * kPi * rng.NextDouble());
   const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
   return glm::vec3(r * std::cos(phi), r * std::sin(phi), z);
 }
@@ -91,7 +92,7 @@ inline std::vector<glm::vec3> FibonacciDirections(int n) {
   for (int i = 0; i < n; ++i) {
     const double z = 1.0 - (2.0 * i + 1.0) / n;
     const double x = static_cast<double>(i) / golden;
-    const double phi = 2.0 * 3.14159265358979323846 * (x - std::floor(x));
+    const double phi = 2.0 * kPi * (x - std::floor(x));
     const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
     d.emplace_back(static_cast<float>(r * std::cos(phi)), static_cast<float>(r * std::sin(phi)),
                    static_cast<float>(z));

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "geometry/mesh_ops.h"
 #include "geometry/procedural.h"
 
@@ -59,7 +60,7 @@ TEST_SUITE("geometry") {
     CheckComplete(s);
     CHECK(s.triangle_count() == 2u * 128u * 63u);
     CHECK(AgreeingFraction(s) == 1.0);
-    const double exact = 4.0 / 3.0 * 3.14159265358979 * 8.0;
+    const double exact = 4.0 / 3.0 * kPi * 8.0;
     CHECK(std::abs(SignedVolume(s) - exact) / exact < kSphereVolumeTolerance);
     CHECK(MakeSphere(320).triangle_count() >= 100000u);
   }
@@ -92,6 +93,50 @@ TEST_SUITE("geometry") {
     const Bounds3 b = MeshBounds(d);
     CHECK(b.lo.y == doctest::Approx(0.0).epsilon(1e-6));
     CHECK(b.hi.y == doctest::Approx(3.4).epsilon(1e-3));
+  }
+
+  TEST_CASE("knot over ground: the ground's and the knot's vertices in the order asked, each where it stands") {
+    KnotOverGround s;
+    s.segments = 40, s.sides = 6, s.ground_quads = 5, s.ground_size = 8.0f;
+    s.height = 2.0f, s.lift = 0.05f;
+    s.knot_albedo = glm::vec3(0.8f, 0.3f, 0.2f), s.ground_albedo = glm::vec3(0.75f);
+    const std::size_t ground = MakePlane(8.0f, 5, 0.0f).vertex_count();
+    const std::size_t knot = MakeTorusKnot(2, 3, 0.16f, 40, 6).vertex_count();
+    for (const bool ground_first : {true, false}) {
+      CAPTURE(ground_first);
+      s.ground_first = ground_first;
+      const Mesh m = MakeKnotOverGround(s);
+      REQUIRE(m.vertex_count() == ground + knot);
+      REQUIRE(m.triangles.size() == MakePlane(8.0f, 5, 0.0f).triangles.size() + 2u * 40 * 6);
+      const std::size_t ground_begin = ground_first ? 0 : knot, knot_begin = ground_first ? ground : 0;
+      float lo = 1e9f, hi = -1e9f;
+      for (std::size_t v = 0; v < ground; ++v) {
+        CHECK(m.positions[ground_begin + v].y == 0.0f);
+        CHECK(std::abs(m.positions[ground_begin + v].x) <= 4.0f);
+        CHECK(m.albedo[ground_begin + v] == s.ground_albedo);
+      }
+      for (std::size_t v = 0; v < knot; ++v) {
+        lo = std::min(lo, m.positions[knot_begin + v].y), hi = std::max(hi, m.positions[knot_begin + v].y);
+        CHECK(m.albedo[knot_begin + v] == s.knot_albedo);
+      }
+      CHECK(lo == doctest::Approx(0.05f).epsilon(1e-5));  // standing `lift` above the ground
+      CHECK(hi - lo == doctest::Approx(2.0f).epsilon(1e-5));
+      // Every triangle joins vertices of one part: the two are merged, not welded.
+      for (const auto& t : m.triangles) {
+        const bool in_ground = t[0] >= ground_begin && t[0] < ground_begin + ground;
+        for (int j = 1; j < 3; ++j) CHECK((t[j] >= ground_begin && t[j] < ground_begin + ground) == in_ground);
+      }
+    }
+  }
+
+  TEST_CASE("knot over ground: the demo scene is the builder's defaults, a 3.4-unit knot on a 12 x 12 ground") {
+    const Mesh demo = MakeDemoScene();
+    const Mesh built = MakeKnotOverGround(KnotOverGround{});
+    REQUIRE(demo.vertex_count() == built.vertex_count());
+    CHECK(demo.positions == built.positions);
+    CHECK(demo.triangles == built.triangles);
+    CHECK(demo.positions.front().y == 0.0f);  // the ground first
+    CHECK(demo.vertex_count() == MakePlane(12.0f, 96, 0.0f).vertex_count() + MakeTorusKnot(2, 3, 0.16f, 512, 48).vertex_count());
   }
 }
 

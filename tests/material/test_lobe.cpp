@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/constants.h"
 #include "material/lobe.h"
 #include "sh/quadrature.h"
 
@@ -13,7 +14,6 @@ using namespace prt;
 TEST_SUITE_BEGIN("material");
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 /// h_l = 2 pi integral h(mu) P_l(mu) dmu by composite Gauss–Legendre on [lo, 1] (the Legendre
 /// polynomial evaluated by its explicit sum rather than the recurrence the code uses).

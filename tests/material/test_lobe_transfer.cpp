@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "material/lobe_transfer.h"
 #include "sh/basis.h"
 #include "sh/coeffs.h"
@@ -20,7 +21,6 @@ using namespace prt;
 TEST_SUITE_BEGIN("material");
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 /// t_k by brute force about n: z = n.s by composite Gauss–Legendre on [0, 1] (exact in the
 /// clamped cosine), phi about n by `azimuths` equally spaced points.

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/constants.h"
 #include "core/parallel.h"
 #include "core/rng.h"
 #include "env/procedural.h"
@@ -14,7 +15,6 @@ using namespace prt;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // The furnace's bound: exact to 1e-12 in double.
 constexpr double kFurnaceTolerance = 1e-12;
 // The bound for a band-limited function on a 64^2-per-face cubemap.

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "core/constants.h"
 #include "core/parallel.h"
 #include "env/procedural.h"
 #include "geometry/procedural.h"
@@ -14,8 +15,6 @@
 
 namespace prt {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Furnace (radiance up to 2): the estimator's only noise is that of max(0, n.w) under a
 // near-uniform density; with 2048 shifted lattice directions the worst vertex is off by 3.7e-3

@@ -9,6 +9,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "geometry/bvh.h"
 #include "geometry/mesh_ops.h"
 #include "geometry/procedural.h"
@@ -29,7 +30,6 @@ using test::LightAt;
 using test::SphereOverPlane;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 
 Material RaisedCosine(int degree, double ks) { return GlossyMaterial(Lobe{LobeKind::kRaisedCosine, degree}, ks); }
 

@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "core/parallel.h"
 #include "core/rng.h"
 #include "geometry/mesh_ops.h"
@@ -18,7 +19,6 @@ using namespace prt;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kY00 = 0.28209479177387814;
 
 /// RMS over coefficients and over `trials` random normals of MC-unshadowed minus closed form.

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "core/parallel.h"
 #include "geometry/bvh.h"
 #include "geometry/mesh_ops.h"
@@ -27,11 +28,6 @@ TEST_SUITE_BEGIN("precompute");
 using test::BandLimitedLight;
 using test::LightAt;
 using test::SphereOverPlane;
-
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
 
 TEST_CASE("glossy white furnace: albedo + KS times the lobe's cosine integral, in closed form for N = 1") {
   // Constant light 1 (L_00 = sqrt(4 pi)), a lone sphere (nothing occluded). For N = 1 the lobe's

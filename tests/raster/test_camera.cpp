@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "core/constants.h"
 #include "core/error.h"
 #include "core/rng.h"
 #include "io/obj_loader.h"
@@ -237,7 +238,7 @@ TEST_SUITE("raster") {
       const prt::Camera o = prt::Orbit(c, degrees, lo, hi);
       CHECK(glm::length(o.eye - o.target) == doctest::Approx(glm::length(c.eye - c.target)).epsilon(1e-6));
       CHECK(o.eye.y == doctest::Approx(c.eye.y).epsilon(1e-6));  // the height along up is kept
-      const double a = std::atan2(double(o.eye.x - c.target.x), double(o.eye.z - c.target.z)) * 180.0 / 3.14159265358979323846;
+      const double a = std::atan2(double(o.eye.x - c.target.x), double(o.eye.z - c.target.z)) * 180.0 / prt::kPi;
       CHECK(std::remainder(a - degrees, 360.0) == doctest::Approx(0.0).epsilon(1e-4).scale(1.0));
     }
     CHECK(prt::Orbit(c, 0.0, lo, hi).eye == c.eye);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/atomic_file.h"
+#include "core/constants.h"
 #include "core/error.h"
 #include "core/simd.h"
 #include "geometry/procedural.h"
@@ -63,7 +64,7 @@ void WriteInputs(const std::string& dir) {
       const glm::vec3 p = m.positions[v], n = m.normals[v], d = p - glm::vec3(0.f, 1.f, 0.f);
       const bool ball = part.mesh == &sphere;
       const float u = ball ? 0.5f + std::atan2(d.x, d.z) / 6.2831853f : p.x / 5.f;
-      const float w = ball ? std::acos(std::clamp(d.y, -1.f, 1.f)) / 3.1415927f : p.z / 5.f;
+      const float w = ball ? std::acos(std::clamp(d.y, -1.f, 1.f)) / static_cast<float>(kPi) : p.z / 5.f;
       obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
       obj += "vn " + std::to_string(n.x) + " " + std::to_string(n.y) + " " + std::to_string(n.z) + "\n";
       obj += "vt " + std::to_string(u) + " " + std::to_string(w) + "\n";

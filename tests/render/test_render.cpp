@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "env/load_environment.h"
 #include "env/procedural.h"
 #include "geometry/mesh_ops.h"
@@ -22,8 +23,6 @@
 using namespace prt;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// A small scene with self-shadowing: a sphere resting on a plane, albedo 0.7.
 Mesh SphereOnPlane() {

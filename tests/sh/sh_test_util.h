@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/constants.h"
 #include "core/rng.h"
 #include "sh/basis.h"
 #include "sh/coeffs.h"
@@ -16,7 +17,7 @@ namespace prt::test {
 /// A direction uniform on the sphere, from two draws of `rng`.
 inline glm::dvec3 RandomDirection(Pcg32& rng) {
   const double z = 2.0 * rng.NextDouble() - 1.0;
-  const double phi = 2.0 * 3.14159265358979323846 * rng.NextDouble();
+  const double phi = 2.0 * kPi * rng.NextDouble();
   const double s = std::sqrt((1.0 - z) * (1.0 + z));
   return {s * std::cos(phi), s * std::sin(phi), z};
 }

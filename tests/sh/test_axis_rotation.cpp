@@ -16,6 +16,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "core/rng.h"
 #include "sh/axis_rotation.h"
 #include "sh/basis.h"
@@ -25,7 +26,6 @@ using namespace prt;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Bands 0..4: band matrices of every size up to 9 x 9 take part.
 constexpr int kLmax = 4;
 // The turned light against f(R^T d): one band-limited function evaluated two ways, coefficients

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/constants.h"
 #include "core/rng.h"
 #include "sh/basis.h"
 #include "sh/quadrature.h"
@@ -97,7 +98,7 @@ TEST_SUITE("sh") {
     }
     // At the north pole only m = 0 survives, with the value sqrt((2l+1)/(4 pi)).
     EvalBasis(lmax, {0, 0, 1}, y.data());
-    CHECK(y[ShIndex(200, 0)] == doctest::Approx(std::sqrt(401.0 / (4 * 3.14159265358979323846))).epsilon(1e-12));
+    CHECK(y[ShIndex(200, 0)] == doctest::Approx(std::sqrt(401.0 / (4 * kPi))).epsilon(1e-12));
     CHECK(y[ShIndex(200, 7)] == 0.0);
   }
 

@@ -6,14 +6,13 @@
 #include <cmath>
 #include <vector>
 
+#include "core/constants.h"
 #include "sh/convolved_range.h"
 #include "sh/zonal.h"
 
 using namespace prt;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// The search ends with compass steps of 1e-9 rad; at a smooth extremum the value it misses is
 /// second order in the step (1e-18), and the SH sums round near 1e-15 of the values: 1e-12 is

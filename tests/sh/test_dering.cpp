@@ -9,6 +9,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "core/rng.h"
 #include "sh/basis.h"
 #include "sh/dering.h"
@@ -19,8 +20,6 @@
 using namespace prt;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 using test::RandomDirection;
 

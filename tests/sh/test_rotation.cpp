@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/constants.h"
 #include "core/rng.h"
 #include "sh/basis.h"
 #include "sh/quadrature.h"
@@ -17,7 +18,6 @@ using namespace prt;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // The bound for orthogonality and Y(R d) = D Y(d) at lmax <= 10: rounding of a few products.
 constexpr double kRotationTolerance = 1e-13;
 // Rotate-then-project against project-then-rotate: exact quadrature on both sides, rounding

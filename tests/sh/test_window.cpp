@@ -8,6 +8,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/constants.h"
 #include "sh/coeffs.h"
 #include "sh/window.h"
 
@@ -15,7 +16,6 @@ using namespace prt;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // The weight is one cosine of a double: rounding of a few ulps of 1.
 constexpr double kRounding = 1e-14;
 // Highest lmax checked: every band of every lmax up to it (the command line allows 64, the

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/constants.h"
 #include "sh/basis.h"
 #include "sh/quadrature.h"
 #include "sh/zonal.h"
@@ -11,7 +12,6 @@
 using namespace prt;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 // A_l by its closed form against values from R&H 2001: both exact, rounding only.
 constexpr double kClosedFormTolerance = 1e-14;
 }  // namespace

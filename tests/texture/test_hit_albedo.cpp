@@ -21,9 +21,9 @@
 #include "geometry/bvh.h"
 #include "geometry/mesh_texture.h"
 #include "geometry/procedural.h"
+#include "precompute/hit_light.h"
 #include "precompute/reference.h"
 #include "precompute/transport.h"
-#include "precompute/transport_steps.h"
 
 using namespace prt;
 

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/atomic_file.h"
+#include "core/constants.h"
 #include "env/load_environment.h"
 #include "env/procedural.h"
 #include "geometry/mesh_ops.h"
@@ -224,7 +225,7 @@ namespace {
 // checker-textured floor, under the sky, shadowed: a procedural golden that needs no file.
 Mesh CheckerSphereOnFloor() {
   Mesh sphere = MakeSphere(24, 1.0f, glm::vec3(0.f, 1.f, 0.f));
-  const float pi = 3.14159265f;
+  const float pi = static_cast<float>(kPi);
   for (const auto& t : sphere.triangles) {
     glm::vec2 uv[3];
     for (int c = 0; c < 3; ++c) {

@@ -5,13 +5,13 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "wavelet/cube_grid.h"
 #include "wavelet/selection.h"
 
 namespace prt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 /// Sums of 6 F^2 exact terms: rounding only.
 constexpr double kSumRounding = 1e-10;
 /// A 64 x 64 midpoint rule over one texel against the exact clamped cosine: the rule's error

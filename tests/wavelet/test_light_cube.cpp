@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "env/equirect.h"
 #include "env/load_environment.h"
 #include "env/procedural.h"
@@ -15,7 +16,6 @@
 namespace prt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 /// The bound on the cube's integral against the environment's, per channel.
 constexpr double kEnergy = 1e-3;
 

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/constants.h"
 #include "core/parallel.h"
 #include "env/procedural.h"
 #include "geometry/mesh_ops.h"
@@ -23,7 +24,6 @@
 namespace prt {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 /// Float storage of coefficients summed over a few hundred terms.
 constexpr double kFloatSums = 1e-5;
 /// A one-texel light meets three details per level (9 at F = 8), each of its coefficients at
