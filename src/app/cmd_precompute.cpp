@@ -1,5 +1,6 @@
 #include <algorithm>
 
+#include "app/basis_table.h"
 #include "app/commands.h"
 #include "app/pipeline.h"
 #include "app/render_args.h"
@@ -51,9 +52,11 @@ CommandSpec PrecomputeSpec() {
   // No camera here: every vertex takes --samples (the course's viewer turns the model freely).
   std::vector<std::string> names = AllSceneOptionNames();
   names.erase(std::find(names.begin(), names.end(), "--hidden-samples"));
-  // The course's files are SH: --basis is taken only to refuse wavelet with a reason.
-  for (const char* wavelet_only : {"--cube-size", "--wavelet-terms", "--light-terms"})
-    names.erase(std::find(names.begin(), names.end(), wavelet_only));
+  // The course's files are SH: --basis is taken only to refuse the other bases with a reason,
+  // whose own options are not offered here.
+  for (const Basis& basis : Bases())
+    if (!basis.course_files)
+      for (const std::string& own : basis.options) names.erase(std::find(names.begin(), names.end(), own));
   OptionGroup scene = SceneOptionGroup(SceneOptions{}, names);
   for (auto& o : scene.options)
     if (o.name == "--max-edge")

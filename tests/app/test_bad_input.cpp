@@ -223,6 +223,7 @@ TEST_SUITE("app") {
              Case{"--sampler sideways", "--sampler: unknown value 'sideways'"},
              Case{"--tonemap film", "--tonemap: unknown value 'film'"},
              Case{"--view transport:x", "--view"},
+             Case{"--view transport", "--view: unknown value 'transport'"},  // the coefficient is not optional
              Case{"--no-such-option 3", "--no-such-option: unknown option"},
              Case{"stray", "'stray': unexpected argument"},
              Case{"--frames 2 --frames 3", "--frames: given twice"},

@@ -48,6 +48,39 @@ TEST_SUITE("app") {
     CHECK(r.err.find("--basis wavelet only") != std::string::npos);
   }
 
+  TEST_CASE("wavelet cli: each of the wavelet's own options is refused with --basis sh") {
+    // A table row whose options list lost one would let it pass silently with SH.
+    const std::string dir = ScratchDir("wavelet_own_options");
+    for (const std::string option : {"--cube-size 16", "--wavelet-terms 10", "--light-terms 8"}) {
+      CAPTURE(option);
+      const RunResult r = RunPrt(QuickRender(dir + "/o", 1) + " --basis sh " + option);
+      CHECK(r.exit_code == 2);
+      const std::string name = option.substr(0, option.find(' '));
+      CHECK(r.err.find(name + ": applies to --basis wavelet only") != std::string::npos);
+    }
+    CHECK(!std::filesystem::exists(FramePath(dir + "/o", 0, 1)));
+  }
+
+  TEST_CASE("wavelet cli: --light-terms reaches the frames' light") {
+    // The built-in sky kept to its 6 most important of 384 coefficients (--light-terms 6) against
+    // the whole sky (0): the vertices' radiance must differ, or the option never reached the
+    // frames. (A furnace would not do: its light is the six faces' scaling coefficients alone.)
+    const std::string dir = ScratchDir("wavelet_light_terms");
+    auto radiance = [&](const std::string& terms) {
+      const std::string file = dir + "/radiance_" + terms + ".txt";
+      const RunResult r = RunPrt("render --mesh " + Q(Fixture("obj/tetra_no_normals.obj")) +
+                                 " --env sky --transport unshadowed --size 16x12 --frames 1 --out " +
+                                 Q(dir + "/out_" + terms) + " --basis wavelet --cube-size 8 --light-terms " + terms +
+                                 " --vertex-radiance " + Q(file));
+      REQUIRE(r.exit_code == 0);
+      return ReadFile(file);
+    };
+    const std::string few = radiance("6");
+    const std::string all = radiance("0");
+    CHECK(!few.empty());
+    CHECK(few != all);
+  }
+
   TEST_CASE("wavelet cli: the run summary says the cube, the terms kept, the bytes and the truncation's cost") {
     const std::string dir = ScratchDir("wavelet_summary");
     SampleScene(dir);

@@ -77,6 +77,13 @@ TEST_SUITE("render") {
     }
     CHECK(words.size() == views.size());
     CHECK(words == std::set<std::string>{"radiance", "irradiance", "albedo", "transport", "light", "glossy"});
+    // Each word names its own View: two words swapped in both directions would still read back.
+    CHECK(std::string(ViewName(View::kRadiance)) == "radiance");
+    CHECK(std::string(ViewName(View::kIrradiance)) == "irradiance");
+    CHECK(std::string(ViewName(View::kAlbedo)) == "albedo");
+    CHECK(std::string(ViewName(View::kTransport)) == "transport");
+    CHECK(std::string(ViewName(View::kLight)) == "light");
+    CHECK(std::string(ViewName(View::kGlossy)) == "glossy");
     CHECK_FALSE(ViewFromName("Radiance").has_value());
     CHECK_FALSE(ViewFromName("transport:3").has_value());  // the index is the command line's to split
     CHECK_FALSE(ViewFromName("").has_value());
