@@ -139,6 +139,17 @@ TEST_SUITE("app") {
           std::string::npos);
     CHECK(ReadFile(other + "/light.txt") == "mine\n");
     CHECK(ReadFile(other + "/light.txt.orig") == "older\n");
+
+    // A render's --vertex-radiance file inside its folder is one of its planned outputs: refused
+    // at once too, before the transport is computed (the run summary has not begun).
+    const std::string frames = test::ScratchDir("kept_radiance");
+    std::ofstream(frames + "/radiance.txt") << "mine\n";
+    const auto radiance = test::RunPrt(test::QuickRender(frames, 1) + " --vertex-radiance " + test::Q(frames + "/radiance.txt"));
+    CHECK(radiance.exit_code == 1);
+    CHECK(radiance.err == "prt: error: " + frames + "/radiance.txt: exists and prt did not write it: this run would "
+                          "replace it (expected another --out, or --replace to replace it and keep the old file as "
+                          "radiance.txt.orig)\n");
+    CHECK(ReadFile(frames + "/radiance.txt") == "mine\n");
   }
 
   TEST_CASE("files kept: a render never removes what a precompute delivered, nor a precompute the frames") {

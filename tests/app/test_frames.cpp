@@ -90,6 +90,28 @@ TEST_SUITE("app") {
     const DiffMetrics back = CompareImages(ReadPng(test::FramePath(four, 3, 4)), ReadPng(test::FramePath(turned, 1, 4)));
     CHECK(back.max_abs <= 1);
     CHECK(back.differing_pixels <= 4);
+    // About -Y a quarter turn is +Y's three quarters: the mesh's light and the background both
+    // follow --axis (a light that turned about +Y whatever the axis would shade the mesh as
+    // frame 1 of the +Y turn).
+    const std::string down = Render("frames_down", scene + " --frames 4 --axis 0,-1,0");
+    const DiffMetrics axis = CompareImages(ReadPng(test::FramePath(four, 3, 4)), ReadPng(test::FramePath(down, 1, 4)));
+    CHECK(axis.max_abs <= 1);
+    CHECK(axis.differing_pixels <= 4);
+  }
+
+  TEST_CASE("frames: the run summary's bounce line says coloured albedo only when it is coloured") {
+    const std::string scene = "render --mesh " + Q(test::Fixture("obj/tetra_no_normals.obj")) +
+                              " --env sky --transport interreflection --samples 64 --size 16x12 --frames 1";
+    const std::string clause = "; coloured albedo: one transport vector per colour channel";
+    for (const std::string albedo : {"0.5,0.5,0.5", "0.5,0.4,0.3"}) {
+      CAPTURE(albedo);
+      const auto r = test::RunPrt(scene + " --albedo " + albedo + " --out " + Q(test::ScratchDir("albedo_clause")));
+      REQUIRE(r.exit_code == 0);
+      const std::size_t line = r.err.find("\nbounces: ");
+      REQUIRE(line != std::string::npos);
+      const std::string bounces = r.err.substr(line, r.err.find('\n', line + 1) - line);
+      CHECK((bounces.find(clause) != std::string::npos) == (albedo == "0.5,0.4,0.3"));
+    }
   }
 
   TEST_CASE("frames: a white floor beside a red wall is tinted red by the bounce, and grey without it") {

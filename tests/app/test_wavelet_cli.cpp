@@ -64,21 +64,31 @@ TEST_SUITE("app") {
   TEST_CASE("wavelet cli: --light-terms reaches the frames' light") {
     // The built-in sky kept to its 6 most important of 384 coefficients (--light-terms 6) against
     // the whole sky (0): the vertices' radiance must differ, or the option never reached the
-    // frames. (A furnace would not do: its light is the six faces' scaling coefficients alone.)
+    // frames, and so must the run summary's truncation cost. (A furnace would not do: its light is the six faces' scaling coefficients alone.)
     const std::string dir = ScratchDir("wavelet_light_terms");
     auto radiance = [&](const std::string& terms) {
       const std::string file = dir + "/radiance_" + terms + ".txt";
       const RunResult r = RunPrt("render --mesh " + Q(Fixture("obj/tetra_no_normals.obj")) +
                                  " --env sky --transport unshadowed --size 16x12 --frames 1 --out " +
-                                 Q(dir + "/out_" + terms) + " --basis wavelet --cube-size 8 --light-terms " + terms +
+                                 Q(dir + "/out_" + terms) + " --basis wavelet --cube-size 8 --wavelet-terms 12 --light-terms " + terms +
                                  " --vertex-radiance " + Q(file));
       REQUIRE(r.exit_code == 0);
-      return ReadFile(file);
+      // The run summary's truncation cost, in percent: "... differs from their unkept transport's by X% RMS".
+      const std::string cue = "unkept transport's by ";
+      const std::size_t at = r.err.find(cue);
+      REQUIRE(at != std::string::npos);
+      return std::make_pair(ReadFile(file), std::stod(r.err.substr(at + cue.size())));
     };
-    const std::string few = radiance("6");
-    const std::string all = radiance("0");
+    const auto [few, few_cost] = radiance("6");
+    const auto [all, all_cost] = radiance("0");
     CHECK(!few.empty());
     CHECK(few != all);
+    // The summary's truncation cost is measured under the light the frames use. Each vertex keeps
+    // 12 coefficients, the 6 faces' means first: the whole sky sees the lost details (tens of
+    // percent), a sky kept to its 6 most important coefficients (here its faces' means) almost
+    // none of them.
+    CHECK(all_cost > 5.0);
+    CHECK(few_cost < 0.01 * all_cost);
   }
 
   TEST_CASE("wavelet cli: the run summary says the cube, the terms kept, the bytes and the truncation's cost") {
@@ -95,6 +105,8 @@ TEST_SUITE("app") {
     CHECK(r.err.find("wavelet truncation: frame 0's direct light at 64 sample vertices") != std::string::npos);
     CHECK(r.err.find("kept to its 128 most important") != std::string::npos);
     CHECK(r.err.find("bounced light: in SH at lmax 2") != std::string::npos);
+    CHECK(r.err.find("\nbounces: ") != std::string::npos);  // the bounces' own line, each bounce's share
+    CHECK(r.err.find(" of the direct energy; ") != std::string::npos);
     CHECK(r.err.find("cache: not used with --basis wavelet") != std::string::npos);
     CHECK(r.err.find("ringing") == std::string::npos);
     CHECK(std::filesystem::exists(FramePath(dir + "/out", 1, 2)));

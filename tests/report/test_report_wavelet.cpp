@@ -2,6 +2,7 @@
 // report.csv rows and chart, and the command that writes them.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -65,6 +66,19 @@ std::size_t Inked(const prt::Image8& im, int x0, int x1) {
 }  // namespace
 
 TEST_SUITE("report") {
+  TEST_CASE("sun scene: the knot's vertices first, standing 2 units tall on the ground's plane") {
+    // The study's probe vertices and the measured numbers of report.md were taken on this order:
+    // the knot's (48 x 8) vertices, then the ground's (13 x 13) on y = 0.
+    const prt::Mesh mesh = prt::MakeSunScene(48, 8, 12);
+    const std::size_t knot = 48 * 8;
+    REQUIRE(mesh.vertex_count() == knot + 13 * 13);
+    float lo = 1e9f, hi = -1e9f;
+    for (std::size_t v = 0; v < knot; ++v) lo = std::min(lo, mesh.positions[v].y), hi = std::max(hi, mesh.positions[v].y);
+    CHECK(lo == doctest::Approx(0.05));  // lifted off the ground
+    CHECK(hi == doctest::Approx(2.05));
+    for (std::size_t v = knot; v < mesh.vertex_count(); ++v) CHECK(mesh.positions[v].y == 0.0f);
+  }
+
   TEST_CASE("basis study: errors fall with lmax and budget, memory is what each basis stores") {
     const prt::WaveletStudy& s = SmallStudy();
     const prt::WaveletStudyConfig& c = s.config;
