@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include <glm/vec3.hpp>
 
@@ -103,14 +104,15 @@ TEST_SUITE("app") {
     const std::string scene = "render --mesh " + Q(test::Fixture("obj/tetra_no_normals.obj")) +
                               " --env sky --transport interreflection --samples 64 --size 16x12 --frames 1";
     const std::string clause = "; coloured albedo: one transport vector per colour channel";
-    for (const std::string albedo : {"0.5,0.5,0.5", "0.5,0.4,0.3"}) {
+    const std::pair<std::string, bool> cases[] = {{"0.5,0.5,0.5", false}, {"0.5,0.4,0.3", true}};  // albedo, coloured
+    for (const auto& [albedo, coloured] : cases) {
       CAPTURE(albedo);
       const auto r = test::RunPrt(scene + " --albedo " + albedo + " --out " + Q(test::ScratchDir("albedo_clause")));
       REQUIRE(r.exit_code == 0);
       const std::size_t line = r.err.find("\nbounces: ");
       REQUIRE(line != std::string::npos);
       const std::string bounces = r.err.substr(line, r.err.find('\n', line + 1) - line);
-      CHECK((bounces.find(clause) != std::string::npos) == (albedo == "0.5,0.4,0.3"));
+      CHECK((bounces.find(clause) != std::string::npos) == coloured);
     }
   }
 

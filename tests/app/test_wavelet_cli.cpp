@@ -64,14 +64,15 @@ TEST_SUITE("app") {
   TEST_CASE("wavelet cli: --light-terms reaches the frames' light") {
     // The built-in sky kept to its 6 most important of 384 coefficients (--light-terms 6) against
     // the whole sky (0): the vertices' radiance must differ, or the option never reached the
-    // frames, and so must the run summary's truncation cost. (A furnace would not do: its light is the six faces' scaling coefficients alone.)
+    // frames, and so must the run summary's truncation cost. (A furnace would not do: its light
+    // is the six faces' scaling coefficients alone.)
     const std::string dir = ScratchDir("wavelet_light_terms");
     auto radiance = [&](const std::string& terms) {
       const std::string file = dir + "/radiance_" + terms + ".txt";
       const RunResult r = RunPrt("render --mesh " + Q(Fixture("obj/tetra_no_normals.obj")) +
                                  " --env sky --transport unshadowed --size 16x12 --frames 1 --out " +
-                                 Q(dir + "/out_" + terms) + " --basis wavelet --cube-size 8 --wavelet-terms 12 --light-terms " + terms +
-                                 " --vertex-radiance " + Q(file));
+                                 Q(dir + "/out_" + terms) + " --basis wavelet --cube-size 8 --wavelet-terms 12" +
+                                 " --light-terms " + terms + " --vertex-radiance " + Q(file));
       REQUIRE(r.exit_code == 0);
       // The run summary's truncation cost, in percent: "... differs from their unkept transport's by X% RMS".
       const std::string cue = "unkept transport's by ";

@@ -1,6 +1,6 @@
 // The transport view's colour scale (TransportViewScale): its ends are the largest |T_k| over the
-// vertices, so a coefficient that is negative everywhere (the lower band's odd functions on an
-// up-facing floor) is drawn at full strength, not divided by zero or by its smallest magnitude.
+// vertices, so a coefficient that is negative everywhere (T_6 on an up-facing floor: prt help
+// basis) is drawn at full strength, not divided by zero or by its smallest magnitude.
 #include <doctest/doctest.h>
 
 #include <vector>
