@@ -18,7 +18,7 @@ set(PRT_MODULES
   "raster: core texture sh"
   "basis: geometry"
   "sh_basis: core sh basis precompute cpca"
-  "wavelet: core sh geometry env precompute basis"
+  "wavelet: core sh geometry env precompute precompute_io basis"
   "video: core io"
   "render: core sh geometry io env raster basis video"
   "report: core sh geometry io material env precompute cpca raster sh_basis wavelet render"

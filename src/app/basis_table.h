@@ -4,10 +4,10 @@
 /// them, and every command asks the row what its basis can do instead of comparing names. A
 /// basis is a folder of src/ behind basis/frame_light.h (sh_basis/, wavelet/) and one row here:
 ///
-///   name    course  glossy  coefficient  SH light   own options
+///   name    course  glossy  coefficient  SH light   own options                                cache
 ///           files           view         windowed
-///   sh      yes     yes     yes          yes        -
-///   wavelet no      no      no           no         --cube-size --wavelet-terms --light-terms
+///   sh      yes     yes     yes          yes        -                                          transport.cache
+///   wavelet no      no      no           no         --cube-size --wavelet-terms --light-terms  wavelet.cache
 
 #include <cstdint>
 #include <memory>
@@ -56,8 +56,17 @@ struct Basis {
   bool windowed_light;       ///< its frames are lit by the windowed SH light, whose ringing the run reports
   bool report_study;         ///< prt report --basis NAME measures it against SH (report/report_wavelet.h)
   std::vector<std::string> options;  ///< the options that apply to this basis alone
+  /// The --lmax it takes when none is given (-1: the scene options' own default), and why.
+  int lmax;
+  const char* lmax_why;
+  /// Its transport cache's name in the output folder (PlanCache, app/pipeline.h): each basis its
+  /// own, so that neither replaces the other's.
+  const char* cache_name;
   /// Computes the transport (said on the run summary) and makes the frames' light.
   PreparedBasis (*prepare)(const BasisInputs& inputs);
+  /// Makes the frames' light without a transport, for the light view, which draws the light as
+  /// the basis keeps it and no transport (FrameLight::Kept; nothing else may be called).
+  PreparedBasis (*prepare_light)(const BasisInputs& inputs);
 };
 
 /// Every basis, the default first.

@@ -20,6 +20,7 @@
 #include "raster/exposure.h"
 #include "sh/dering.h"
 #include "sh/window.h"
+#include "wavelet/transport_cache.h"
 
 namespace prt {
 namespace {
@@ -152,12 +153,12 @@ TransportOptions TransportOptionsOf(const SceneOptions& options, const std::opti
   return t;
 }
 
-CachePlan PlanCache(const std::string& option, OutputFolder* folder) {
+CachePlan PlanCache(const std::string& option, OutputFolder* folder, const std::string& name) {
   namespace fs = std::filesystem;
   if (option == "none") return {"", false};
   const bool given = !option.empty();
   if (!given && !folder) return {"", false};
-  const std::string path = given ? option : folder->dir() + "/transport.cache";
+  const std::string path = given ? option : folder->dir() + "/" + name;
   const std::string what = (given ? "--cache: " : "cache: ") + path + ": ";
   const auto skip = [&what](const std::string& why) {
     Warn(what + why + "; going on without the cache");
@@ -177,8 +178,9 @@ CachePlan PlanCache(const std::string& option, OutputFolder* folder) {
     if (!fs::is_regular_file(fs::status(path, ec))) return skip("is not a regular file: left alone");
     // In the output folder, a file prt listed as its own may be replaced whatever it holds, an
     // unlisted one only if it is a cache; a --cache file if it is a cache or empty.
-    const bool listed = !given && !folder->IsForeign("transport.cache");
-    if (!listed && (!given || fs::file_size(path, ec) > 0) && !StartsLikeTransportCache(path))
+    const bool listed = !given && !folder->IsForeign(name);
+    const bool cache = StartsLikeTransportCache(path) || StartsLikeWaveletCache(path);
+    if (!listed && (!given || fs::file_size(path, ec) > 0) && !cache)
       return skip("exists and is not a prt transport cache: left as it is");
     if (fs::is_symlink(link)) {
       Warn(what + "is a symbolic link: the cache is read if it matches, but never replaced");
@@ -189,7 +191,7 @@ CachePlan PlanCache(const std::string& option, OutputFolder* folder) {
     Warn(what + WriteProblem(path, errno) + ": the cache is read if it matches, but not updated");
     return {path, false};
   }
-  return {given ? path : folder->OutputInPlace("transport.cache"), true};
+  return {given ? path : folder->OutputInPlace(name), true};
 }
 
 namespace {
@@ -217,7 +219,9 @@ Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, c
   topts.seen = seen;  // used only where the two counts differ (direction_pool.h, the cache key)
   const std::uint64_t key = TransportKey(mesh, topts);
   std::string why;
-  if (!cache.path.empty()) {
+  if (!cache.path.empty() && StartsLikeWaveletCache(cache.path)) {
+    why = "a wavelet transport cache (--basis wavelet), not an SH one";  // the SH reader knows only its own
+  } else if (!cache.path.empty()) {
     if (auto cached = ReadTransportCache(cache.path, key, why)) {
       Summary("transport: taken from the cache " + cache.path + " (same mesh and options)");
       cached->material = topts.material;

@@ -7,7 +7,8 @@
 ///        -> LoadSceneMesh -> Mesh (oriented, split)  -> SceneCamera
 ///        -> LoadSceneEnvironment -> ComputeLight -> light SH
 ///        -> the basis's prepare (app/basis_table.h): its transport (SH: ComputeSceneTransport,
-///           or the cache) and the FrameLight that turns each frame's light
+///           wavelets: SceneWavelets, each from its cache when it can) and the FrameLight that
+///           turns each frame's light; the light view's prepare_light: the light alone
 ///        -> RenderFrames -> frame_0000.png ...     -> OutputFolder::Finish
 ///
 /// Each stage is a function from const inputs to a returned value and reports what it did (and
@@ -28,6 +29,8 @@
 #include "raster/camera.h"
 #include "render/render_frames.h"
 #include "sh/coeffs.h"
+#include "wavelet/options.h"
+#include "wavelet/transport.h"
 
 namespace prt {
 
@@ -71,9 +74,11 @@ struct CachePlan {
   bool write = true;    ///< false: read if present, never written (folder not writable)
 };
 
-/// The plan for the `--cache` value `option` ("" = `transport.cache` in `folder`, "none" = no
-/// cache), checked before any work.
-CachePlan PlanCache(const std::string& option, OutputFolder* folder);
+/// The plan for the `--cache` value `option` ("" = the file `name` in `folder`: each basis has
+/// its own, app/basis_table.h; "none" = no cache), checked before any work. A file there already
+/// is replaced only when it is prt's: a cache of either basis, however damaged, or a file prt
+/// listed under that name.
+CachePlan PlanCache(const std::string& option, OutputFolder* folder, const std::string& name = "transport.cache");
 
 /// The transport of `mesh`: read from the cache when that file was made from the same mesh
 /// and options, else computed (and written there when the plan allows; a failed write is a
@@ -85,6 +90,15 @@ CachePlan PlanCache(const std::string& option, OutputFolder* folder);
 Transport ComputeSceneTransport(const Mesh& mesh, const SceneOptions& options, const CachePlan& cache,
                                 const std::vector<std::uint8_t>& seen = {}, const Camera* camera = nullptr,
                                 bool matrices = false);
+
+/// The wavelet transport of `mesh` (wavelet/transport.h) for the transport options `sh` and the
+/// wavelet options `w`: read from the cache (wavelet/transport_cache.h) when that file was made
+/// from the same mesh and options, or from every vertex computed as a seen one when only the
+/// seen vertices were asked for; else ComputeSceneWavelets (wavelet/summary.h, `env` the light its
+/// truncation cost is measured under), written there when the plan allows (a failed write is a
+/// warning). Said on the run summary.
+WaveletTransport SceneWavelets(const Mesh& mesh, const TransportOptions& sh, const WaveletOptions& w,
+                               const Environment& env, const CachePlan& cache);
 
 /// Says on the run summary what the transfer matrices of `mesh` will take, and throws Error,
 /// naming the largest lmax that fits, when that is more than the memory available allows.

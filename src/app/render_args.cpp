@@ -12,6 +12,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include "app/basis_table.h"
 #include "app/render_video.h"
 #include "core/atomic_file.h"  // WriteProblem
 #include "core/error.h"
@@ -57,8 +58,8 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderJobOptions& job) {
   add({"--view", "V",
        "radiance | irradiance | albedo | transport:K | light | glossy: the final colour; the lighting alone (albedo 1); "
        "the albedo; the K-th transport coefficient in false colour with a legend, on a grey background; the "
-       "light as the SH coefficients reconstruct it (on the mesh: in the normal's direction); a glossy "
-       "material's lobe term alone (the highlights, without the diffuse part)",
+       "light as the basis keeps it (on the mesh: in the normal's direction; no transport is computed for it); a "
+       "glossy material's lobe term alone (the highlights, without the diffuse part)",
        ViewText(d)});
   add({"--eye", "X,Y,Z", "camera position",
        d.eye ? VecText(*d.eye)
@@ -97,7 +98,7 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderJobOptions& job) {
   add({"--cache", "PATH",
        "transport cache to reuse and update, so a re-run with the same mesh and options skips the precompute; "
        "`none` disables it; a path that cannot be used is a warning, not an error",
-       job.cache.empty() ? "DIR/transport.cache" : job.cache});
+       job.cache.empty() ? "DIR/transport.cache; DIR/wavelet.cache with --basis wavelet" : job.cache});
   return s;
 }
 
@@ -195,8 +196,12 @@ bool IsFolderOwnName(const std::string& file, const RenderJobOptions& o) {
   const std::string name = std::filesystem::path(file).filename().string();
   static const std::regex frame("frame_[0-9]+\\.png", std::regex::icase);
   if (LiesIn(file, o.out) && (std::regex_match(name, frame) || name.rfind(".prt", 0) == 0)) return true;
-  const std::string cache = o.cache.empty() ? o.out + "/transport.cache" : o.cache;
-  return o.cache != "none" && ResolvedPath(file) == ResolvedPath(cache);
+  if (o.cache == "none") return false;
+  if (!o.cache.empty()) return ResolvedPath(file) == ResolvedPath(o.cache);
+  // Every basis's cache in the folder: a run of one keeps the others' (render_job.cpp).
+  for (const Basis& basis : Bases())
+    if (ResolvedPath(file) == ResolvedPath(o.out + "/" + basis.cache_name)) return true;
+  return false;
 }
 
 bool HasControlCharacter(const std::string& file) {

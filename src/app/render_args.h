@@ -25,8 +25,8 @@ struct RenderJobOptions {
   std::string out = "out/render";  ///< the output folder (core/output_folder.h)
   /// --replace: files in `out` that prt did not write may be replaced (kept as NAME.orig).
   bool replace = false;
-  /// The transport cache to reuse and update (PlanCache, app/pipeline.h): empty for
-  /// "DIR/transport.cache", "none" for none.
+  /// The transport cache to reuse and update (PlanCache, app/pipeline.h): empty for the basis's
+  /// own in the output folder ("DIR/transport.cache", "DIR/wavelet.cache"), "none" for none.
   std::string cache;
   /// --cpca: the transfer matrices of a glossy --orbit compressed by clustered PCA (app/scene_cpca.cpp)
   /// into `clusters` clusters of a mean and `terms` principal matrices; 0 clusters: the full
@@ -45,7 +45,8 @@ OptionGroup RenderOptionGroup(const RenderJobOptions& defaults, const std::vecto
                               const std::string& title = "render options");
 
 /// True if `file` names a file of the output folder that the run writes or owns itself (a frame,
-/// `.prt-*`, the transport cache): --video and --vertex-radiance may not take that name.
+/// `.prt-*`, the transport cache of any basis, or the --cache file): --video and
+/// --vertex-radiance may not take that name.
 bool IsFolderOwnName(const std::string& file, const RenderJobOptions& o);
 
 /// True if `file` has a control character (a newline would break the folder's list of outputs).

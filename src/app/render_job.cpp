@@ -104,7 +104,10 @@ std::string RingingNote(std::size_t pixels, const ShRgb& light, const SceneOptio
 void RenderJob(const SceneOptions& scene, const RenderJobOptions& job) {
   const RenderOptions& render = job.draw;  // all that the frame loop reads
   OutputFolder folder(job.out, RenderPlan(job));
-  const CachePlan cache = PlanCache(job.cache, &folder);
+  const CachePlan cache = PlanCache(job.cache, &folder, scene.basis->cache_name);
+  // The other bases' caches stay in the folder: a run of one basis does not remove another's.
+  for (const Basis& other : Bases())
+    if (&other != scene.basis) folder.OutputInPlace(other.cache_name);
 
   // Mesh and camera first: a camera that cannot see is refused before any light is loaded.
   const Mesh mesh = LoadSceneMesh(scene, &folder);
@@ -119,11 +122,23 @@ void RenderJob(const SceneOptions& scene, const RenderJobOptions& job) {
 
   const auto env = LoadSceneEnvironment(scene, &folder);
   const ShRgb light = ComputeLight(*env, scene, render.view);
-  // The vertices the frames show take --samples directions, the others --hidden-samples.
+  // The light view draws the light alone: no transport, unless --vertex-radiance writes the
+  // vertices' radiance.
+  const bool transport = render.view != View::kLight || !job.vertex_radiance.empty();
+  // The vertices the frames show take --samples directions, the others --hidden-samples; with
+  // --vertex-radiance, which writes every vertex, all of them are computed as seen ones.
   std::vector<std::uint8_t> seen;
-  if (scene.transport != "unshadowed" && scene.hidden_samples != scene.samples) seen = SeenVertices(mesh, camera, render);
+  const bool fewer = scene.transport != "unshadowed" && scene.hidden_samples != scene.samples;
+  if (transport && fewer && job.vertex_radiance.empty()) seen = SeenVertices(mesh, camera, render);
+  if (fewer && !job.vertex_radiance.empty())
+    Summary("vertex radiance: every vertex computed as one the camera sees (--hidden-samples " +
+            std::to_string(scene.hidden_samples) + " not used): --vertex-radiance writes them all, and none may depend "
+            "on the camera");
   // The transport in its basis (app/basis_table.h), and the light each frame turns for it.
-  const PreparedBasis basis = scene.basis->prepare({mesh, scene, render.axis, job.cpca, *env, light, seen, camera, cache, matrices});
+  const BasisInputs inputs{mesh, scene, render.axis, job.cpca, *env, light, seen, camera, cache, matrices};
+  if (!transport)
+    Summary("transport: none computed (--view light draws the light as the basis keeps it, not the mesh's transport)");
+  const PreparedBasis basis = transport ? scene.basis->prepare(inputs) : scene.basis->prepare_light(inputs);
   FrameLight& frame_light = *basis.light;
   std::unique_ptr<SingleFileOutput> radiance_outside;
   if (!job.vertex_radiance.empty())

@@ -58,7 +58,8 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
                        " at lmax 2"});
   add({"--hidden-samples", "N",
        "ray directions per vertex the camera does not see (facing away or behind other surfaces in every "
-       "frame), 1..16777216: they show only through the light they bounce",
+       "frame), 1..16777216: they show only through the light they bounce; not used with --vertex-radiance, which "
+       "writes every vertex",
        d.hidden_samples ? std::to_string(d.hidden_samples)
                         : "the sample rule's, e.g. fibonacci " + std::to_string(DefaultHiddenSamples(2, Sampler::kFibonacci)) +
                               " at lmax 2, at most --samples"});
@@ -318,6 +319,11 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
     const AutoLmax choice = ChooseLmax(*LoadEnvironment(o.env, o.layout), o.tolerance, kMaxLmax);
     o.lmax = choice.lmax;
     Summary(choice.why);
+  }
+  // A basis may take its own lmax when none is given (the wavelets' bounces: app/basis_table.cpp).
+  if (o.basis->lmax >= 0 && !args.Has("--lmax") && !o.lmax_auto) {
+    o.lmax = o.basis->lmax;
+    o.lmax_why = o.basis->lmax_why;
   }
   ResolveSamples(args, o);
   if (has("--lmax")) WarnIfLobeTooSharp(o);  // commands without bands (reference) have nothing to warn of

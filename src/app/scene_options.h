@@ -51,6 +51,7 @@ struct SceneOptions {
   CubeLayout layout = CubeLayout::kStandard;  ///< --games202-faces selects the course's
   std::string window = "none";       ///< none | hann | lanczos | auto, or kDefaultWindow (render, demo)
   bool lmax_auto = false;            ///< --lmax auto: lmax chosen by --tolerance (report_auto_lmax.h)
+  std::string lmax_why;              ///< why lmax is not --lmax's default when the basis chose it ("": it did not)
   double tolerance = 0.01;           ///< --tolerance: relative irradiance error for --lmax auto
   /// --max-edge: split triangles until no edge is longer than this (0: keep the mesh as it is);
   /// a fraction of the bounding-box diagonal when max_edge_relative.

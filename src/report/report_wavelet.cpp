@@ -1,5 +1,8 @@
 #include "report/report_wavelet.h"
 
+#include <memory>
+#include "wavelet/texel_sh.h"
+
 #include <algorithm>
 #include <chrono>
 #include <limits>
@@ -16,6 +19,7 @@
 #include "wavelet/transport.h"
 #include "report/report_sweep.h"
 #include "wavelet/light_cube.h"
+#include "wavelet/texel_sh.h"
 
 namespace prt {
 namespace {
@@ -74,10 +78,7 @@ WaveletStudy RunWaveletStudy(const Mesh& mesh, const Environment& env, const Wav
   const ShRgb sh_light = ProjectLight(env, top_lmax);
   // The cube light: every texel its mean radiance, every coefficient kept (--light-terms 0).
   const CubeGrid grid(c.face_size);
-  CubeRgb cube;
-  LightCube(env, grid, c.split).Resample(glm::dmat3(1.0), cube);
-  CubeToHaar(grid.size(), cube);
-  const WaveletLight cube_light = PackWaveletLight(cube);
+  const LightCube light_cube(env, grid);
 
   for (TransportMode mode : c.modes) {
     ReferenceOptions ro;
@@ -122,6 +123,9 @@ WaveletStudy RunWaveletStudy(const Mesh& mesh, const Environment& env, const Wav
       row.lmax = mode == TransportMode::kInterreflection ? c.bounce_lmax : 0;
       row.budget = w.budget = budget;
       const WaveletTransport t = TimedWavelets(mesh, to, w, row.seconds);
+      CubeRgb cube;
+      const std::unique_ptr<TexelSh> base = t.base_lmax >= 0 ? std::make_unique<TexelSh>(grid, t.base_lmax) : nullptr;
+      const WaveletLight cube_light = TurnedWaveletLight(light_cube, glm::dmat3(1.0), 0, {}, base.get(), cube);
       const std::size_t nv = std::max<std::size_t>(t.vertices, 1);
       row.kept = double(t.Kept()) / double(nv);
       row.kept_energy = t.kept_energy;

@@ -6,6 +6,7 @@
 #include "wavelet/cube_grid.h"
 #include "wavelet/light_cube.h"
 #include "wavelet/shade.h"
+#include "wavelet/texel_sh.h"
 
 namespace prt {
 namespace {
@@ -20,13 +21,14 @@ class WaveletFrameLight : public FrameLight {
         axis_(glm::normalize(axis)),
         light_terms_(light_terms),
         weights_(SelectionWeights(transport.face_size, selection)),
+        base_(transport.base_lmax >= 0 ? std::make_unique<TexelSh>(grid_, transport.base_lmax) : nullptr),
         sh_light_(transport.bounce.coeffs.empty() ? ShRgb{} : FirstBands(sh_light, transport.bounce.lmax)),
         rotation_(axis, transport.bounce.coeffs.empty() ? 0 : transport.bounce.lmax) {
     Turn(0.0);
   }
 
   void Turn(double angle) override {
-    light_ = TurnedWaveletLight(cube_, AxisAngle(axis_, angle), light_terms_, weights_, kept_);
+    light_ = TurnedWaveletLight(cube_, AxisAngle(axis_, angle), light_terms_, weights_, base_.get(), kept_);
     CubeFromHaar(grid_.size(), kept_);  // the kept light back on the texels, for Kept()
     if (!sh_light_.empty()) lit_sh_ = rotation_.Rotate(sh_light_, angle);
   }
@@ -51,6 +53,7 @@ class WaveletFrameLight : public FrameLight {
   glm::dvec3 axis_;
   int light_terms_;
   std::vector<double> weights_;
+  std::unique_ptr<TexelSh> base_;  ///< the transport's SH base over the texels
   ShRgb sh_light_;
   AxisRotation rotation_;
   CubeRgb kept_;        ///< the frame's light as kept, on the texels

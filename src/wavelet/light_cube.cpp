@@ -8,7 +8,6 @@
 
 #include "core/color.h"
 #include "core/constants.h"
-#include "core/parallel.h"
 #include "env/cube_faces.h"
 #include "wavelet/haar.h"
 
@@ -22,74 +21,114 @@ void Frame(const glm::dvec3& axis, glm::dvec3& x, glm::dvec3& y) {
   y = glm::cross(axis, x);
 }
 
+/// The environment's quadrature nodes gathered into the cells of `fine`: per cell the nodes'
+/// energy and solid angle, and their directions weighted by luminance times solid angle (where a
+/// bright source in the cell lies) and by solid angle alone (for a cell that is black).
+struct Cells {
+  std::vector<glm::dvec3> energy, bright, moment;
+  std::vector<double> solid_angle;
+};
+
+Cells GatherNodes(const Environment& env, const CubeGrid& fine) {
+  Cells cells;
+  cells.energy.assign(fine.texels(), glm::dvec3(0.0));
+  cells.moment.assign(fine.texels(), glm::dvec3(0.0));
+  cells.bright.assign(fine.texels(), glm::dvec3(0.0));
+  cells.solid_angle.assign(fine.texels(), 0.0);
+  double smallest = 4.0 * kPi;
+  for (std::size_t t = 0; t < fine.face_texels(); ++t) smallest = std::min(smallest, fine.SolidAngle(t));
+  const auto add = [&](const glm::dvec3& d, double omega, const glm::dvec3& radiance) {
+    const std::size_t c = fine.TexelOf(d);
+    cells.energy[c] += omega * radiance;
+    cells.moment[c] += omega * d;
+    cells.bright[c] += omega * Luminance(radiance) * d;
+    cells.solid_angle[c] += omega;
+  };
+  std::vector<Texel> row;
+  for (std::size_t i = 0; i < env.RowCount(); ++i) {
+    env.Row(i, row);
+    for (const Texel& node : row) {
+      // A node wider than half the smallest cell is cut into k x k equal parts on the square of
+      // its own solid angle around its direction (its shape is not known; its energy is kept).
+      const int k = std::min(64, static_cast<int>(std::ceil(std::sqrt(node.solid_angle / (0.5 * smallest)))));
+      if (k <= 1) {
+        add(node.dir, node.solid_angle, node.radiance);
+        continue;
+      }
+      glm::dvec3 x, y;
+      Frame(node.dir, x, y);
+      const double side = std::sqrt(node.solid_angle), part = node.solid_angle / (double(k) * k);
+      for (int a = 0; a < k; ++a)
+        for (int b = 0; b < k; ++b)
+          add(glm::normalize(node.dir + side * (((a + 0.5) / k - 0.5) * x + ((b + 0.5) / k - 0.5) * y)), part,
+              node.radiance);
+    }
+  }
+  return cells;
+}
+
 }  // namespace
 
-LightCube::LightCube(const Environment& env, const CubeGrid& grid, int split) : env_(env), grid_(grid), split_(split) {
-  // The sub-squares' solid angles, the same on every face.
-  const int n = grid.size() * split;
-  sub_solid_angle_.resize(static_cast<std::size_t>(n) * n);
-  const double step = 2.0 / n;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j)
-      sub_solid_angle_[std::size_t(i) * n + j] =
-          FaceRectSolidAngle(-1.0 + j * step, -1.0 + i * step, -1.0 + (j + 1) * step, -1.0 + (i + 1) * step);
-  // Each disk cut into rings even in cos theta and sectors even in azimuth: equal solid angles.
-  // A texel spans 2 / size radians at a face's centre and about 0.88 / size at the cube's
-  // corners (its side over 3^(3/4)); pieces at most 0.35 / size apart (rings 4 a step of
-  // 1.4 / size, sectors 8 pi sin(radius) a step along the rim) are under half the smallest.
-  const double texel_angle = 1.4 / grid.size();
+LightCube::LightCube(const Environment& env, const CubeGrid& grid, int fine) : grid_(grid), spread_(grid) {
+  const CubeGrid cells_grid(grid.size() * fine);
+  const Cells cells = GatherNodes(env, cells_grid);
+  for (std::size_t c = 0; c < cells_grid.texels(); ++c) {
+    if (cells.solid_angle[c] <= 0.0) continue;
+    const glm::dvec3 m = glm::length(cells.bright[c]) > 0.0 ? cells.bright[c] : cells.moment[c];
+    const glm::dvec3 centroid = glm::length(m) > 0.0 ? glm::normalize(m) : cells_grid.Direction(c);
+    pieces_.push_back({centroid, cells.solid_angle[c], cells.energy[c]});
+    energy_ += cells.energy[c];
+  }
+  // Each disk cut into rings even in cos theta and sectors even in azimuth: equal solid angles,
+  // at most a quarter of a cell apart (a cell spans at least 0.88 / (F fine) radians, at the
+  // cube's corners: its side over 3^(3/4)).
+  const double spacing = 0.22 / cells_grid.size();
   for (const LightDisk& d : env.Disks()) {
     const double radius = std::acos(std::clamp(d.cos_radius, -1.0, 1.0));
-    const int rings = std::max(16, static_cast<int>(std::ceil(4.0 * radius / texel_angle)));
-    const int sectors = std::max(32, static_cast<int>(std::ceil(8.0 * kPi * std::sin(std::min(radius, kPi / 2)) / texel_angle)));
+    const int rings = std::max(16, static_cast<int>(std::ceil(radius / spacing)));
+    const int sectors = std::max(32, static_cast<int>(std::ceil(2.0 * kPi * std::sin(std::min(radius, kPi / 2)) / spacing)));
     glm::dvec3 x, y;
-    Frame(glm::normalize(d.dir), x, y);
     const glm::dvec3 z = glm::normalize(d.dir);
+    Frame(z, x, y);
     const double dz = (1.0 - d.cos_radius) / rings;
-    PieceSet set{d.radiance, dz * 2.0 * kPi / sectors, disk_pieces_.size(), 0};
+    const glm::dvec3 energy = d.radiance * (dz * 2.0 * kPi / sectors);
     for (int r = 0; r < rings; ++r) {
       const double cz = 1.0 - (r + 0.5) * dz, sz = std::sqrt(std::max(0.0, 1.0 - cz * cz));
       for (int s = 0; s < sectors; ++s) {
         const double phi = 2.0 * kPi * (s + 0.5) / sectors;
-        disk_pieces_.push_back(sz * std::cos(phi) * x + sz * std::sin(phi) * y + cz * z);
+        pieces_.push_back({sz * std::cos(phi) * x + sz * std::sin(phi) * y + cz * z, 0.0, energy});
+        energy_ += energy;
       }
     }
-    set.end = disk_pieces_.size();
-    disks_.push_back(set);
   }
 }
 
 void LightCube::Resample(const glm::dmat3& turn, CubeRgb& out) const {
   const std::size_t texels = grid_.texels();
+  std::vector<glm::dvec3> energy(texels, glm::dvec3(0.0));
+  std::vector<double> area(texels, 0.0);
+  std::uint32_t to[kMaxSpread];
+  double w[kMaxSpread];
+  for (const Piece& p : pieces_) {
+    const int n = spread_.Spread(turn * p.dir, to, w);
+    for (int i = 0; i < n; ++i) {
+      energy[to[i]] += w[i] * p.energy;
+      area[to[i]] += w[i] * p.solid_angle;
+    }
+  }
+  glm::dvec3 got(0.0);
   for (auto& c : out.c) c.assign(texels, 0.0);
-  const glm::dmat3 back = glm::transpose(turn);
-  const int size = grid_.size(), n = size * split_;
-  const double step = 2.0 / n;
-  // The grid's radiance: each texel the solid-angle-weighted mean of its sub-squares.
-  ParallelFor(texels, 256, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t t = begin; t < end; ++t) {
-      const int face = static_cast<int>(t / grid_.face_texels());
-      const std::size_t rest = t % grid_.face_texels();
-      const int row = static_cast<int>(rest / size), col = static_cast<int>(rest % size);
-      glm::dvec3 sum(0.0);
-      double area = 0.0;
-      for (int i = row * split_; i < (row + 1) * split_; ++i)
-        for (int j = col * split_; j < (col + 1) * split_; ++j) {
-          const double w = sub_solid_angle_[std::size_t(i) * n + j];
-          const glm::dvec3 d = grid_.FacePoint(face, -1.0 + (j + 0.5) * step, -1.0 + (i + 0.5) * step);
-          sum += w * env_.RadianceWithoutDisks(back * d);
-          area += w;
-        }
-      for (int c = 0; c < 3; ++c) out.c[c][t] = sum[c] / area;
+  for (std::size_t t = 0; t < texels; ++t) {
+    if (area[t] <= 0.0) continue;
+    for (int c = 0; c < 3; ++c) {
+      out.c[c][t] = energy[t][c] / area[t];
+      got[c] += grid_.SolidAngle(t) * out.c[c][t];
     }
-  });
-  // The disks: each piece's energy into the texel its turned centre falls in.
-  for (const PieceSet& set : disks_)
-    for (std::size_t p = set.begin; p < set.end; ++p) {
-      const std::size_t t = grid_.TexelOf(turn * disk_pieces_[p]);
-      const glm::dvec3 add = set.radiance * (set.solid_angle / grid_.SolidAngle(t));
-      for (int c = 0; c < 3; ++c) out.c[c][t] += add[c];
-    }
+  }
+  // One factor per channel: the total back to the environment's integral.
+  for (int c = 0; c < 3; ++c)
+    if (got[c] > 0.0)
+      for (double& v : out.c[c]) v *= energy_[c] / got[c];
 }
 
 glm::dvec3 CubeIntegral(const CubeGrid& grid, const CubeRgb& rgb) {

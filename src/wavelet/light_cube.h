@@ -1,22 +1,29 @@
 #pragma once
 /// \file
 /// A distant light as the wavelet basis sees it: the environment turned by the frame's rotation
-/// and resampled onto the cube of wavelet/cube_grid.h, each texel holding its mean radiance over
-/// its solid angle,
+/// and put on the cube of wavelet/cube_grid.h, each texel t holding a radiance L_t such that
+/// sum_t L_t T_t approximates the integral of the light times a transport T_t that is itself an
+/// integral over the texel (transport.h). Three properties are kept, at every rotation:
 ///
-///   L_t = (1 / Omega_t) integral over texel t of L(R^T w) dw,
+///   energy     sum_t Omega_t L_t equals the environment's own integral (its quadrature rows and
+///              its disks, env/environment.h) per channel, up to rounding: nothing is point
+///              sampled, so a sun a few pixels wide in an HDR file keeps its energy wherever the
+///              rotation puts it;
+///   constants  a constant light gives every texel exactly that constant (the white furnace);
+///   smoothness a compact source's light moves continuously from texel to texel as it turns
+///              (wavelet/texel_spread.h), so nothing it lights flickers in a slow turn.
 ///
-/// so that sum_t L_t T_t is the integral of the light times a transport T_t that is itself an
-/// integral over the texel (transport.h). Two parts, each kept exact where
-/// it matters:
-///   - the radiance the environment's grid resolves (RadianceWithoutDisks) is averaged over
-///     `split` x `split` sub-squares of every texel, each weighted by its exact solid angle, so a
-///     constant light gives every texel exactly that constant (the white furnace);
-///   - the disks no grid resolves (the sky's sun, Environment::Disks) are cut into pieces of
-///     equal solid angle (rings even in cos theta, sectors even in azimuth) small beside a texel,
-///     each piece's energy added to the texel its centre falls in, so the cube holds each disk's
-///     energy exactly, wherever the rotation puts it.
-/// Then each face of each colour channel goes through the Haar transform (wavelet/haar.h).
+/// How. Once per environment, its quadrature nodes (pixels with their exact solid angles, or a
+/// procedural light's product rule) are gathered into the cells of a finer cube, `fine` x `fine`
+/// cells a texel: each cell keeps the energy and solid angle of the nodes in it and their
+/// centroid weighted by luminance (where the light in the cell comes from), a node larger than a
+/// cell being first cut into equal parts around its direction.
+/// The disks no grid resolves (the sky's sun) are cut into pieces of equal solid angle small
+/// beside a cell. Each frame every cell and piece, turned, is spread over the texels by
+/// TexelSpread: texel t gathers energy E_t and solid angle A_t (from the cells alone, which tile
+/// the sphere), and L_t = E_t / A_t, so a constant stays exactly constant; then one factor per
+/// channel returns the total to the environment's integral (A_t differs from Omega_t by the
+/// cells' quadrature of the tent, under 1 % at 4 cells a texel).
 ///
 /// Keeping only the K most important light coefficients per frame (wavelet/selection.h) is
 /// Ng's non-linear approximation of the light [1]; KeepLightTerms does it on the luminance.
@@ -38,6 +45,7 @@
 #include "env/environment.h"
 #include "wavelet/cube_grid.h"
 #include "wavelet/selection.h"
+#include "wavelet/texel_spread.h"
 
 namespace prt {
 
@@ -48,27 +56,29 @@ struct CubeRgb {
 
 class LightCube {
  public:
-  /// Resamples `env` (which must outlive this) onto `grid` with `split` x `split` sub-squares
-  /// per texel.
-  LightCube(const Environment& env, const CubeGrid& grid, int split = 2);
+  /// Gathers `env` into cells `fine` x `fine` a texel of `grid` (which must outlive this).
+  LightCube(const Environment& env, const CubeGrid& grid, int fine = kFineCells);
 
-  /// The texels' mean radiance of the environment turned by `turn` (L'(w) = L(turn^T w)).
+  /// The light of the environment turned by `turn` (L'(w) = L(turn^T w)) on the texels.
   void Resample(const glm::dmat3& turn, CubeRgb& out) const;
 
   const CubeGrid& grid() const { return grid_; }
+  /// The environment's integral per channel, as the cube keeps it.
+  const glm::dvec3& Energy() const { return energy_; }
+
+  /// Cells a texel, along each side.
+  static constexpr int kFineCells = 4;
 
  private:
-  const Environment& env_;
-  const CubeGrid& grid_;
-  int split_;
-  std::vector<double> sub_solid_angle_;  ///< per sub-square of one face
-  std::vector<glm::dvec3> disk_pieces_;  ///< centres of the disks' pieces (world directions)
-  struct PieceSet {
-    glm::dvec3 radiance;
-    double solid_angle;                  ///< of each piece
-    std::size_t begin, end;              ///< its pieces in disk_pieces_ (world directions)
+  struct Piece {
+    glm::dvec3 dir;       ///< world direction (unit)
+    double solid_angle;   ///< 0 for a disk's piece (the cells alone tile the sphere)
+    glm::dvec3 energy;    ///< radiance times solid angle
   };
-  std::vector<PieceSet> disks_;
+  const CubeGrid& grid_;
+  TexelSpread spread_;
+  std::vector<Piece> pieces_;
+  glm::dvec3 energy_{0.0};
 };
 
 /// Integral of the cube's radiance over the sphere, per channel: sum_t Omega_t L_t.

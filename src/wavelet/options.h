@@ -15,6 +15,7 @@ struct WaveletOptions {
   int split = 2;        ///< rays per texel: split x split
   Selection selection = Selection::kArea;  ///< area beats magnitude at 512 (transport.h)
   int light_terms = 0;  ///< light coefficients kept per frame (0: all)
+  int base_lmax = 4;    ///< the smooth part of the direct transport in SH up to this band (-1: none)
 };
 
 /// The largest face size: 6 F^2 indices must fit 16 bits.

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "core/log.h"
 #include "core/text.h"
 #include "precompute/bounce_summary.h"
 #include "wavelet/light_cube.h"
 #include "wavelet/shade.h"
+#include "wavelet/texel_sh.h"
 
 namespace prt {
 namespace {
@@ -18,11 +20,13 @@ namespace {
 double TruncationCost(const WaveletTransport& t, const Environment& env, const WaveletOptions& w) {
   const CubeGrid grid(t.face_size);
   CubeRgb rgb;
+  const std::unique_ptr<TexelSh> base = t.base_lmax >= 0 ? std::make_unique<TexelSh>(grid, t.base_lmax) : nullptr;
   const WaveletLight light = TurnedWaveletLight(LightCube(env, grid), glm::dmat3(1.0), w.light_terms,
-                                                SelectionWeights(grid.size(), w.selection), rgb);
+                                                SelectionWeights(grid.size(), w.selection), base.get(), rgb);
   double num = 0.0, den = 0.0;
   for (std::size_t p = 0; p < t.probes.size(); ++p) {
-    const glm::vec3 full = ShadeDense(t.probe_coeffs.data() + p * grid.texels(), light);
+    const glm::vec3 full = ShadeDense(t.probe_coeffs.data() + p * grid.texels(), light) +
+                           glm::vec3(BaseDirectLight(t, t.probes[p], light));
     const glm::vec4 kept = DirectLight(t, t.probes[p], light);
     for (int c = 0; c < 3; ++c) num += std::pow(double(kept[c]) - full[c], 2.0), den += double(full[c]) * full[c];
   }
@@ -49,10 +53,14 @@ WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const TransportOptions& 
             (hidden ? " (1 for the " + std::to_string(hidden) + " vertices no frame shows)" : std::string()) + ", " +
             std::to_string(t.rays) + " rays (none below the horizon); ";
   }
-  line += "each vertex keeps its " + std::to_string(w.budget) + " most important of " + std::to_string(texels) +
-          " coefficients (--wavelet-terms; its 6 faces' means, then the details by " + SelectionName(w.selection) +
+  if (t.base_lmax >= 0)
+    line += "its smooth part in SH to lmax " + std::to_string(t.base_lmax) + " (" +
+            std::to_string(CoeffCount(t.base_lmax)) + " floats a vertex), and of what that leaves out ";
+  line += std::string(t.base_lmax >= 0 ? "" : "each vertex keeps ") + "its " + std::to_string(w.budget) +
+          " most important of " + std::to_string(texels) +
+          " wavelet coefficients (--wavelet-terms; its 6 faces' means, then the details by " + SelectionName(w.selection) +
           " weight, quantised to 16 bits)" +
-          Formatted(": %.0f on average, %.2f%% of the transport's energy kept, %.0f bytes a vertex (%.1f MB)", kept,
+          Formatted(": %.0f on average, %.2f%% of their energy kept, %.0f bytes a vertex in all (%.1f MB)", kept,
                     100.0 * t.kept_energy, double(t.Bytes()) / double(std::max<std::size_t>(t.vertices, 1)),
                     double(t.Bytes()) / 1e6);
   Summary(line);
@@ -68,7 +76,6 @@ WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const TransportOptions& 
             Formatted("%.3f s", r.direct_seconds + r.bounce_seconds) + "]");
     ReportBounces(r, t.bounce.channels);
   }
-  Summary("cache: not used with --basis wavelet (its transport is recomputed each run)");
   return t;
 }
 

@@ -17,7 +17,8 @@
 namespace prt {
 
 /// ComputeWaveletTransport(mesh, sh, options) with its run-summary lines; `env` is the light the
-/// truncation cost is measured under. Not cached.
+/// truncation cost is measured under. Not cached here: app/scene_wavelets.cpp (SceneWavelets) reads
+/// and writes wavelet/transport_cache.h around it.
 WaveletTransport ComputeSceneWavelets(const Mesh& mesh, const TransportOptions& sh, const WaveletOptions& options,
                                       const Environment& env);
 

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include <glm/geometric.hpp>
 
@@ -20,6 +21,7 @@
 #include "env/cube_faces.h"
 #include "wavelet/cube_grid.h"
 #include "wavelet/haar.h"
+#include "wavelet/texel_sh.h"
 
 namespace prt {
 namespace {
@@ -130,6 +132,12 @@ WaveletTransport ComputeWaveletTransport(const Mesh& mesh, const TransportOption
   const std::vector<glm::dvec3> corners = CornerPoints(grid);
   const std::vector<double> weights = SelectionWeights(options.face_size, options.selection);
   const float scene_scale = traced ? bvh.SceneScale() : 1.0f;
+  // The smooth part in SH first (texel_sh.h): the wavelets then keep only what it leaves out.
+  std::unique_ptr<TexelSh> base;
+  if (options.base_lmax >= 0) base = std::make_unique<TexelSh>(grid, options.base_lmax);
+  const int base_count = base ? base->count() : 0;
+  out.base_lmax = base ? options.base_lmax : -1;
+  out.base.resize(static_cast<std::size_t>(base_count) * nv);
 
   for (std::size_t p = 0; p < kProbes && p < nv; ++p) out.probes.push_back(static_cast<std::uint32_t>(p * nv / std::min(kProbes, nv)));
   out.probe_coeffs.resize(out.probes.size() * texels);
@@ -144,7 +152,7 @@ WaveletTransport ComputeWaveletTransport(const Mesh& mesh, const TransportOption
   std::atomic<std::uint64_t> rays{0};
   Progress progress("wavelet transport", nv);
   ParallelFor(nv, 16, [&](std::size_t begin, std::size_t end) {
-    std::vector<double> t(texels), scratch, dots(corners.size());
+    std::vector<double> t(texels), scratch, dots(corners.size()), s(base_count);
     std::vector<std::uint8_t> blocked;
     std::vector<std::uint32_t> kept;
     std::uint64_t local_rays = 0;
@@ -177,6 +185,17 @@ WaveletTransport ComputeWaveletTransport(const Mesh& mesh, const TransportOption
           if (all > 0.0) cosine *= open / all;
         }
         t[k] = cosine / kPi;
+      }
+      if (base) {
+        // Stored as floats, and subtracted as stored: then sum_t L_t T_t is exactly the base's
+        // sum_j s_j l_j plus the residual's, whatever the rounding.
+        base->Project(t.data(), s.data());
+        for (int j = 0; j < base_count; ++j) {
+          const float stored = static_cast<float>(s[j]);
+          out.base[v * base_count + j] = stored;
+          s[j] = stored;
+        }
+        base->Subtract(s.data(), t.data());
       }
       for (int f = 0; f < 6; ++f) HaarForward(t.data() + f * grid.face_texels(), options.face_size, scratch);
       const auto probe = std::find(out.probes.begin(), out.probes.end(), static_cast<std::uint32_t>(v));

@@ -67,6 +67,10 @@ inline constexpr double kQuantSteps = 32767.0;
 struct WaveletTransport {
   int face_size = 0;
   std::size_t vertices = 0;
+  /// The smooth part of the direct transport in SH (-1: none): per vertex (base_lmax + 1)^2
+  /// coefficients at base[v * (base_lmax + 1)^2]; the wavelets below keep what it leaves out.
+  int base_lmax = -1;
+  std::vector<float> base;
   std::vector<float> means;            ///< per vertex its 6 faces' scaling coefficients, [6 v + face]
   std::vector<std::uint64_t> offsets;  ///< vertex v's details: [offsets[v], offsets[v + 1])
   std::vector<std::uint16_t> index;    ///< detail index (face * F^2 + row * F + col), increasing per vertex
@@ -87,7 +91,7 @@ struct WaveletTransport {
   std::size_t Kept() const { return means.size() + index.size(); }
   /// Bytes of the kept coefficients and what locates them.
   std::size_t Bytes() const {
-    return means.size() * sizeof(float) + index.size() * sizeof(std::uint16_t) + value.size() * sizeof(std::int16_t) +
+    return base.size() * sizeof(float) + means.size() * sizeof(float) + index.size() * sizeof(std::uint16_t) + value.size() * sizeof(std::int16_t) +
            scale.size() * sizeof(float) + offsets.size() * sizeof(std::uint64_t);
   }
 };

@@ -85,10 +85,10 @@ TEST_SUITE("app") {
     CHECK(!few.empty());
     CHECK(few != all);
     // The summary's truncation cost is measured under the light the frames use. Each vertex keeps
-    // 12 coefficients, the 6 faces' means first: the whole sky sees the lost details (tens of
-    // percent), a sky kept to its 6 most important coefficients (here its faces' means) almost
-    // none of them.
-    CHECK(all_cost > 5.0);
+    // its SH base and 12 wavelet coefficients, the 6 faces' means first: the whole sky sees the
+    // lost details (measured 1.7 %), a sky kept to its 6 most important coefficients (here its
+    // faces' means) almost none of them.
+    CHECK(all_cost > 0.5);
     CHECK(few_cost < 0.01 * all_cost);
   }
 
@@ -101,17 +101,36 @@ TEST_SUITE("app") {
                                Q(dir + "/out"));
     REQUIRE(r.exit_code == 0);
     CHECK(r.err.find("in Haar wavelets on a cube of 6 x 16^2 texels") != std::string::npos);
-    CHECK(r.err.find("most important of 1536 coefficients") != std::string::npos);
+    CHECK(r.err.find("its smooth part in SH to lmax 4 (25 floats a vertex)") != std::string::npos);
+    CHECK(r.err.find("most important of 1536 wavelet coefficients") != std::string::npos);
     CHECK(r.err.find("bytes a vertex") != std::string::npos);
     CHECK(r.err.find("wavelet truncation: frame 0's direct light at 64 sample vertices") != std::string::npos);
     CHECK(r.err.find("kept to its 128 most important") != std::string::npos);
-    CHECK(r.err.find("bounced light: in SH at lmax 2") != std::string::npos);
+    // Without --lmax the wavelets' bounces take lmax 4, and the summary says why.
+    CHECK(r.err.find("bounced light: in SH at lmax 4") != std::string::npos);
+    CHECK(r.err.find("\nbounce lmax: lmax 4 chosen for wavelet bounces") != std::string::npos);
     CHECK(r.err.find("\nbounces: ") != std::string::npos);  // the bounces' own line, each bounce's share
     CHECK(r.err.find(" of the direct energy; ") != std::string::npos);
-    CHECK(r.err.find("cache: not used with --basis wavelet") != std::string::npos);
     CHECK(r.err.find("ringing") == std::string::npos);
     CHECK(std::filesystem::exists(FramePath(dir + "/out", 1, 2)));
+    CHECK(std::filesystem::exists(dir + "/out/wavelet.cache"));  // its own cache (tests/wavelet/test_wavelet_cache.cpp)
     CHECK(!std::filesystem::exists(dir + "/out/transport.cache"));
+  }
+
+  TEST_CASE("wavelet cli: a given --lmax sets the bounces' bands; SH keeps its own default") {
+    const std::string dir = ScratchDir("wavelet_bounce_lmax");
+    const std::string scene = "render --mesh " + Q(Fixture("obj/tetra_no_normals.obj")) +
+                              " --env sky --transport interreflection --samples 64 --size 16x12 --frames 1 --cube-size 8 ";
+    const RunResult given = RunPrt(scene + "--basis wavelet --lmax 3 --out " + Q(dir + "/given"));
+    REQUIRE(given.exit_code == 0);
+    CHECK(given.err.find("bounced light: in SH at lmax 3") != std::string::npos);
+    CHECK(given.err.find("chosen for wavelet bounces") == std::string::npos);
+    const std::string sh_scene = "render --mesh " + Q(Fixture("obj/tetra_no_normals.obj")) +
+                                 " --env sky --transport interreflection --samples 64 --size 16x12 --frames 1 ";
+    const RunResult sh = RunPrt(sh_scene + "--out " + Q(dir + "/sh"));
+    REQUIRE(sh.exit_code == 0);
+    CHECK(sh.err.find("lmax 2") != std::string::npos);
+    CHECK(sh.err.find("chosen for wavelet bounces") == std::string::npos);
   }
 
   TEST_CASE("wavelet cli: frame 1 of 4 is frame 0 under the sky turned beforehand") {

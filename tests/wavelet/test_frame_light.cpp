@@ -10,6 +10,7 @@
 #include "wavelet/cube_grid.h"
 #include "wavelet/frame_light.h"
 #include "wavelet/light_cube.h"
+#include "wavelet/texel_sh.h"
 #include "wavelet/shade.h"
 
 namespace prt {
@@ -33,7 +34,10 @@ TEST_SUITE("wavelet") {
     LightCube(*sky, grid).Resample(AxisAngle(axis, 1.3), rgb);
     CubeToHaar(8, rgb);
     KeepLightTerms(SelectionWeights(8, Selection::kArea), kTerms, rgb);
-    const auto expected = ShadeWavelet(mesh, t, PackWaveletLight(rgb), {}, false);
+    CubeRgb kept_texels = rgb;  // the base's light is that of the kept terms
+    CubeFromHaar(8, kept_texels);
+    const auto expected =
+        ShadeWavelet(mesh, t, PackWaveletLight(rgb, BaseLight(TexelSh(grid, t.base_lmax), kept_texels)), {}, false);
     const auto got = frame->Shade(mesh, false, nullptr);
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
       for (int c = 0; c < 3; ++c) CHECK(got[v][c] == expected[v][c]);

@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
+#include <memory>
 
 #include <glm/geometric.hpp>
 
@@ -20,6 +21,7 @@
 #include "wavelet/transport.h"
 #include "tests/test_support.h"
 #include "wavelet/light_cube.h"
+#include "wavelet/texel_sh.h"
 
 namespace prt {
 namespace {
@@ -31,12 +33,21 @@ constexpr double kFloatSums = 1e-5;
 /// largest detail, below 0.1 here): 9 * 0.1 / 65534, with room to spare.
 constexpr double kQuantised = 1e-4;
 
-WaveletLight LightOf(const Environment& env, int face_size, const glm::dmat3& turn = glm::dmat3(1.0)) {
-  const CubeGrid grid(face_size);
+/// The light `t` reads of `env` turned by `turn`, every coefficient kept (with the l_j of its
+/// SH base, if it has one).
+WaveletLight LightOf(const Environment& env, const WaveletTransport& t, const glm::dmat3& turn = glm::dmat3(1.0)) {
+  const CubeGrid grid(t.face_size);
+  const std::unique_ptr<TexelSh> base = t.base_lmax >= 0 ? std::make_unique<TexelSh>(grid, t.base_lmax) : nullptr;
   CubeRgb rgb;
-  LightCube(env, grid).Resample(turn, rgb);
-  CubeToHaar(face_size, rgb);
-  return PackWaveletLight(rgb);
+  return TurnedWaveletLight(LightCube(env, grid), turn, 0, {}, base.get(), rgb);
+}
+
+/// The light of texel means `texels` for `t`, every coefficient kept.
+WaveletLight LightOfTexels(CubeRgb texels, const WaveletTransport& t) {
+  std::vector<glm::vec4> sh;
+  if (t.base_lmax >= 0) sh = BaseLight(TexelSh(CubeGrid(t.face_size), t.base_lmax), texels);
+  CubeToHaar(t.face_size, texels);
+  return PackWaveletLight(texels, sh);
 }
 
 /// A small knot standing on a ground of 24 x 24 quads (about 1,300 vertices).
@@ -61,7 +72,7 @@ TEST_SUITE("wavelet") {
     w.face_size = 16;
     w.budget = 24;
     const WaveletTransport t = ComputeWaveletTransport(sphere, sh, w, nullptr);
-    const std::vector<glm::vec3> lit = ShadeWavelet(sphere, t, LightOf(*furnace, 16), {}, true);
+    const std::vector<glm::vec3> lit = ShadeWavelet(sphere, t, LightOf(*furnace, t), {}, true);
     for (std::size_t v = 0; v < sphere.vertex_count(); ++v)
       for (int c = 0; c < 3; ++c) CHECK(std::abs(lit[v][c] - 0.7 * sphere.albedo[v][c]) < kFloatSums);
   }
@@ -83,8 +94,7 @@ TEST_SUITE("wavelet") {
       for (auto& c : rgb.c) c.assign(grid.texels(), 0.0);
       rgb.c[0][texel] = 1.0;  // red 1, green 0, blue 2: each channel its own
       rgb.c[2][texel] = 2.0;
-      CubeToHaar(8, rgb);
-      const glm::vec3 lit = ShadeWavelet(plane, t, PackWaveletLight(rgb), {}, false)[0];
+      const glm::vec3 lit = ShadeWavelet(plane, t, LightOfTexels(rgb, t), {}, false)[0];
       const double expected = grid.ClampedCosine(texel, n) / kPi;
       CHECK(std::abs(lit.x - expected) < kQuantised);
       CHECK(std::abs(lit.y) < kQuantised);
@@ -104,7 +114,7 @@ TEST_SUITE("wavelet") {
     TransportOptions sh;
     WaveletOptions w;
     const WaveletTransport t = ComputeWaveletTransport(mesh, sh, w, nullptr);
-    const double wavelet = CompareVertices(ShadeWavelet(mesh, t, LightOf(*sky, w.face_size), {}, true), ref.radiance).relative;
+    const double wavelet = CompareVertices(ShadeWavelet(mesh, t, LightOf(*sky, t), {}, true), ref.radiance).relative;
     sh.lmax = 8;
     sh.samples = 4096;
     const double sh8 =
@@ -152,7 +162,7 @@ TEST_SUITE("wavelet") {
     const WaveletTransport only_direct = ComputeWaveletTransport(mesh, direct, w, nullptr);
     const auto sky = MakeSky(SkyParams{});
     const ShRgb sh_light = ProjectLight(*sky, o.lmax);
-    const WaveletLight light = LightOf(*sky, w.face_size);
+    const WaveletLight light = LightOf(*sky, t);
     const std::vector<glm::vec3> with = ShadeWavelet(mesh, t, light, sh_light, true);
     const std::vector<glm::vec3> without = ShadeWavelet(mesh, only_direct, light, sh_light, true);
     const std::vector<glm::vec3> bounce = ShadeVertices(mesh, bounced, sh_light, true);
@@ -179,8 +189,10 @@ TEST_SUITE("wavelet") {
     CHECK(one.offsets == two.offsets);
     CHECK(one.means == two.means);
     CHECK(one.scale == two.scale);
+    CHECK(one.base == two.base);
     CHECK(one.Kept() == 100 * mesh.vertex_count());
-    CHECK(one.Bytes() == mesh.vertex_count() * (6 * 4 + 94 * 4 + 4) + (mesh.vertex_count() + 1) * 8);
+    // Per vertex: 25 base floats (lmax 4), 6 means, 94 details of 4 bytes, a step; an offset.
+    CHECK(one.Bytes() == mesh.vertex_count() * (25 * 4 + 6 * 4 + 94 * 4 + 4) + (mesh.vertex_count() + 1) * 8);
   }
 }
 

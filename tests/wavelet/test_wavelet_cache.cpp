@@ -1,0 +1,397 @@
+// The wavelet transport cache (wavelet/transport_cache.h) must give back the very transport it was
+// given, and never one made from other inputs: a stale or damaged cache is a silently wrong
+// picture. In the library (the round trip field by field, the key one input at a time, every
+// damaged byte refused), then through the binary (a run from the cache draws the bytes of the run
+// that wrote it, the SH and wavelet caches side by side).
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <string>
+
+#include "core/atomic_file.h"
+#include "geometry/mesh_ops.h"
+#include "geometry/procedural.h"
+#include "precompute_io/transport_cache.h"
+#include "tests/test_support.h"
+#include "wavelet/transport_cache.h"
+
+namespace prt {
+namespace {
+
+/// The size of WaveletTransport when the cache's format was written: a field added since is not
+/// in the file. Add it to the format (and its version), to Synthetic() and to CheckSame(), then
+/// update this (x86-64, libstdc++).
+constexpr std::size_t kCachedStructSize = 352;
+
+/// The header's bytes (transport_cache.h): each of them changed must be refused.
+constexpr std::size_t kHeaderBytes = 96;
+
+/// A sphere resting on a floor: concave, so rays, seeds and bounces all change its transport.
+Mesh SphereOnFloor() {
+  Mesh m = MakeSphere(8, 1.0f, glm::vec3(0.0f, 1.0f, 0.0f));
+  AppendMesh(m, MakePlane(4.0f, 4));
+  SetUniformAlbedo(m, glm::vec3(0.8f, 0.6f, 0.4f));
+  return m;
+}
+
+/// A transport with every field away from its default, the values awkward for a careless
+/// writer (negative zero, a denormal, the int16 extremes, a count above 32 bits for rays).
+WaveletTransport Synthetic() {
+  WaveletTransport t;
+  t.face_size = 4;
+  t.vertices = 5;
+  t.base_lmax = 2;
+  for (int i = 0; i < 5 * 9; ++i) t.base.push_back(0.25f * float(i) - 3.0f);
+  t.base[7] = -0.0f;
+  t.base[8] = 1e-40f;
+  for (int i = 0; i < 30; ++i) t.means.push_back(0.01f * float(i) + 0.5f);
+  t.scale = {1e-3f, 2e-3f, 0.0f, 4e-3f, 5e-3f};
+  const std::vector<std::vector<std::uint16_t>> per_vertex = {{1, 7, 95}, {}, {0, 2, 3, 50, 94}, {6}, {10, 11}};
+  t.offsets = {0};
+  for (const auto& kept : per_vertex) {
+    t.index.insert(t.index.end(), kept.begin(), kept.end());
+    t.offsets.push_back(t.index.size());
+  }
+  for (std::size_t j = 0; j < t.index.size(); ++j) t.value.push_back(std::int16_t(int(j) * 5000 % 65535 - 32767));
+  t.value[0] = -32767, t.value[1] = 32767;
+  t.bounce.lmax = 1;
+  t.bounce.channels = 3;
+  t.bounce.vertices = 5;
+  for (int i = 0; i < 5 * 3 * 4; ++i) t.bounce.coeffs.push_back(float(i) / 7.0f);
+  t.probes = {0, 3};
+  for (int i = 0; i < 2 * 96; ++i) t.probe_coeffs.push_back(std::sin(float(i)));
+  t.kept_energy = 0.98765432101234;
+  t.rays = 123456789012ULL;
+  t.seconds = 1.25;
+  return t;
+}
+
+template <class T>
+bool SameBytes(const std::vector<T>& a, const std::vector<T>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+bool SameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+/// Every field of WaveletTransport, bit for bit.
+void CheckSame(const WaveletTransport& a, const WaveletTransport& b) {
+  CHECK(a.face_size == b.face_size);
+  CHECK(a.vertices == b.vertices);
+  CHECK(a.base_lmax == b.base_lmax);
+  CHECK(SameBytes(a.base, b.base));
+  CHECK(SameBytes(a.means, b.means));
+  CHECK(SameBytes(a.offsets, b.offsets));
+  CHECK(SameBytes(a.index, b.index));
+  CHECK(SameBytes(a.value, b.value));
+  CHECK(SameBytes(a.scale, b.scale));
+  CHECK(a.bounce.lmax == b.bounce.lmax);
+  CHECK(a.bounce.channels == b.bounce.channels);
+  CHECK(a.bounce.vertices == b.bounce.vertices);
+  CHECK(SameBytes(a.bounce.coeffs, b.bounce.coeffs));
+  CHECK(SameBytes(a.bounce.glossy, b.bounce.glossy));
+  CHECK(SameBytes(a.bounce.matrices, b.bounce.matrices));
+  CHECK(a.bounce.material.Name() == b.bounce.material.Name());
+  CHECK(SameBytes(a.probes, b.probes));
+  CHECK(SameBytes(a.probe_coeffs, b.probe_coeffs));
+  CHECK(SameBits(a.kept_energy, b.kept_energy));
+  CHECK(a.rays == b.rays);
+  CHECK(SameBits(a.seconds, b.seconds));
+}
+
+/// What ReadWaveletCache says of the file `bytes` (written to `path`) under `key`: "reused" or its
+/// reason.
+std::string Verdict(const std::string& path, const std::string& bytes, std::uint64_t key) {
+  WriteFileAtomic(path, bytes);
+  std::string why;
+  const bool read = ReadWaveletCache(path, key, why).has_value();
+  CHECK(read == (why == "reused"));
+  return why;
+}
+
+/// The floor and wall of test_support under the built-in sky, the wavelets on a small cube:
+/// shadows and coloured bounces in a run of a fraction of a second, `terms` kept a vertex.
+/// `extra` options follow.
+std::string WaveletRender(const std::string& dir, const std::string& out, const std::string& extra = "",
+                          int terms = 24) {
+  return "render --mesh " + test::Q(dir + "/scene.obj") +
+         " --env sky --transport interreflection --samples 64 --basis wavelet --cube-size 8 --size 48x36 --frames 2"
+         " --exposure 0 --wavelet-terms " + std::to_string(terms) + " --out " + test::Q(out) + " " + extra;
+}
+
+/// The bytes of both frames of a run into `out`.
+std::string Frames(const std::string& out) {
+  return ReadFile(test::FramePath(out, 0, 2)) + ReadFile(test::FramePath(out, 1, 2));
+}
+
+/// Runs prt with `arguments`, which must succeed; its run summary.
+std::string RunSummary(const std::string& arguments) {
+  const test::RunResult r = test::RunPrt(arguments);
+  CAPTURE(arguments);
+  CAPTURE(r.err);
+  REQUIRE(r.exit_code == 0);
+  return r.err;
+}
+
+bool Says(const std::string& summary, const std::string& words) { return summary.find(words) != std::string::npos; }
+
+}  // namespace
+
+TEST_SUITE("wavelet") {
+  TEST_CASE("wavelet cache: a field added to the transport is a field added to the cache") {
+    // The round trips below compare the fields this file knows; one added to WaveletTransport
+    // and not to the cache would come back at its default from every cached run.
+    CHECK_MESSAGE(sizeof(WaveletTransport) == kCachedStructSize,
+                  "WaveletTransport changed: add the new field to wavelet/transport_cache.{h,cpp} (and its format "
+                  "version), to Synthetic() and CheckSame() here, then update kCachedStructSize");
+  }
+
+  TEST_CASE("wavelet cache: every field comes back bit for bit") {
+    const std::string dir = test::ScratchDir("wavelet_cache_round_trip");
+    // Every field set by hand, then real transports: shadowed (no bounces) and with bounces.
+    const WaveletTransport synthetic = Synthetic();
+    WriteWaveletCache(dir + "/synthetic.cache", synthetic, 42);
+    std::string why;
+    const auto back = ReadWaveletCache(dir + "/synthetic.cache", 42, why);
+    REQUIRE_MESSAGE(back, why);
+    CheckSame(synthetic, *back);
+
+    const Mesh mesh = SphereOnFloor();
+    for (const TransportMode mode : {TransportMode::kShadowed, TransportMode::kInterreflection}) {
+      TransportOptions sh;
+      sh.mode = mode;
+      sh.samples = 64;
+      WaveletOptions w;
+      w.face_size = 8;
+      w.budget = 40;
+      const WaveletTransport t = ComputeWaveletTransport(mesh, sh, w, nullptr);
+      const std::uint64_t key = WaveletTransportKey(mesh, sh, w);
+      const std::string path = dir + "/" + TransportModeName(mode) + ".cache";
+      WriteWaveletCache(path, t, key);
+      const auto read = ReadWaveletCache(path, key, why);
+      CAPTURE(TransportModeName(mode));
+      REQUIRE_MESSAGE(read, why);
+      CHECK(why == "reused");
+      CHECK(read->bounce.coeffs.empty() == (mode == TransportMode::kShadowed));
+      CheckSame(t, *read);
+    }
+  }
+
+  TEST_CASE("wavelet cache key: every input of the stored transport changes it, the frame's light does not") {
+    const Mesh mesh = SphereOnFloor();
+    TransportOptions base_sh;
+    base_sh.samples = 64;
+    base_sh.hidden_samples = 64;
+    const WaveletOptions base_w;
+    std::map<std::string, std::uint64_t> keys;
+    keys["base"] = WaveletTransportKey(mesh, base_sh, base_w);
+    CHECK(WaveletTransportKey(mesh, base_sh, base_w) == keys["base"]);  // a function of its inputs only
+    const auto with = [&](const std::string& name, auto change) {
+      Mesh m = mesh;
+      TransportOptions sh = base_sh;
+      WaveletOptions w = base_w;
+      change(m, sh, w);
+      keys[name] = WaveletTransportKey(m, sh, w);
+    };
+    // The wavelets' own options that shape the stored coefficients.
+    with("face size", [](Mesh&, TransportOptions&, WaveletOptions& w) { w.face_size = 16; });
+    with("budget", [](Mesh&, TransportOptions&, WaveletOptions& w) { w.budget = 513; });
+    with("split", [](Mesh&, TransportOptions&, WaveletOptions& w) { w.split = 3; });
+    with("selection", [](Mesh&, TransportOptions&, WaveletOptions& w) { w.selection = Selection::kMagnitude; });
+    with("base lmax", [&](Mesh&, TransportOptions&, WaveletOptions& w) { w.base_lmax = base_w.base_lmax + 1; });
+    with("no base", [](Mesh&, TransportOptions&, WaveletOptions& w) { w.base_lmax = -1; });
+    // The SH options (the bounces, the rays' seed, the mode) and the mesh.
+    with("seed", [](Mesh&, TransportOptions& o, WaveletOptions&) { o.seed = 2; });
+    with("samples", [](Mesh&, TransportOptions& o, WaveletOptions&) { o.samples = 65, o.hidden_samples = 65; });
+    with("mode", [](Mesh&, TransportOptions& o, WaveletOptions&) { o.mode = TransportMode::kInterreflection; });
+    with("unshadowed", [](Mesh&, TransportOptions& o, WaveletOptions&) { o.mode = TransportMode::kUnshadowed; });
+    with("lmax", [](Mesh&, TransportOptions& o, WaveletOptions&) { o.lmax = 3; });
+    with("bounces", [](Mesh&, TransportOptions& o, WaveletOptions&) { o.bounces = 2; });
+    with("moved vertex", [](Mesh& m, TransportOptions&, WaveletOptions&) { m.positions[5].y += 1e-6f; });
+    with("albedo", [](Mesh& m, TransportOptions&, WaveletOptions&) { m.albedo[5].x = 0.5f; });
+    // A vertex no frame shows takes one ray a texel even where --hidden-samples equals --samples
+    // (where the SH key leaves `seen` out).
+    with("hidden vertex", [](Mesh& m, TransportOptions& o, WaveletOptions&) {
+      o.seen.assign(m.vertex_count(), 1);
+      o.seen[5] = 0;
+    });
+    with("other hidden vertex", [](Mesh& m, TransportOptions& o, WaveletOptions&) {
+      o.seen.assign(m.vertex_count(), 1);
+      o.seen[6] = 0;
+    });
+    std::set<std::uint64_t> distinct;
+    for (const auto& [name, key] : keys) {
+      CAPTURE(name);
+      CHECK(distinct.insert(key).second);
+    }
+    // Kept light terms are a frame's choice, not the transport's: the cache serves any of them.
+    WaveletOptions terms = base_w;
+    terms.light_terms = 100;
+    CHECK(WaveletTransportKey(mesh, base_sh, terms) == keys["base"]);
+    // The SH transport's own key is another: a file of one basis never matches the other's key.
+    CHECK(TransportKey(mesh, base_sh) != keys["base"]);
+  }
+
+  TEST_CASE("wavelet cache: truncated, damaged, of another version or of the SH basis, it is refused with a reason") {
+    const std::string dir = test::ScratchDir("wavelet_cache_refused");
+    const std::string good_path = dir + "/good.cache", path = dir + "/damaged.cache";
+    constexpr std::uint64_t kKey = 0x1234567890abcdefULL;
+    WriteWaveletCache(good_path, Synthetic(), kKey);
+    const std::string good = ReadFile(good_path);
+    REQUIRE(good.size() > kHeaderBytes);
+    CHECK(Verdict(path, good, kKey) == "reused");
+
+    std::string why;
+    CHECK(!ReadWaveletCache(dir + "/missing.cache", kKey, why));
+    CHECK(why == "no cache yet");
+    CHECK(Verdict(path, good, kKey + 1) == "made from other inputs");
+    CHECK(Verdict(path, "", kKey) == "not a prt cache file");
+    CHECK(Verdict(path, ReadFile(test::Fixture("cache/text.cache")), kKey) == "not a prt cache file");
+
+    // Cut anywhere: in the magic, in the header, in the arrays, one byte short; and one too many.
+    for (const std::size_t size : {std::size_t(5), std::size_t(8), std::size_t(50), kHeaderBytes - 1, kHeaderBytes,
+                                   good.size() / 2, good.size() - 1}) {
+      CAPTURE(size);
+      const std::string verdict = Verdict(path, good.substr(0, size), kKey);
+      CHECK(verdict != "reused");
+      CHECK((verdict.find("truncated") != std::string::npos || (size < 8 && verdict == "not a prt cache file")));
+    }
+    CHECK(Verdict(path, good + '\0', kKey).find("oversized") != std::string::npos);
+
+    // Another format version: said as such (the byte after the magic is the version's lowest).
+    std::string other_version = good;
+    other_version[8] = 2;
+    CHECK(Verdict(path, other_version, kKey) == "cache format version 2 (expected 1)");
+
+    // Every byte of the file changed, one at a time: none is taken (the checksum covers the
+    // header's own fields, kept_energy and seconds among them, as well as the arrays).
+    std::size_t refused = 0;
+    for (std::size_t i = 0; i < good.size(); ++i) {
+      std::string damaged = good;
+      damaged[i] = char(damaged[i] ^ 0x10);
+      const std::string verdict = Verdict(path, damaged, kKey);
+      CAPTURE(i);
+      CHECK(verdict != "reused");
+      CHECK(!verdict.empty());
+      if (i >= kHeaderBytes) CHECK(verdict == "checksum mismatch (corrupted)");
+      refused += verdict != "reused";
+    }
+    CHECK(refused == good.size());
+
+    // The SH basis's cache is not the wavelets', and the other way round.
+    Transport sh;
+    sh.lmax = 1;
+    sh.vertices = 2;
+    sh.coeffs.assign(8, 0.5f);
+    WriteTransportCache(dir + "/sh.cache", sh, kKey);
+    CHECK(Verdict(path, ReadFile(dir + "/sh.cache"), kKey) == "an SH transport cache (--basis sh), not a wavelet one");
+    CHECK(!ReadTransportCache(good_path, kKey, why));
+    CHECK(why == "not a prt cache file");
+    CHECK(StartsLikeWaveletCache(good_path));
+    CHECK(!StartsLikeWaveletCache(dir + "/sh.cache"));
+    CHECK(!StartsLikeTransportCache(good_path));
+  }
+
+  TEST_CASE("wavelet cache: what cannot be written faithfully is an error, not a file") {
+    const std::string dir = test::ScratchDir("wavelet_cache_write");
+    // A transport whose arrays disagree with its counts would be read back as another one.
+    WaveletTransport t = Synthetic();
+    t.value.pop_back();
+    CHECK(test::ErrorMessage([&] { WriteWaveletCache(dir + "/a.cache", t, 1); }).find("disagree with its counts") !=
+          std::string::npos);
+    t = Synthetic();
+    t.base.push_back(1.0f);
+    CHECK(!test::ErrorMessage([&] { WriteWaveletCache(dir + "/b.cache", t, 1); }).empty());
+    CHECK(!std::filesystem::exists(dir + "/a.cache"));
+    CHECK(!std::filesystem::exists(dir + "/b.cache"));
+    // A folder that does not exist: the cause named.
+    const std::string missing = dir + "/no/such/folder/c.cache";
+    CHECK(test::ErrorMessage([&] { WriteWaveletCache(missing, Synthetic(), 1); }).find("c.cache") != std::string::npos);
+  }
+
+  TEST_CASE("wavelet cache cli: a second run takes the transport from the cache and draws the same bytes") {
+    const std::string dir = test::ScratchDir("wavelet_cache_cli");
+    test::WriteFloorAndWall(dir, glm::vec3(0.8f), glm::vec3(0.9f, 0.2f, 0.1f));
+    const std::string out = dir + "/out", cache = out + "/wavelet.cache";
+    const std::string first = RunSummary(WaveletRender(dir, out));
+    CHECK(!Says(first, "taken from the cache"));
+    CHECK(std::filesystem::exists(cache));
+    CHECK(!std::filesystem::exists(out + "/transport.cache"));  // the SH basis's name is not taken
+    const std::string frames = Frames(out), written = ReadFile(cache);
+
+    const std::string second = RunSummary(WaveletRender(dir, out));
+    CHECK(Says(second, "transport: taken from the cache " + cache + " (same mesh and options)"));
+    CHECK(!Says(second, "jittered rays per texel"));  // nothing traced
+    CHECK(Frames(out) == frames);
+    CHECK(ReadFile(cache) == written);  // reused as it is, not rewritten
+
+    // The light's kept terms are each frame's: the transport is reused.
+    CHECK(Says(RunSummary(WaveletRender(dir, out, "--light-terms 16")), "taken from the cache"));
+
+    // Other terms per vertex: recomputed, said, and rewritten; the frames change with them (so
+    // the comparison above could fail).
+    const std::string other = RunSummary(WaveletRender(dir, out, "", 32));
+    CHECK(!Says(other, "taken from the cache"));
+    CHECK(Says(other, "cache: " + cache + " ignored (made from other inputs), recomputed"));
+    CHECK(Frames(out) != frames);
+    CHECK(ReadFile(cache) != written);
+    CHECK(Says(RunSummary(WaveletRender(dir, out, "", 32)), "taken from the cache"));
+
+    // --cache none: neither read nor written.
+    const std::string none = RunSummary(WaveletRender(dir, dir + "/none", "--cache none"));
+    CHECK(!Says(none, "taken from the cache"));
+    CHECK(!std::filesystem::exists(dir + "/none/wavelet.cache"));
+  }
+
+  TEST_CASE("wavelet cache cli: the SH and wavelet caches stay side by side, and each refuses the other's file") {
+    const std::string dir = test::ScratchDir("wavelet_cache_sh");
+    test::WriteFloorAndWall(dir, glm::vec3(0.8f), glm::vec3(0.9f, 0.2f, 0.1f));
+    const std::string out = dir + "/out";
+    // One folder, both bases in turn: neither run removes the other's cache, each reuses its own.
+    const std::string sh = "render --mesh " + test::Q(dir + "/scene.obj") +
+                           " --env sky --transport interreflection --samples 64 --size 48x36 --frames 2 --exposure 0"
+                           " --out " + test::Q(out);
+    RunSummary(sh);
+    RunSummary(WaveletRender(dir, out));
+    CHECK(std::filesystem::exists(out + "/transport.cache"));
+    CHECK(std::filesystem::exists(out + "/wavelet.cache"));
+    CHECK(Says(RunSummary(sh), "transport: taken from the cache " + out + "/transport.cache"));
+    CHECK(std::filesystem::exists(out + "/wavelet.cache"));
+    CHECK(Says(RunSummary(WaveletRender(dir, out)), "transport: taken from the cache " + out + "/wavelet.cache"));
+
+    // One --cache file for both: each basis refuses the other's, says why, and replaces it.
+    const std::string shared = dir + "/shared.cache";
+    RunSummary(sh + " --cache " + test::Q(shared));
+    CHECK(Says(RunSummary(WaveletRender(dir, out, "--cache " + test::Q(shared))),
+               "cache: " + shared + " ignored (an SH transport cache (--basis sh), not a wavelet one), recomputed"));
+    CHECK(StartsLikeWaveletCache(shared));
+    CHECK(Says(RunSummary(sh + " --cache " + test::Q(shared)),
+               "cache: " + shared + " ignored (a wavelet transport cache (--basis wavelet), not an SH one), recomputed"));
+    CHECK(StartsLikeTransportCache(shared));
+  }
+
+  TEST_CASE("wavelet cache cli: a transport of every vertex serves a run that asks for the seen ones, not the reverse") {
+    // --hidden-samples below --samples: the vertices no frame shows take one ray a texel. A cache
+    // whose every vertex took the seen ones' rays holds more than that run needs and is taken;
+    // one with the hidden vertices cut short is not taken for a run that needs them all.
+    const std::string dir = test::ScratchDir("wavelet_cache_seen");
+    test::WriteFloorAndWall(dir, glm::vec3(0.8f), glm::vec3(0.9f, 0.2f, 0.1f));
+    const std::string every = dir + "/every", split = dir + "/split";
+    RunSummary(WaveletRender(dir, every, "--hidden-samples 64"));
+    const std::string frames = Frames(every);
+    const std::string reused = RunSummary(WaveletRender(dir, every, "--hidden-samples 8"));
+    CHECK(Says(reused, "taken from the cache " + every + "/wavelet.cache (same mesh and options, with 4 rays a texel at "
+                       "every vertex, not only those the camera sees)"));
+    CHECK(Frames(every) == frames);
+
+    const std::string cut = RunSummary(WaveletRender(dir, split, "--hidden-samples 8"));
+    CHECK(Says(cut, "vertices no frame shows"));  // the camera does hide some: the two transports differ
+    CHECK(!Says(RunSummary(WaveletRender(dir, split, "--hidden-samples 64")), "taken from the cache"));
+    CHECK(Frames(split) == frames);  // recomputed for every vertex: the first run's transport
+  }
+}
+
+}  // namespace prt
