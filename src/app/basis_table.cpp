@@ -16,13 +16,14 @@ namespace {
 /// The wavelets' bounces: lmax 4 unless --lmax is given. Measured (Intel Xeon, 2 vCPUs) on the
 /// sample knot over its 40 x 40 ground under sky.hdr (the sky as `prt sample-files` writes it),
 /// one bounce, default cube and budget, against prt reference (8192 directions, own error
-/// 0.38 %): bounces at lmax 2, 4, 8 give 2.28, 1.73, 1.50 %, the direct light alone 1.44 %
-/// (shadowed). At lmax 2 the bounces' own error (about sqrt(2.28^2 - 1.44^2) = 1.8 %) exceeds
-/// the direct part's; at 4 it is about 1.0 %, below it, for a third of lmax 8's coefficients.
+/// 0.38 %): 1.59 % with the bounces at lmax 4, the direct light alone 1.26 % (shadowed), so the
+/// bounces' own error is about sqrt(1.59^2 - 1.26^2) = 1.0 %, below the direct part's. At lmax 2
+/// it was about 1.8 % (2.28 % in all beside a direct 1.44 %, measured with the details kept by
+/// area), above it; lmax 8 took it to 1.50 % for three times the coefficients.
 constexpr int kWaveletBounceLmax = 4;
 constexpr const char* kWaveletBounceLmaxWhy =
     "lmax 4 chosen for wavelet bounces: their own error (measured about 1.0 % on the sample scene under sky.hdr, "
-    "1.8 % at lmax 2) stays below the direct part's (1.4 %); --lmax sets it";
+    "1.8 % at lmax 2) stays below the direct part's (1.3 %); --lmax sets it";
 
 /// The SH transport and what a frame reads of it: with a glossy orbit's matrices compressed by
 /// clustered PCA (--cpca), the model in place of the full matrices.
@@ -63,7 +64,7 @@ PreparedBasis PrepareWavelet(const BasisInputs& in) {
   auto transport = std::make_shared<WaveletTransport>(SceneWavelets(in.mesh, sh, in.scene.wavelet, in.env, in.cache));
   PreparedBasis prepared;
   prepared.light = MakeWaveletFrameLight(*transport, in.env, in.light, in.axis, in.scene.wavelet.light_terms,
-                                         in.scene.wavelet.selection);
+                                         in.scene.wavelet.light_selection);
   Summary("rotation: the environment turned and spread onto the wavelet cube each frame (its energy kept exactly, "
           "a compact source's light moving smoothly between texels: wavelet/light_cube.h)" +
           std::string(transport->bounce.coeffs.empty() ? "" : "; the bounces' SH light turned by its band matrices"));
@@ -77,7 +78,7 @@ PreparedBasis PrepareWaveletLight(const BasisInputs& in) {
   transport->face_size = in.scene.wavelet.face_size;
   PreparedBasis prepared;
   prepared.light = MakeWaveletFrameLight(*transport, in.env, in.light, in.axis, in.scene.wavelet.light_terms,
-                                         in.scene.wavelet.selection);
+                                         in.scene.wavelet.light_selection);
   prepared.transport = std::move(transport);
   return prepared;
 }

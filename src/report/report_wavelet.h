@@ -110,7 +110,7 @@ Image8 WaveletPlot(const WaveletStudy& study);
 
 /// The stability suite's wavelet cases: MakeSunScene(segments, sides, ground) (by default the
 /// measured scene) under the default sky, wavelets at the
-/// default cube and budget (WaveletOptions, area selection), shadowed and with one bounce,
+/// default cube and budget (WaveletOptions' defaults), shadowed and with one bounce,
 /// against a 4096-direction reference (16 s on 2 cores, 10 of them the references).
 void WaveletAgreementCases(std::vector<StabilityCase>& out, int segments = 192, int sides = 20, int ground = 40);
 

@@ -8,6 +8,7 @@
 
 #include "core/color.h"
 #include "core/constants.h"
+#include "core/parallel.h"
 #include "env/cube_faces.h"
 #include "wavelet/haar.h"
 
@@ -70,6 +71,7 @@ Cells GatherNodes(const Environment& env, const CubeGrid& fine) {
 }  // namespace
 
 LightCube::LightCube(const Environment& env, const CubeGrid& grid, int fine) : grid_(grid), spread_(grid) {
+  if (fine <= 0) fine = std::max(1, std::min(kFineCells, kMaxCellFace / grid.size()));
   const CubeGrid cells_grid(grid.size() * fine);
   const Cells cells = GatherNodes(env, cells_grid);
   for (std::size_t c = 0; c < cells_grid.texels(); ++c) {
@@ -105,23 +107,41 @@ LightCube::LightCube(const Environment& env, const CubeGrid& grid, int fine) : g
 
 void LightCube::Resample(const glm::dmat3& turn, CubeRgb& out) const {
   const std::size_t texels = grid_.texels();
-  std::vector<glm::dvec3> energy(texels, glm::dvec3(0.0));
-  std::vector<double> area(texels, 0.0);
-  std::uint32_t to[kMaxSpread];
-  double w[kMaxSpread];
-  for (const Piece& p : pieces_) {
-    const int n = spread_.Spread(turn * p.dir, to, w);
-    for (int i = 0; i < n; ++i) {
-      energy[to[i]] += w[i] * p.energy;
-      area[to[i]] += w[i] * p.solid_angle;
+  // The pieces in kChunks fixed runs, each spread into its own sums, then the runs added in
+  // order: the same bits for any thread count.
+  constexpr std::size_t kChunks = 16;
+  struct Sums {
+    std::vector<glm::dvec3> energy;
+    std::vector<double> area;
+  };
+  std::vector<Sums> sums(kChunks);
+  const std::size_t per = (pieces_.size() + kChunks - 1) / kChunks;
+  ParallelFor(kChunks, 1, [&](std::size_t begin, std::size_t end) {
+    std::uint32_t to[kMaxSpread];
+    double w[kMaxSpread];
+    for (std::size_t k = begin; k < end; ++k) {
+      Sums& s = sums[k];
+      s.energy.assign(texels, glm::dvec3(0.0));
+      s.area.assign(texels, 0.0);
+      for (std::size_t p = k * per; p < std::min(pieces_.size(), (k + 1) * per); ++p) {
+        const Piece& piece = pieces_[p];
+        const int n = spread_.Spread(turn * piece.dir, to, w);
+        for (int i = 0; i < n; ++i) {
+          s.energy[to[i]] += w[i] * piece.energy;
+          s.area[to[i]] += w[i] * piece.solid_angle;
+        }
+      }
     }
-  }
-  glm::dvec3 got(0.0);
+  });
   for (auto& c : out.c) c.assign(texels, 0.0);
+  glm::dvec3 got(0.0);
   for (std::size_t t = 0; t < texels; ++t) {
-    if (area[t] <= 0.0) continue;
+    glm::dvec3 energy(0.0);
+    double area = 0.0;
+    for (const Sums& s : sums) energy += s.energy[t], area += s.area[t];
+    if (area <= 0.0) continue;
     for (int c = 0; c < 3; ++c) {
-      out.c[c][t] = energy[t][c] / area[t];
+      out.c[c][t] = energy[c] / area;
       got[c] += grid_.SolidAngle(t) * out.c[c][t];
     }
   }

@@ -23,13 +23,12 @@
 /// TexelSpread: texel t gathers energy E_t and solid angle A_t (from the cells alone, which tile
 /// the sphere), and L_t = E_t / A_t, so a constant stays exactly constant; then one factor per
 /// channel returns the total to the environment's integral (A_t differs from Omega_t by the
-/// cells' quadrature of the tent, under 1 % at 4 cells a texel).
+/// cells' quadrature of the tent).
 ///
 /// Keeping only the K most important light coefficients per frame (wavelet/selection.h) is
 /// Ng's non-linear approximation of the light [1]; KeepLightTerms does it on the luminance.
-/// Measured on the sample knot over a 40 x 40 ground under the sky (AMD EPYC; F 32, 512
-/// transport terms, against prt reference): 64 light terms 1.69 %, 256 1.41 %, 1024 and all
-/// 1.39 %. It buys no speed here: each vertex's dot product runs over its own kept transport
+/// Measured on the sample knot over a 40 x 40 ground under sky.hdr (Intel Xeon; F 32, 512
+/// transport terms, against prt reference): 64 light terms 1.42 %, 256, 1024 and all 1.26 %. It buys no speed here: each vertex's dot product runs over its own kept transport
 /// terms whatever the light keeps (Ng stored the transport by light coefficient instead), so it
 /// is off by default and serves to show what the basis keeps (--view light).
 ///
@@ -56,8 +55,9 @@ struct CubeRgb {
 
 class LightCube {
  public:
-  /// Gathers `env` into cells `fine` x `fine` a texel of `grid` (which must outlive this).
-  LightCube(const Environment& env, const CubeGrid& grid, int fine = kFineCells);
+  /// Gathers `env` into cells `fine` x `fine` a texel of `grid` (which must outlive this); 0:
+  /// kFineCells, fewer if the cells' cube would pass kMaxCellFace a side.
+  LightCube(const Environment& env, const CubeGrid& grid, int fine = 0);
 
   /// The light of the environment turned by `turn` (L'(w) = L(turn^T w)) on the texels.
   void Resample(const glm::dmat3& turn, CubeRgb& out) const;
@@ -66,8 +66,13 @@ class LightCube {
   /// The environment's integral per channel, as the cube keeps it.
   const glm::dvec3& Energy() const { return energy_; }
 
-  /// Cells a texel, along each side.
-  static constexpr int kFineCells = 4;
+  /// Cells a texel, along each side. Measured on the sample knot's sunlit ground in a slow turn
+  /// under sky.hdr (48 frames 0.94 degrees apart, F 32, 512 terms): the mean changes from frame
+  /// to frame by at most 0.25 % at 4 cells a texel, 0.10 % at 8 (0.20 and 0.04 % with every
+  /// coefficient kept: the cells' quadrature of the tents is most of it).
+  static constexpr int kFineCells = 8;
+  /// The cells' cube at most this many a side (6 x 256^2 cells: 31 MB while gathering).
+  static constexpr int kMaxCellFace = 256;
 
  private:
   struct Piece {

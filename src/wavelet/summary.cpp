@@ -22,7 +22,7 @@ double TruncationCost(const WaveletTransport& t, const Environment& env, const W
   CubeRgb rgb;
   const std::unique_ptr<TexelSh> base = t.base_lmax >= 0 ? std::make_unique<TexelSh>(grid, t.base_lmax) : nullptr;
   const WaveletLight light = TurnedWaveletLight(LightCube(env, grid), glm::dmat3(1.0), w.light_terms,
-                                                SelectionWeights(grid.size(), w.selection), base.get(), rgb);
+                                                SelectionWeights(grid.size(), w.light_selection), base.get(), rgb);
   double num = 0.0, den = 0.0;
   for (std::size_t p = 0; p < t.probes.size(); ++p) {
     const glm::vec3 full = ShadeDense(t.probe_coeffs.data() + p * grid.texels(), light) +

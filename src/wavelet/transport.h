@@ -5,13 +5,26 @@
 ///
 ///   direct     the transport of each texel t of the cube (wavelet/cube_grid.h),
 ///                T_t = (1/pi) integral over texel t of V(w) max(0, n.w) dw,
-///              taken to Haar coefficients face by face (wavelet/haar.h): the six faces' scaling
-///              coefficients (their means) as floats, and of the details only the `budget` - 6
-///              most important (wavelet/selection.h), each a 16-bit index and a 16-bit integer
-///              times the vertex's step (its largest kept detail / 32767).
-///              Then a vertex of albedo rho under a light whose texels hold their mean radiance
-///              L_t (wavelet/light_cube.h) sends out  rho sum_t L_t T_t = rho sum_k L^_k T^_k
-///              (the transform is orthonormal), a sparse dot product over the kept k.
+///              split as T_t = S_t + W_t: S its smooth part, the SH projection up to base_lmax
+///              (4: 25 floats s_j, wavelet/texel_sh.h), and W what S leaves out (the shadow and
+///              horizon edges), taken to Haar coefficients face by face (wavelet/haar.h): the six
+///              faces' scaling coefficients (their means) as floats, and of the details only the
+///              `budget` - 6 most important (wavelet/selection.h), each a 16-bit index and a
+///              16-bit integer times the vertex's step (its largest kept detail / 32767).
+///              Then a vertex of albedo rho under a light L_t on the texels (light_cube.h)
+///              sends out  rho (sum_j s_j l_j + sum_k L^_k W^_k)  (the transform is
+///              orthonormal), l_j the light's own SH coefficients over the texels, the second sum
+///              sparse over the kept k.
+///
+///              Why the base. Without it the budget went first to the smooth cosine over the open
+///              sky, whose Haar coefficients decay slowly and spread over the whole hemisphere,
+///              wherever the light is: below about 400 terms the block around the sun was left
+///              at a coarse mean and the error jumped past SH's (10.9 % at 256 terms against SH
+///              lmax 8's 6.0 %, and 5 times worse with the sun at 90 degrees than at 45). Ng et
+///              al. avoid it by choosing terms from the light each frame over a transport stored
+///              per light coefficient [1]; here SH holds the smooth part, which it does well, and
+///              the terms go to the edges alone, so a budget too small for the sun falls back to
+///              SH lmax 4's blur, never below it.
 ///   bounced    with interreflection, the light that arrives after one or more bounces, as SH
 ///              transfer vectors (precompute/transport.h, the bounced part alone): bounced light is low
 ///              frequency, and the SH light of the same environment lights it.
@@ -21,29 +34,32 @@
 /// jittered point (a pool of `kJitterSets` jittered fans, vertex v taking set hash(seed, v)), each
 /// weighted by its cosine times its sub-square's solid angle. A vertex that nothing blocks gets
 /// the exact transport, so a white sky gives exactly the albedo. Vertices that no frame shows
-/// (TransportOptions::seen) take one ray per texel: only --vertex-radiance reads their direct
-/// light (their bounces are the SH pass's).
+/// (TransportOptions::seen) take one ray per texel (their bounces are the SH pass's); a run with
+/// --vertex-radiance marks every vertex seen, as the file lists them all.
 ///
-/// Memory: 4 bytes a kept detail, plus 36 a vertex (means, step, offset): 2,060 bytes at the
-/// default 512 terms, against 4,104 with 32-bit indices and float values. Quantising costs
+/// Memory: 4 bytes a kept detail, plus 136 a vertex (base, means, step, offset): 2,160 bytes at
+/// the default 512 terms, against 4,204 with 32-bit indices and float values. Quantising costs
 /// nothing measurable: each detail's error is at most half a step, 1.5e-5 of the vertex's
 /// largest, and a white sky still gives exactly the albedo (the means are floats).
 ///
-/// Defaults, measured (AMD EPYC, 2 vCPUs): the sample knot over a ground of 40 x 40 quads under
-/// the built-in sky (2-degree sun), 5,521 vertices, per-vertex relative RMS against prt reference
-/// (65,536 directions, its own error 0.03 %), shadowed:
+/// Defaults, measured (Intel Xeon, AVX-512, 2 vCPUs): the sample knot over a ground of 40 x 40
+/// quads (5,521 vertices) under sky.hdr, the sky as `prt sample-files` writes it (1024 x 512, a
+/// 2-degree sun a few pixels wide), per-vertex relative RMS against prt reference (8192
+/// directions, its own error 0.10 %), shadowed, F 32, 4 rays a texel, the sky turned about +Y by
+/// 0 / 45 / 90 degrees:
 ///
-///   F   rays a texel   kept 256   kept 512        kept 1024   all kept
-///   16  16             8.0 %      1.47 %          -           -
-///   32  4              9.1 %      1.39 % (1.75 %  1.01 %      0.67 % (6,144)
-///                                 by magnitude)
-///   64  1              -          1.45 %          1.20 %      0.51 % (24,576)
+///   kept         128                 256                 512                 1024   all (6,144)
+///   SH base 4    3.39 / 2.86 / 3.52  2.15 / 1.89 / 2.27  1.26 / 1.27 / 1.31  0.86   0.70
+///   (magnitude)
+///   no base      -                   8.28 (0 degrees)    1.27 (0 degrees)    -      -
+///   (area)
 ///
-/// (SH: lmax 2, 4, 8, 16: 12.6, 8.7, 6.0, 3.9 %.) One bounce (SH lmax 4) at F 32, 512 kept:
-/// 1.62 %. Below about 400 terms the truncation error jumps: the smooth cosine over the open
-/// sky needs its fine coefficients wherever the sun may stand. So: F = 32, 4 rays a texel, 512
-/// kept, area-weighted. The whole `prt render` of that scene (--max-edge 0.2, 160x120, one frame,
-/// median of 3) takes 2.1 s and 68 MB at these defaults, against 4.0 s and 195 MB at SH lmax 16.
+/// (SH at the same angles: lmax 4 8.7 %, lmax 8 6.0 %.) With the base, area weights keep worse
+/// details at every budget (2.19 % at 256, 1.49 % at 512), so the details are kept by magnitude.
+/// So: F = 32, 4 rays a texel, SH base lmax 4, 512 kept by magnitude (2,160 bytes a vertex).
+/// SH lmax 2, 4, 8, 16 on the same file (16384 directions, unturned): 12.6, 8.7, 6.0, 3.9 %.
+/// One bounce (its SH at lmax 4) at the defaults: 1.59 % (reference's own error 0.38 %). Under
+/// the built-in sky (its sun an exact disk) the same: 1.26 % shadowed, 1.60 % with one bounce.
 ///
 /// References
 /// [1] Ng, Ramamoorthi, Hanrahan, "All-Frequency Shadows Using Non-linear Wavelet Lighting

@@ -129,6 +129,46 @@ TEST_SUITE("wavelet") {
     CHECK(wavelet < 0.5 * sh8);
   }
 
+  TEST_CASE("wavelet transport: a budget too small for the sun falls back to SH's blur, and more terms help") {
+    // The smooth part of the transport is in SH (lmax 4): with its 6 faces' means alone a vertex
+    // is lit as SH lmax 4 lights it, and every budget does better, at two sun angles (a quarter
+    // turn apart). Without the base, 128 terms were worse than SH lmax 4: the Haar terms went to
+    // the smooth cosine over the open sky and the sun met a coarse block's mean.
+    const Mesh mesh = SunScene();
+    for (double azimuth : {35.0, 125.0}) {
+      CAPTURE(azimuth);
+      SkyParams p;
+      p.azimuth = azimuth;
+      const auto sky = MakeSky(p);
+      ReferenceOptions ro;
+      ro.samples = 2048;
+      const Reference ref = ComputeReference(mesh, *sky, ro);
+      TransportOptions sh;
+      sh.lmax = 4;
+      sh.samples = 4096;
+      const double sh4 =
+          CompareVertices(ShadeVertices(mesh, ComputeTransport(mesh, sh, nullptr), ProjectLight(*sky, 4), true), ref.radiance)
+              .relative;
+      double previous = 1e300;
+      for (int budget : {6, 64, 256}) {
+        CAPTURE(budget);
+        WaveletOptions w;
+        w.face_size = 16;
+        w.budget = budget;
+        const WaveletTransport t = ComputeWaveletTransport(mesh, sh, w, nullptr);
+        const double error = CompareVertices(ShadeWavelet(mesh, t, LightOf(*sky, t), {}, true), ref.radiance).relative;
+        MESSAGE("budget " << budget << ": " << 100 * error << "% (SH lmax 4 " << 100 * sh4 << "%)");
+        // The base alone is SH lmax 4 up to the rays (4 a texel against 4096 directions) and the
+        // reference's noise (2048 directions: about 0.3 %).
+        constexpr double kSameAsSh = 1.1;
+        CHECK(error < kSameAsSh * sh4);
+        CHECK(error < previous);
+        previous = error;
+      }
+      CHECK(previous < 0.5 * sh4);  // 256 terms draw the sun's shadow SH lmax 4 cannot
+    }
+  }
+
   TEST_CASE("wavelet transport: the bounces are SH interreflection without its direct part") {
     const Mesh mesh = SunScene();
     TransportOptions o;

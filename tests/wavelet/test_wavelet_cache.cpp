@@ -200,7 +200,9 @@ TEST_SUITE("wavelet") {
     with("face size", [](Mesh&, TransportOptions&, WaveletOptions& w) { w.face_size = 16; });
     with("budget", [](Mesh&, TransportOptions&, WaveletOptions& w) { w.budget = 513; });
     with("split", [](Mesh&, TransportOptions&, WaveletOptions& w) { w.split = 3; });
-    with("selection", [](Mesh&, TransportOptions&, WaveletOptions& w) { w.selection = Selection::kMagnitude; });
+    with("selection", [](Mesh&, TransportOptions&, WaveletOptions& w) {
+      w.selection = w.selection == Selection::kArea ? Selection::kMagnitude : Selection::kArea;
+    });
     with("base lmax", [&](Mesh&, TransportOptions&, WaveletOptions& w) { w.base_lmax = base_w.base_lmax + 1; });
     with("no base", [](Mesh&, TransportOptions&, WaveletOptions& w) { w.base_lmax = -1; });
     // The SH options (the bounces, the rays' seed, the mode) and the mesh.
