@@ -9,7 +9,6 @@
 #include "core/color.h"
 #include "core/constants.h"
 #include "core/parallel.h"
-#include "env/cube_faces.h"
 #include "wavelet/haar.h"
 
 namespace prt {

@@ -164,6 +164,36 @@ TEST_SUITE("wavelet") {
     CHECK(std::acos(std::min(1.0, glm::dot(glm::normalize(mean), glm::transpose(turn) * SunDirection(p)))) > 4 * texel);
   }
 
+  TEST_CASE("light cube: a bright pixel's light follows it within its cell") {
+    // Two images alike but for which of two neighbouring pixels in one cell is bright: a cell
+    // placed at its pixels' centre of area would give both the same light; placed where its
+    // light comes from, the light's mean direction moves with the pixel.
+    constexpr int kWidth = 1024, kHeight = 512;
+    const CubeGrid grid(8), cells(8 * 8);  // the light cube's cells at F 8
+    ImageF a(kWidth, kHeight), b(kWidth, kHeight);
+    for (ImageF* im : {&a, &b})
+      for (glm::vec3& p : im->pixels) p = glm::vec3(0.1f);
+    const EquirectEnvironment probe(a, "probe");
+    std::vector<Texel> row;
+    probe.Row(200, row);
+    int col = 0;
+    while (cells.TexelOf(row[col].dir) != cells.TexelOf(row[col + 1].dir)) ++col;  // two pixels in one cell
+    a.at(col, 200) = glm::vec3(1000.0f);
+    b.at(col + 1, 200) = glm::vec3(1000.0f);
+    const EquirectEnvironment env_a(a, "a"), env_b(b, "b");
+    CubeRgb la, lb;
+    LightCube(env_a, grid).Resample(glm::dmat3(1.0), la);
+    LightCube(env_b, grid).Resample(glm::dmat3(1.0), lb);
+    const auto mean = [&grid](const CubeRgb& l) {
+      glm::dvec3 m(0.0);
+      for (std::size_t t = 0; t < grid.texels(); ++t) m += grid.SolidAngle(t) * (l.c[1][t] - 0.1) * grid.Direction(t);
+      return glm::normalize(m);
+    };
+    // The mean moves the way the bright pixel moved.
+    const glm::dvec3 step = row[col + 1].dir - row[col].dir;
+    CHECK(glm::dot(mean(lb) - mean(la), step) > 0.25 * glm::dot(step, step));
+  }
+
   TEST_CASE("light cube: a world turned a quarter is the image rolled a quarter") {
     // Turning about +Y by a quarter moves the equirect's columns by W/4 and maps the cube onto
     // itself: the turned original and the rolled image give the same light, texel for texel

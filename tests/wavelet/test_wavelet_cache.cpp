@@ -314,6 +314,39 @@ TEST_SUITE("wavelet") {
     CHECK(test::ErrorMessage([&] { WriteWaveletCache(missing, Synthetic(), 1); }).find("c.cache") != std::string::npos);
   }
 
+  TEST_CASE("wavelet cache: a new cache replaces the old by renaming, never by writing over it") {
+    // A second name (a hard link) of the old file keeps the old bytes: the new cache went to a
+    // file of its own and was renamed over the first name. Written in place, both names would
+    // show the new bytes (and a crash midway would leave a torn cache).
+    const std::string dir = test::ScratchDir("wavelet_cache_atomic");
+    const std::string path = dir + "/w.cache", second = dir + "/second_name";
+    WriteWaveletCache(path, Synthetic(), 1);
+    const std::string old = ReadFile(path);
+    std::filesystem::create_hard_link(path, second);
+    WriteWaveletCache(path, Synthetic(), 2);
+    CHECK(ReadFile(second) == old);
+    CHECK(ReadFile(path) != old);
+    std::string why;
+    CHECK(ReadWaveletCache(path, 2, why));
+  }
+
+  TEST_CASE("wavelet cache cli: a --cache that is a symbolic link is read but never replaced") {
+    // The plan says read-only (app/pipeline.h PlanCache): a stale cache behind the link is
+    // ignored and the transport recomputed, but the file the link names keeps its bytes and the
+    // link stays a link.
+    const std::string dir = test::ScratchDir("wavelet_cache_link");
+    test::WriteFloorAndWall(dir, glm::vec3(0.8f), glm::vec3(0.9f, 0.2f, 0.1f));
+    const std::string target = dir + "/target.cache", link = dir + "/link.cache";
+    WriteWaveletCache(target, Synthetic(), 7);  // made from other inputs
+    const std::string before = ReadFile(target);
+    std::filesystem::create_symlink(target, link);
+    const std::string summary = RunSummary(WaveletRender(dir, dir + "/out", "--cache " + test::Q(link)));
+    CHECK(Says(summary, "is a symbolic link"));
+    CHECK(!Says(summary, "taken from the cache"));
+    CHECK(std::filesystem::is_symlink(link));
+    CHECK(ReadFile(target) == before);
+  }
+
   TEST_CASE("wavelet cache cli: a second run takes the transport from the cache and draws the same bytes") {
     const std::string dir = test::ScratchDir("wavelet_cache_cli");
     test::WriteFloorAndWall(dir, glm::vec3(0.8f), glm::vec3(0.9f, 0.2f, 0.1f));
