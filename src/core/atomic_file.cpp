@@ -147,4 +147,10 @@ std::string ReadFile(const std::string& path) {
   return ss.str();
 }
 
+bool FileStartsWith(const std::string& path, const char* magic, std::size_t size) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(size, '\0');
+  return in.read(head.data(), static_cast<std::streamsize>(size)) && std::memcmp(head.data(), magic, size) == 0;
+}
+
 }  // namespace prt

@@ -4,6 +4,7 @@
 /// and renamed over the destination only once complete (rename is atomic on POSIX file systems).
 /// A failed or interrupted run leaves the previous file, if any, untouched.
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -70,5 +71,9 @@ std::string WriteProblem(const std::string& path, int error);
 
 /// Reads a whole file. Throws Error naming `path` if it is missing, a directory or unreadable.
 std::string ReadFile(const std::string& path);
+
+/// True if the file at `path` starts with the `size` bytes at `magic`; false for a shorter file
+/// and for a path that cannot be read.
+bool FileStartsWith(const std::string& path, const char* magic, std::size_t size);
 
 }  // namespace prt

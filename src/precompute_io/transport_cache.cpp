@@ -79,11 +79,7 @@ void WriteTransportCache(const std::string& path, const Transport& t, std::uint6
   WriteFileAtomic(path, parts);  // in pieces: the matrices are never copied
 }
 
-bool StartsLikeTransportCache(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  char magic[sizeof kMagic];
-  return in.read(magic, sizeof magic) && std::memcmp(magic, kMagic, sizeof kMagic) == 0;
-}
+bool StartsLikeTransportCache(const std::string& path) { return FileStartsWith(path, kMagic, sizeof kMagic); }
 
 std::optional<Transport> ReadTransportCache(const std::string& path, std::uint64_t key, std::string& why) {
   std::error_code ec;

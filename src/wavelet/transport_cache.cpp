@@ -135,11 +135,7 @@ void WriteWaveletCache(const std::string& path, const WaveletTransport& transpor
   WriteFileAtomic(path, bytes);  // in pieces: the arrays are never copied
 }
 
-bool StartsLikeWaveletCache(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  char magic[sizeof kMagic];
-  return in.read(magic, sizeof magic) && std::memcmp(magic, kMagic, sizeof kMagic) == 0;
-}
+bool StartsLikeWaveletCache(const std::string& path) { return FileStartsWith(path, kMagic, sizeof kMagic); }
 
 std::optional<WaveletTransport> ReadWaveletCache(const std::string& path, std::uint64_t key, std::string& why) {
   std::error_code ec;
