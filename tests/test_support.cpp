@@ -63,6 +63,8 @@ std::optional<std::string> CmarkGfm() { return FindProgram("cmark-gfm"); }
 
 doctest::skip NeedsCmarkGfm() { return doctest::skip(!CmarkGfm().has_value()); }
 
+doctest::test_suite WholeStudy() { return doctest::test_suite("report_study"); }
+
 std::string ErrorMessage(const std::function<void()>& run) {
   try {
     run();

@@ -47,6 +47,12 @@ std::optional<std::string> CmarkGfm();
 /// runner, without it (PRT_REQUIRE_CMARK_GFM=1, which CI sets, makes its absence an error).
 doctest::skip NeedsCmarkGfm();
 
+/// The decorator of a test case that runs a whole `prt report` study end to end (minutes under a
+/// sanitizer): `TEST_CASE("..." * test::WholeStudy())` puts it in the suite, and so the CTest
+/// label, `report_study`. The unsanitized suite runs it; the ASan + UBSan pass leaves the label
+/// out, and scripts/sanitize.sh says why.
+doctest::test_suite WholeStudy();
+
 /// The message of the prt::Error (core/error.h) that `run` throws; "" when it throws none.
 std::string ErrorMessage(const std::function<void()>& run);
 

@@ -26,7 +26,7 @@ struct GlossyRow {
 
 // A test of `prt report`, in its suite (the label the sanitizer passes choose by).
 TEST_SUITE("report") {
-  TEST_CASE("prt report --material: the glossy section's errors fall with lmax and the two paths meet") {
+  TEST_CASE("prt report --material: the glossy section's errors fall with lmax and the two paths meet" * prt::test::WholeStudy()) {
     const std::string dir = prt::test::ScratchDir("report_glossy");
     // The diffuse sweep kept short; the glossy sweep is fixed (quick: lmax 1..8, matrices 1..4).
     // No --albedo: the report scene's knot (0.80, 0.38, 0.20) is brighter than 1 - KS = 0.7, so

@@ -71,7 +71,7 @@ TEST_SUITE("app") {
 
 // A test of `prt report`, in its suite (the label the sanitizer passes choose by).
 TEST_SUITE("report") {
-  TEST_CASE("sample rule: prt report tabulates the sampling error against the truncation error and the rule") {
+  TEST_CASE("sample rule: prt report tabulates the sampling error against the truncation error and the rule" * prt::test::WholeStudy()) {
     const std::string dir = test::ScratchDir("rule_report");
     const auto r = test::RunPrt("report --quick --max-lmax 3 --max-samples 64 --quiet" + test::ScaledMesh("rule_report_scene") +
                                 " --out " + Q(dir));

@@ -145,8 +145,9 @@ TEST_SUITE("app") {
     WriteFileAtomic(dir + "/turned.hdr", EncodeHdr(turned));
     const ImageF wrong = EquirectImage([&](const glm::dvec3& d) { return sky->Radiance(quarter * d); }, 1024, 512);
     WriteFileAtomic(dir + "/wrong.hdr", EncodeHdr(wrong));
-    const std::string common = " --mesh " + Q(dir + "/scene.obj") +
-                               " --max-edge 4% --basis wavelet --cube-size 16 --size 96x72 --exposure -1 --ssaa 1 ";
+    // Scaled under a sanitizer (tests/README.md): a cube of 8^2 texels a face, not 16^2.
+    const std::string common = " --mesh " + Q(dir + "/scene.obj") + " --max-edge 4% --basis wavelet" +
+                               (kSanitized ? " --cube-size 8" : " --cube-size 16") + " --size 96x72 --exposure -1 --ssaa 1 ";
     REQUIRE(RunPrt("render" + common + "--env " + Q(dir + "/sky.hdr") + " --frames 4 --out " + Q(dir + "/a")).exit_code == 0);
     REQUIRE(RunPrt("render" + common + "--env " + Q(dir + "/turned.hdr") + " --frames 1 --out " + Q(dir + "/b")).exit_code == 0);
     REQUIRE(RunPrt("render" + common + "--env " + Q(dir + "/wrong.hdr") + " --frames 1 --out " + Q(dir + "/c")).exit_code == 0);

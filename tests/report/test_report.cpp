@@ -37,7 +37,7 @@ const prt::StabilityOptions kSanitizedStability{48, 6, 10};
 }  // namespace
 
 TEST_SUITE("report") {
-  TEST_CASE("stability: the README's prt report --stability writes every stiff and extreme case, each within this test's own limit") {
+  TEST_CASE("stability: the README's prt report --stability writes every stiff and extreme case, each within this test's own limit" * prt::test::WholeStudy()) {
     // One run of the command, as the README writes it (the suite's slowest work, so it runs once:
     // the README test leaves it to this one): its files, and every case's figure as stability.csv
     // gives it (6 significant digits) against the test's limits.

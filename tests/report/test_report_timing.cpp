@@ -173,7 +173,7 @@ TEST_SUITE("report") {
     CHECK(md.find("left out (times untrusted)") != std::string::npos);
   }
 
-  TEST_CASE("report timing: a real quick sweep counts its work and times every run with a median and a range") {
+  TEST_CASE("report timing: a real quick sweep counts its work and times every run with a median and a range" * prt::test::WholeStudy()) {
     const std::string dir = test::ScratchDir("timing_sweep");
     const auto r = test::RunPrt("report --quick --max-lmax 3 --max-samples 32 --quiet" +
                                 test::ScaledMesh("timing_sweep_scene") + " --out " + test::Q(dir));

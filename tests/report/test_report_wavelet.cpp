@@ -79,7 +79,7 @@ TEST_SUITE("report") {
     for (std::size_t v = knot; v < mesh.vertex_count(); ++v) CHECK(mesh.positions[v].y == 0.0f);
   }
 
-  TEST_CASE("basis study: errors fall with lmax and budget, memory is what each basis stores") {
+  TEST_CASE("basis study: errors fall with lmax and budget, memory is what each basis stores" * prt::test::WholeStudy()) {
     const prt::WaveletStudy& s = SmallStudy();
     const prt::WaveletStudyConfig& c = s.config;
     REQUIRE(s.vertices == 48 * 8 + 13 * 13);
@@ -160,7 +160,7 @@ TEST_SUITE("report") {
     }
   }
 
-  TEST_CASE("basis study: report.md section, report.csv rows and the two-panel chart") {
+  TEST_CASE("basis study: report.md section, report.csv rows and the two-panel chart" * prt::test::WholeStudy()) {
     const prt::WaveletStudy& s = SmallStudy();
     const std::string md = prt::WaveletMarkdown(s);
     CHECK(md.find("## Basis: spherical harmonics against Haar wavelets") != std::string::npos);
@@ -198,7 +198,7 @@ TEST_SUITE("report") {
     CHECK(back.rgb == chart.rgb);
   }
 
-  TEST_CASE("prt report --basis wavelet --quick writes the basis section, its rows and basis_error.png") {
+  TEST_CASE("prt report --basis wavelet --quick writes the basis section, its rows and basis_error.png" * prt::test::WholeStudy()) {
     const std::string dir = prt::test::ScratchDir("report_wavelet");
     const std::string mesh = prt::test::WriteFloorAndWall(dir, glm::vec3(0.7f), glm::vec3(0.5f));
     // The SH sweep kept short; the basis study runs on the floor and wall (--mesh).
