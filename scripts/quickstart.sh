@@ -2,7 +2,8 @@
 # The README's two commands:
 #   bash scripts/quickstart.sh demo   installs what is missing, builds, runs `prt demo`
 #   bash scripts/quickstart.sh test   installs what is missing, builds, runs every test, then
-#                                     prints the ten slowest (scripts/slowest-tests.sh)
+#                                     prints the ten slowest (scripts/slowest-tests.sh) and,
+#                                     last, how many were skipped and why (skipped-tests.sh)
 # Each step is timed as a phase of .ci/run's table when PRT_PHASE_LOG is set (scripts/phase.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,6 +23,13 @@ case "$what" in
   demo) cmake --build "$build" --parallel "$(nproc)" --target prt
         "$build/prt" demo ;;
   test) phase "build (Release)" cmake --build "$build" --parallel "$(nproc)"
-        phase "suite (Release)" ctest --test-dir "$build" --output-on-failure --no-tests=error --parallel "$(nproc)"
-        if [ -f "$build/Testing/Temporary/LastTest.log" ]; then bash scripts/slowest-tests.sh "$build"; fi ;;
+        suite_log="$build/suite.log"
+        status=0
+        phase "suite (Release)" ctest --test-dir "$build" --output-on-failure --no-tests=error --parallel "$(nproc)" \
+          | tee "$suite_log" || status=$?
+        if [ -f "$build/Testing/Temporary/LastTest.log" ]; then bash scripts/slowest-tests.sh "$build"; fi
+        # The last line: how many tests were skipped, and for want of what (CTest's "100% tests
+        # passed" counts a skipped test as neither passed nor failed).
+        bash scripts/skipped-tests.sh "$suite_log"
+        exit $status ;;
 esac

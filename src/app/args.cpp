@@ -143,7 +143,7 @@ std::string Args::Choice(const std::string& name, const std::string& fallback,
     if (c == v) return v;
   std::string list;
   for (const auto& c : choices) list += (list.empty() ? "" : ", ") + c;
-  const std::string near = NearestName(v, choices);
+  const std::string near = NearestChoice(v, choices);
   Fail(name + ": unknown value '" + v + "' (" + (near.empty() ? "" : "did you mean " + near + "? ") +
        "expected one of " + list + ")");
 }

@@ -120,6 +120,20 @@ std::string NearestName(const std::string& given, const std::vector<std::string>
   return best_distance <= limit ? best : std::string();
 }
 
+std::string NearestChoice(const std::string& given, const std::vector<std::string>& choices) {
+  if (std::string near = NearestName(given, choices); !near.empty()) return near;
+  // A few words to choose from: the nearest, if it is the only one that near and at most half
+  // its own length away (`lite` for light: 3 edits of 5).
+  std::string best;
+  std::size_t best_distance = static_cast<std::size_t>(-1), ties = 0;
+  for (const auto& c : choices) {
+    const std::size_t d = EditDistance(Lower(given), Lower(c));
+    if (d < best_distance) best_distance = d, best = c, ties = 0;
+    else if (d == best_distance) ++ties;
+  }
+  return ties == 0 && !best.empty() && 2 * best_distance <= best.size() + 1 ? best : std::string();
+}
+
 std::string NearestPath(const std::string& given) {
   namespace fs = std::filesystem;
   constexpr std::size_t kMaxEntries = 10000;  // a folder larger than this is not searched

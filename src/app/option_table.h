@@ -53,6 +53,11 @@ std::string FormatHelp(const CommandSpec& spec);
 /// a third of the length, and never more than 3.
 std::string NearestName(const std::string& given, const std::vector<std::string>& candidates);
 
+/// The value of a closed list of `choices` that `given` was likely meant to be: NearestName's,
+/// else the nearest choice by edit distance when no other is as near and it is at most half its
+/// own length away, rounded up (`lite`: light). "" when none.
+std::string NearestChoice(const std::string& given, const std::vector<std::string>& choices);
+
 /// For a path that does not exist, the existing path nearest to it: each missing part replaced
 /// by the nearest name in its folder (NearestName: a typo, another case), as long as the result
 /// exists; "" when there is none (`.../cubemap/Gracecathedral` -> `.../cubemap/GraceCathedral`).

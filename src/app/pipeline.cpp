@@ -200,8 +200,10 @@ namespace {
 std::string DirectionsText(const SceneOptions& options, const TransportOptions& o, const TransportReport& r,
                            std::size_t vertices) {
   const std::string sampler = SamplerName(o.sampler);
-  if (r.hidden_directions == 0)
-    return std::to_string(r.directions_per_vertex) + " " + sampler + " directions per vertex" + SamplesOrigin(options);
+  // One count when every vertex took it: no camera (precompute), or every vertex seen.
+  if (r.hidden_directions == 0 || r.hidden_vertices == 0)
+    return std::to_string(r.directions_per_vertex) + " " + sampler + " directions per vertex" +
+           SamplesOrigin(options, o.seen.empty());
   return std::to_string(r.directions_per_vertex) + " " + sampler + " directions for each of the " +
          std::to_string(vertices - r.hidden_vertices) + " vertices the camera sees, " +
          std::to_string(r.hidden_directions) + " for the " + std::to_string(r.hidden_vertices) +

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "app/basis_table.h"
+#include "app/option_table.h"
 #include "app/render_video.h"
 #include "core/atomic_file.h"  // WriteProblem
 #include "core/error.h"
@@ -144,7 +145,9 @@ void ReadView(Args& args, RenderOptions& o, const RenderOptions& d) {
   } else if (const auto v = ViewFromName(view); v && *v != View::kTransport) {
     o.view = *v;
   } else {
-    args.Fail("--view: unknown value '" + view + "' (expected radiance, irradiance, albedo, transport:K, light or glossy)");
+    const std::string near = NearestChoice(view, {"radiance", "irradiance", "albedo", "light", "glossy"});
+    args.Fail("--view: unknown value '" + view + "' (" + (near.empty() ? "" : "did you mean " + near + "? ") +
+              "expected radiance, irradiance, albedo, transport:K, light or glossy)");
   }
 }
 

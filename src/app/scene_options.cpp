@@ -330,10 +330,11 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
   return o;
 }
 
-std::string SamplesOrigin(const SceneOptions& o) {
+std::string SamplesOrigin(const SceneOptions& o, bool every_vertex) {
   if (!o.samples_from_rule || o.transport == "unshadowed") return "";
+  const Sampler sampler = SamplerFromName(o.sampler);
   return " (the sample rule's default at lmax " + std::to_string(o.lmax) + ": " +
-         SampleRuleText(SamplerFromName(o.sampler)) +
+         (every_vertex ? SampleRuleTextEveryVertex(sampler) : SampleRuleText(sampler)) +
          "; it aims at frame 0 within 2 levels of a converged frame at every pixel, as measured at lmax 2 and 4; "
          "--samples N and --hidden-samples N override)";
 }

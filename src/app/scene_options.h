@@ -83,7 +83,7 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& defaults = {});
 /// How the transport's direction count was chosen, for the transport's run-summary line: " (the
 /// sample rule's default at lmax L: ...; --samples N overrides)" when it came from the rule, ""
 /// when --samples gave it or the transport is unshadowed.
-std::string SamplesOrigin(const SceneOptions& options);
+std::string SamplesOrigin(const SceneOptions& options, bool every_vertex = false);
 
 /// The `--max-edge` length for a mesh whose bounding-box diagonal is `diagonal` (0: none).
 double MaxEdgeLength(const SceneOptions& options, double diagonal);

@@ -16,6 +16,7 @@
 #include "geometry/mesh_ops.h"
 #include "geometry/mesh_texture.h"
 #include "geometry/weld.h"
+#include "io/material_names.h"
 #include "io/obj_materials.h"
 #include "io/obj_scan.h"
 #include "io/obj_textures.h"
@@ -115,7 +116,9 @@ LoadedMesh LoadObj(const std::string& path, const std::string& texture) {
   out.report.first_skipped_line = scan.first_skipped_line;
   out.report.first_skipped_text = scan.first_skipped_text;
 
-  // Parse and triangulate from memory; libraries are read by MaterialLibraries.
+  // Parse and triangulate from memory; libraries are read by MaterialLibraries. Names with
+  // blanks are handed over with their blanks hidden, and shown again after (material_names.h).
+  HideNameBlanks(text, "usemtl");
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
   std::vector<tinyobj::material_t> materials;
@@ -131,8 +134,9 @@ LoadedMesh LoadObj(const std::string& path, const std::string& texture) {
     }
   }
   text = std::string();  // the text is no longer needed: free it before building the mesh
+  for (tinyobj::material_t& m : materials) m.name = ShowNameBlanks(std::move(m.name));
   std::set<std::string> not_found;
-  TranslateWarnings(path, raw_warnings, not_found, out.report.warnings);
+  TranslateWarnings(path, ShowNameBlanks(raw_warnings), not_found, out.report.warnings);
   for (const std::string& r : libraries.remarks()) out.report.warnings.push_back(r);
   out.files_read.push_back(path);
   for (const std::string& library : libraries.read_paths()) out.files_read.push_back(library);
@@ -146,7 +150,7 @@ LoadedMesh LoadObj(const std::string& path, const std::string& texture) {
   };
   if (!texture.empty() && attrib.texcoords.empty())
     Fail(path, "has no texture coordinates (vt lines) for --texture " + texture, "an OBJ with vt coordinates on its faces");
-  ObjTextures textures(materials, libraries.material_folders(), albedos, texture, path);
+  ObjTextures textures(materials, libraries.material_folders(), albedos, libraries.map_kd_options(), texture, path);
   const auto texcoord_count = static_cast<int>(attrib.texcoords.size() / 2);
 
   // Gather the triangles' corners. The scan checked the indices on the text; the two checks

@@ -10,6 +10,7 @@
 #include <glm/common.hpp>
 
 #include "geometry/mesh_ops.h"
+#include "io/material_names.h"
 #include "material/material.h"
 
 #include "core/text.h"
@@ -23,6 +24,32 @@ namespace fs = std::filesystem;
 std::string Join(const std::vector<std::string>& items, const char* last) {
   std::string out;
   for (std::size_t i = 0; i < items.size(); ++i) out += (i == 0 ? "" : i + 1 == items.size() ? last : ", ") + items[i];
+  return out;
+}
+
+// The options a `map_Kd` line writes before its file name (`-s 2 2 1 -bm 1 tex.png`: -s, -bm),
+// whatever their values, read as tinyobjloader reads them: each option takes a fixed count of
+// words after it (-o, -s, -t three; -mm two; the others one), and the first word that is no
+// option starts the file name.
+std::vector<std::string> WrittenOptions(std::string_view rest) {
+  static const std::map<std::string_view, int> kWords = {
+      {"-blendu", 1}, {"-blendv", 1}, {"-clamp", 1}, {"-boost", 1}, {"-bm", 1},     {"-o", 3},         {"-s", 3},
+      {"-t", 3},      {"-type", 1},   {"-texres", 1}, {"-imfchan", 1}, {"-mm", 2}, {"-colorspace", 1}};
+  std::vector<std::string_view> words;
+  for (std::size_t at = 0; at < rest.size();) {
+    while (at < rest.size() && (rest[at] == ' ' || rest[at] == '\t')) ++at;
+    std::size_t end = at;
+    while (end < rest.size() && rest[end] != ' ' && rest[end] != '\t') ++end;
+    if (end > at) words.push_back(rest.substr(at, end - at));
+    at = end;
+  }
+  std::vector<std::string> out;
+  for (std::size_t w = 0; w < words.size();) {
+    const auto option = kWords.find(words[w]);
+    if (option == kWords.end()) break;
+    out.emplace_back(words[w]);
+    w += 1 + static_cast<std::size_t>(option->second);
+  }
   return out;
 }
 
@@ -53,18 +80,29 @@ bool MaterialLibraries::Read(const std::string& name, std::vector<tinyobj::mater
     if (!quiet_if_missing) unread_.push_back(name + (fs::exists(path, ec) ? " could not be read" : " was not found"));
     return false;
   }
-  const std::string content = text.str();
-  std::istringstream stream(content);
-  for (std::string line; std::getline(stream, line);) {
+  std::string content = text.str();
+  // Each statement's keyword, and the options each material's map_Kd line writes (its last one).
+  std::map<std::string, std::vector<std::string>> options_by_name;
+  std::string material;
+  std::istringstream lines(content);
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
     std::istringstream fields(line);
     std::string keyword;
-    if (fields >> keyword && keyword[0] != '#') keywords_.insert(keyword);
+    if (!(fields >> keyword) || keyword[0] == '#') continue;
+    keywords_.insert(keyword);
+    const std::string_view rest = std::string_view(line).substr(line.find(keyword) + keyword.size());
+    if (keyword == "newmtl") material = std::string(MaterialNameOf(rest));
+    if (keyword == "map_Kd") options_by_name[material] = WrittenOptions(rest);
   }
-  stream.clear();
-  stream.seekg(0);
+  HideNameBlanks(content, "newmtl");  // as the OBJ's usemtl lines (material_names.h)
+  std::istringstream stream(content);
   std::string remarks;
+  const std::size_t first = materials->size();
   tinyobj::LoadMtl(names, materials, &stream, &remarks, err);
   material_folders_.resize(materials->size(), path.parent_path().string());
+  for (std::size_t m = first; m < materials->size(); ++m)
+    map_kd_options_.push_back(options_by_name[ShowNameBlanks((*materials)[m].name)]);
   for (const std::string& r : TinyObjLines(remarks)) remarks_.push_back(path.string() + ": " + r);
   read_.push_back(name);
   read_paths_.push_back(path.string());

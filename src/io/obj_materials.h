@@ -58,6 +58,10 @@ class MaterialLibraries : public tinyobj::MaterialReader {
   /// Per material read (in tinyobjloader's order), the folder of the library that defined it:
   /// where its map_Kd is looked up.
   const std::vector<std::string>& material_folders() const { return material_folders_; }
+  /// Per material read (as material_folders), the options its `map_Kd` line writes before the
+  /// file name (`-s`, `-clamp`, ...), whatever their values: the ones prt ignores are named
+  /// (obj_textures.h) even where they write their default.
+  const std::vector<std::vector<std::string>>& map_kd_options() const { return map_kd_options_; }
   /// tinyobjloader's remarks on the libraries' content, each prefixed with the library's path.
   const std::vector<std::string>& remarks() const { return remarks_; }
   /// Every statement keyword the libraries read contain (`newmtl`, `Kd`, `Ns`, ...).
@@ -70,6 +74,7 @@ class MaterialLibraries : public tinyobj::MaterialReader {
   std::string folder_;
   std::vector<std::string> mtllib_lines_;
   std::vector<std::string> read_, read_paths_, unread_, remarks_, material_folders_;
+  std::vector<std::vector<std::string>> map_kd_options_;
   std::set<std::string> keywords_;
 };
 

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "core/error.h"
+#include "io/material_names.h"
 
 namespace prt {
 namespace {
@@ -107,11 +108,7 @@ class Pass {
     } else if (key == "p" && args) {
       Corners(k, e, "point");
     } else if (key == "usemtl") {
-      const char* n = k;
-      while (n < e && IsBlank(*n)) ++n;
-      const char* m = n;
-      while (m < e && !IsBlank(*m)) ++m;
-      material_faces_ = &scan_.faces_by_material[std::string(n, m)];
+      material_faces_ = &scan_.faces_by_material[std::string(MaterialNameOf(std::string_view(k, std::size_t(e - k))))];
     } else if (key == "mtllib" && std::all_of(k, e, IsBlank)) {
       Skip(s, e);  // no file name: nothing to read
     } else if (key == "mtllib") {

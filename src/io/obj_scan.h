@@ -43,7 +43,8 @@ struct ObjScan {
   std::size_t skipped_lines = 0;       ///< lines not understood (see the file comment)
   std::size_t first_skipped_line = 0;  ///< 1-based; 0 when none
   std::string first_skipped_text;      ///< cut to kQuotedLineLength bytes, printable
-  /// Faces after each `usemtl NAME`, until the next `usemtl` (faces before the first have none).
+  /// Faces after each `usemtl NAME`, until the next `usemtl` (faces before the first have none);
+  /// NAME is the whole rest of the line, blanks trimmed (material_names.h).
   std::map<std::string, std::size_t> faces_by_material;
   /// The whole rest of each `mtllib` line, blanks trimmed at both ends, in file order: a library
   /// whose name has spaces (`mtllib My Scene.mtl`, as Blender names it after the .blend), which

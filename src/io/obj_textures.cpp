@@ -1,5 +1,6 @@
 #include "io/obj_textures.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "geometry/mesh_ops.h"
@@ -51,42 +52,37 @@ std::string FindTextureFile(const std::string& folder, const std::string& name, 
   return {};
 }
 
-/// The names of the options of `o` that differ from their defaults and that prt ignores.
-std::vector<std::string> IgnoredOptions(const tinyobj::texture_option_t& o) {
+/// The options prt ignores, in the order the file comment lists them, of those a map_Kd line
+/// writes: every option but -s and -o.
+std::vector<std::string> IgnoredOptions(const std::vector<std::string>& written) {
+  static const char* const kIgnored[] = {"-clamp",  "-mm",    "-boost", "-t",    "-texres",     "-imfchan",
+                                         "-blendu", "-blendv", "-type",  "-colorspace", "-bm"};
   std::vector<std::string> out;
-  if (o.clamp) out.push_back("-clamp");
-  if (o.brightness != 0 || o.contrast != 1) out.push_back("-mm");
-  if (o.sharpness != 1) out.push_back("-boost");
-  if (o.turbulence[0] != 0 || o.turbulence[1] != 0 || o.turbulence[2] != 0) out.push_back("-t");
-  if (o.texture_resolution != -1) out.push_back("-texres");
-  if (o.imfchan != 'm') out.push_back("-imfchan");
-  if (!o.blendu) out.push_back("-blendu");
-  if (!o.blendv) out.push_back("-blendv");
-  if (o.type != tinyobj::TEXTURE_TYPE_NONE) out.push_back("-type");
-  if (!o.colorspace.empty()) out.push_back("-colorspace");
-  if (o.bump_multiplier != 1) out.push_back("-bm");
+  for (const char* option : kIgnored)
+    if (std::find(written.begin(), written.end(), option) != written.end()) out.push_back(option);
   return out;
 }
 
 }  // namespace
 
 ObjTextures::ObjTextures(const std::vector<tinyobj::material_t>& materials, const std::vector<std::string>& folders,
-                         const std::vector<glm::vec3>& albedos, const std::string& override_path,
-                         const std::string& obj_path)
+                         const std::vector<glm::vec3>& albedos,
+                         const std::vector<std::vector<std::string>>& map_kd_options,
+                         const std::string& override_path, const std::string& obj_path)
     : materials_(materials), folders_(folders), albedos_(albedos), override_(override_path), obj_path_(obj_path) {
   std::map<std::string, int> last;
   for (std::size_t m = 0; m < materials.size(); ++m) last[materials[m].name] = static_cast<int>(m);
   for (const auto& m : materials) last_definition_.push_back(last[m.name]);
   active_ = !override_.empty();
   for (int m : last_definition_) active_ = active_ || !materials[static_cast<std::size_t>(m)].diffuse_texname.empty();
-  if (override_.empty()) WarnIgnoredOptions();
+  if (override_.empty()) WarnIgnoredOptions(map_kd_options);
 }
 
-void ObjTextures::WarnIgnoredOptions() {
+void ObjTextures::WarnIgnoredOptions(const std::vector<std::vector<std::string>>& map_kd_options) {
   std::string list;
   for (std::size_t m = 0; m < materials_.size(); ++m) {
     if (last_definition_[m] != static_cast<int>(m) || materials_[m].diffuse_texname.empty()) continue;
-    const std::vector<std::string> ignored = IgnoredOptions(materials_[m].diffuse_texopt);
+    const std::vector<std::string> ignored = IgnoredOptions(m < map_kd_options.size() ? map_kd_options[m] : std::vector<std::string>{});
     if (ignored.empty()) continue;
     std::string names;
     for (const std::string& o : ignored) names += (names.empty() ? "" : " ") + o;

@@ -25,7 +25,8 @@
 /// Blender's importer (mapping scale and location) read them; w has no meaning on a surface.
 /// tinyobjloader parses the options apart from the file name. The other options (-clamp, -mm,
 /// -boost, -t, -texres, -imfchan, -blendu, -blendv, -type, -colorspace, -bm) are ignored, said
-/// in one warning naming them and their materials. An option tinyobjloader does not know stays
+/// in one warning naming them and their materials: each one the line writes, even with its
+/// default value (`-clamp off`, `-bm 1`), since the user wrote it to be read. An option tinyobjloader does not know stays
 /// in the name it hands over (`-foo 1 tex.png`); the longest tail of it after a blank that names
 /// a file is taken, the words before it named as ignored.
 
@@ -45,10 +46,12 @@ namespace prt {
 
 class ObjTextures {
  public:
-  /// `folders[m]`: the folder of the .mtl that defined material m; `albedos[m]`: its Kd
-  /// (obj_materials.h). `override_path` non-empty: --texture, for every face.
+  /// `folders[m]`: the folder of the .mtl that defined material m; `albedos[m]`: its Kd;
+  /// `map_kd_options[m]`: the options its map_Kd line writes (obj_materials.h). `override_path`
+  /// non-empty: --texture, for every face.
   ObjTextures(const std::vector<tinyobj::material_t>& materials, const std::vector<std::string>& folders,
-              const std::vector<glm::vec3>& albedos, const std::string& override_path, const std::string& obj_path);
+              const std::vector<glm::vec3>& albedos, const std::vector<std::vector<std::string>>& map_kd_options,
+              const std::string& override_path, const std::string& obj_path);
 
   /// True when some material names a map_Kd or --texture is given: the mesh is textured.
   bool active() const { return active_; }
@@ -72,7 +75,7 @@ class ObjTextures {
   std::uint32_t Solid(const glm::vec3& albedo, const std::string& name);
   /// The file material m's map_Kd names, found as the file comment says; empty if nowhere.
   const std::string& FileOf(int m);
-  void WarnIgnoredOptions();
+  void WarnIgnoredOptions(const std::vector<std::vector<std::string>>& map_kd_options);
 
   const std::vector<tinyobj::material_t>& materials_;
   std::vector<std::string> folders_;

@@ -45,4 +45,10 @@ std::string SampleRuleText(Sampler sampler) {
          ", for those it sees";
 }
 
+std::string SampleRuleTextEveryVertex(Sampler sampler) {
+  return std::string(SamplerName(sampler)) + " needs " + std::to_string(SamplesPerCoefficient(sampler)) +
+         " (L+1)^2 rounded up to a power of two; every vertex takes " + std::to_string(kSeenOverHidden * kHiddenMargin) +
+         " times that, at least " + std::to_string(kDefaultFloor) + ", as the vertices a camera sees do";
+}
+
 }  // namespace prt

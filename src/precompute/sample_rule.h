@@ -99,5 +99,7 @@ int DefaultHiddenSamples(int lmax, Sampler sampler);
 
 /// "c (L+1)^2 rounded up to a power of two" in words, for help texts and the run summary.
 std::string SampleRuleText(Sampler sampler);
+/// The same for a run with no camera (precompute), where every vertex takes the seen count.
+std::string SampleRuleTextEveryVertex(Sampler sampler);
 
 }  // namespace prt

@@ -223,7 +223,11 @@ TEST_SUITE("app") {
              Case{"--sampler sideways", "--sampler: unknown value 'sideways'"},
              Case{"--tonemap film", "--tonemap: unknown value 'film'"},
              Case{"--view transport:x", "--view"},
-             Case{"--view transport", "--view: unknown value 'transport'"},  // the coefficient is not optional
+             Case{"--view transport", "--view: unknown value 'transport' (expected radiance,"},  // the coefficient is not optional
+             Case{"--view lite", "--view: unknown value 'lite' (did you mean light? expected radiance, irradiance,"},
+             Case{"--view Radiance", "--view: unknown value 'Radiance' (did you mean radiance? expected"},
+             Case{"--view glow", "--view: unknown value 'glow' (did you mean glossy? expected"},
+             Case{"--view xyz", "--view: unknown value 'xyz' (expected radiance,"},  // nothing near enough
              Case{"--no-such-option 3", "--no-such-option: unknown option"},
              Case{"stray", "'stray': unexpected argument"},
              Case{"--frames 2 --frames 3", "--frames: given twice"},

@@ -218,6 +218,42 @@ TEST_SUITE("app") {
     CHECK(calls.find("build-tsan") == std::string::npos);
   }
 
+  TEST_CASE("quickstart.sh test: its last line counts the skipped tests and says what they lack") {
+    // quickstart.sh and the scripts it runs, copied into a tree whose package installer is a
+    // stand-in, with stand-ins for cmake and ctest: ctest prints what CTest prints of `skipped`
+    // tests that did not run, then exits with $STAND_IN.
+    const std::string tree = test::ScratchDir("quickstart_skipped"), bin = tree + "/bin";
+    fs::create_directories(tree + "/scripts");
+    fs::create_directories(bin);
+    fs::create_directories(tree + "/build");  // what cmake's configure step would make
+    for (const char* script : {"quickstart.sh", "phase.sh", "skipped-tests.sh", "slowest-tests.sh"})
+      fs::copy_file(test::SourceDir() + "/scripts/" + script, tree + "/scripts/" + script);
+    std::ofstream(tree + "/scripts/install-deps.sh") << "true\n";
+    std::ofstream(bin + "/cmake") << "#!/bin/sh\ntrue\n";
+    std::ofstream(bin + "/ctest") << "#!/bin/sh\necho '100% tests passed, 0 tests failed out of 5'\n"
+                                     "echo 'The following tests did not run:'\n"
+                                     "echo '\t 12 - obj: mary from the course data (Skipped)'\n"
+                                     "echo '\t 40 - readme: the course commands (Skipped)'\n"
+                                     "exit $STAND_IN\n";
+    for (const char* tool : {"/cmake", "/ctest"}) fs::permissions(bin + tool, fs::perms::owner_all);
+    for (const int status : {0, 8}) {
+      CAPTURE(status);
+      const auto r = test::RunCommand("cd " + Q(tree) + " && STAND_IN=" + std::to_string(status) + " PATH=" + Q(bin) +
+                                      ":\"$PATH\" PRT_SHARED_DATA=none PRT_PHASE_LOG= bash scripts/quickstart.sh test");
+      CAPTURE(r.out);
+      CHECK(r.exit_code == status);  // the suite's status, the line printed all the same
+      std::string out = r.out;
+      while (!out.empty() && out.back() == '\n') out.pop_back();
+      const std::string last = out.substr(out.rfind('\n') + 1);
+      CHECK(last.rfind("tests: 2 skipped, not passed, for want of the course's files (../shared/data", 0) == 0);
+    }
+    // Nothing skipped: said as well.
+    std::ofstream(tree + "/none.log") << "100% tests passed, 0 tests failed out of 5\n";
+    const auto none = test::RunCommand("bash " + Q(tree + "/scripts/skipped-tests.sh") + " " + Q(tree + "/none.log"));
+    CHECK(none.exit_code == 0);
+    CHECK(none.out == "tests: none skipped\n");
+  }
+
   TEST_CASE("ci run: its phase table holds the steps of the scripts it calls, and its last line says how it ended") {
     // .ci/run, copied into a tree whose quickstart.sh and sanitize.sh are stand-ins: each times
     // one step through the real scripts/phase.sh; the sanitizers' step exits with $STAND_IN.

@@ -8,11 +8,13 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "core/atomic_file.h"
 #include "io/png_io.h"
 #include "tests/app/viewer_files.h"
 #include "tests/env/env_test_util.h"
@@ -143,6 +145,44 @@ TEST_SUITE("app") {
     CHECK(LineStarting(aces.err, "look course").find("--tonemap srgb") == std::string::npos);
     const Image8 a = ReadPng(test::FramePath(dir + "/viewer", 0, 1)), b = ReadPng(test::FramePath(dir + "/aces", 0, 1));
     CHECK(a.rgb != b.rgb);
+  }
+
+  TEST_CASE("render --look course is byte for byte the options its summary line says it sets, each of which counts") {
+    // Under a bright small sun at lmax 6 on a coloured knot, each option the look sets changes the
+    // picture (albedo, exposure, curve, the auto window against none, the camera): the look's frame must be
+    // the frame of the options its line names, given explicitly, and not the frame of those
+    // options less any one of them.
+    const std::string dir = test::ScratchDir("course_look_bytes");
+    const std::string base = "render --mesh " + Q(test::WriteSmallScene(dir)) + " --env sky:sun=1000,radius=1 --lmax 6 --frames 1 "
+                             "--size 48x36 --ssaa 1 --cache " + Q(dir + "/transport.cache") + " --out ";
+    const auto look = test::RunPrt(base + Q(dir + "/look") + " --look course");
+    REQUIRE_MESSAGE(look.exit_code == 0, look.err);
+    std::string line = LineStarting(look.err, "look course");
+    REQUIRE(line.find("):") != std::string::npos);
+    line = line.substr(line.find("):") + 2);
+    CHECK(line.find("kept") == std::string::npos);  // nothing given on the command line
+    // The options, as --name value pairs.
+    std::vector<std::string> options;
+    std::istringstream words(line);
+    for (std::string name, value; words >> name >> value;) options.push_back(name + " " + value);
+    REQUIRE(options.size() == 7);  // view, tonemap, exposure, window, eye, target, fov
+    const auto frame = [&](const std::string& out) { return ReadFile(test::FramePath(dir + "/" + out, 0, 1)); };
+    const std::string expected = frame("look");
+    std::string all;
+    for (const std::string& o : options) all += " " + o;
+    const auto same = test::RunPrt(base + Q(dir + "/explicit") + all);
+    REQUIRE_MESSAGE(same.exit_code == 0, same.err);
+    CHECK(frame("explicit") == expected);
+    for (std::size_t left = 0; left < options.size(); ++left) {
+      CAPTURE(options[left]);
+      std::string rest;
+      for (std::size_t i = 0; i < options.size(); ++i)
+        if (i != left) rest += " " + options[i];
+      const std::string out = "without_" + std::to_string(left);
+      const auto r = test::RunPrt(base + Q(dir + "/" + out) + rest);
+      REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+      CHECK(frame(out) != expected);
+    }
   }
 
   TEST_CASE("render --look: a bad value or --basis wavelet is a one-line usage error; another lmax is warned") {

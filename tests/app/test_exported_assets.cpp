@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -150,6 +151,65 @@ TEST_SUITE("app") {
     for (int q = 0; q < 4; ++q) CheckQuadrant(frame, q, Code(kQuadrant[swapped[q]]));
   }
 
+  TEST_CASE("exported assets: a textured face without texture coordinates takes the texture's mean, as warned") {
+    const std::string dir = test::ScratchDir("assets_no_vt");
+    WriteQuadrants(dir + "/quadrants.png");
+    // Kd far from the texture's colours: a face that fell back to Kd would show it.
+    WriteFileAtomic(dir + "/coat.mtl", "newmtl coat\nKd 0.05 0.05 0.05\nmap_Kd quadrants.png\n");
+    // Two triangles apart: the first with vt at its corners, the second (vertices 4 to 6) without.
+    WriteFileAtomic(dir + "/square.obj", "mtllib coat.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 0 0\nv 6 0 0\nv 5 1 0\n"
+                                         "vt 0.1 0.1\nvt 0.2 0.1\nvt 0.1 0.2\nusemtl coat\nf 1/1 2/2 3/3\nf 4 5 6\n");
+    const LoadedMesh loaded = LoadObj(dir + "/square.obj");
+    REQUIRE(loaded.mesh.textured());
+    // The mean of the texture's linear colours, computed here from its four equal quadrants.
+    glm::vec3 mean(0.0f);
+    for (const auto& q : kQuadrant) mean += glm::vec3(Linear(q[0]), Linear(q[1]), Linear(q[2])) / 4.0f;
+    constexpr float kMeanTolerance = 1e-5f;  // float sums of 256 texels
+    int untextured = 0;
+    for (std::size_t v = 0; v < loaded.mesh.vertex_count(); ++v) {
+      if (loaded.mesh.positions[v].x < 4.0f) continue;  // the first triangle
+      ++untextured;
+      for (int c = 0; c < 3; ++c) CHECK(std::abs(loaded.mesh.albedo[v][c] - mean[c]) < kMeanTolerance);
+    }
+    CHECK(untextured == 3);
+    int said = 0;
+    for (const std::string& w : loaded.report.warnings)
+      said += w == dir + "/square.obj: 1 textured face has no texture coordinates (vt); they use the texture's mean colour";
+    CHECK(said == 1);
+  }
+
+  TEST_CASE("exported assets: every map_Kd option written but -s and -o is named, whatever its value") {
+    const std::string dir = test::ScratchDir("assets_map_options_written");
+    WriteQuadrants(dir + "/quadrants.png");
+    // The warning of the OBJ's map_Kd options, or "" when none (at most one).
+    const auto warning = [&](const std::string& material, const std::string& map_kd) {
+      WriteFileAtomic(dir + "/coat.mtl", "newmtl " + material + "\nKd 1 1 1\nmap_Kd " + map_kd + "\n");
+      WriteFileAtomic(dir + "/square.obj", "mtllib coat.mtl\nv -1 -1 0\nv 1 -1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n"
+                                           "usemtl " + material + "\nf 1/1 2/2 3/3\n");
+      const LoadedMesh loaded = LoadObj(dir + "/square.obj");
+      CHECK(loaded.mesh.textured());  // the file is found after the options, whatever they are
+      std::string found;
+      for (const std::string& w : loaded.report.warnings)
+        if (w.find("map_Kd options ignored") != std::string::npos) {
+          CHECK(found.empty());  // one warning at most
+          found = w;
+        }
+      return found;
+    };
+    const std::string prefix = dir + "/square.obj: map_Kd options ignored (prt reads -s and -o): ";
+    // Written at their defaults (-bm 1, -clamp off), after -s's three words: named all the same.
+    CHECK(warning("coat", "-s 2 2 1 -bm 1.0 -clamp off quadrants.png") == prefix + "-clamp -bm of material 'coat'");
+    CHECK(warning("coat", "-bm 1.0 -clamp on quadrants.png") == prefix + "-clamp -bm of material 'coat'");
+    CHECK(warning("coat", "-mm 0 1 -imfchan m -boost 1 -texres 512 quadrants.png") ==
+          prefix + "-mm -boost -texres -imfchan of material 'coat'");
+    CHECK(warning("coat", "-blendu on -blendv on -t 0 0 0 -type sphere -colorspace sRGB quadrants.png") ==
+          prefix + "-t -blendu -blendv -type -colorspace of material 'coat'");
+    CHECK(warning("Coat Mat", "-clamp on quadrants.png") == prefix + "-clamp of material 'Coat Mat'");
+    // -s and -o alone, and no option: nothing to name.
+    CHECK(warning("coat", "-s 2 2 1 -o 0 0 0 quadrants.png") == "");
+    CHECK(warning("coat", "quadrants.png") == "");
+  }
+
   TEST_CASE("exported assets: the summary names the .mtl fields used and ignored, and offers the gloss as --material") {
     const std::string dir = test::ScratchDir("assets_mtl_fields");
     WriteFileAtomic(dir + "/coat.mtl", "# Blender MTL\nnewmtl coat\nNs 200\nKa 1 1 1\nKd 0.8 0.8 0.8\nKs 0.5 0.5 0.5\n"
@@ -169,6 +229,37 @@ TEST_SUITE("app") {
     REQUIRE_MESSAGE(albedo.exit_code == 0, albedo.err);
     CHECK(albedo.err.find("used none; ignored Ka, Kd (--albedo), Ks") != std::string::npos);
     CHECK(albedo.err.find("--material phong:200,0.5)") != std::string::npos);  // 0.3 + 0.5 fits
+  }
+
+  TEST_CASE("exported assets: every gloss the materials line offers is accepted when passed back") {
+    const std::string dir = test::ScratchDir("assets_offer_accepted");
+    WriteQuadrants(dir + "/quadrants.png");
+    // Exponents outside prt's range, weights that cannot fit beside Kd, a Kd whose float is just
+    // above its decimal, a coloured Ks, a textured coat.
+    const char* const materials[] = {
+        "Kd 0.8 0.8 0.8\nKs 0.5 0.5 0.5\nNs 0.25",
+        "Kd 0.8 0.8 0.8\nKs 0.5 0.5 0.5\nNs 100000",
+        "Kd 0.9 0.3 0.1\nKs 1 1 1\nNs 50",
+        "Kd 0.7 0.7 0.7\nKs 0.3 0.3 0.3\nNs 20",
+        "Kd 0.33 0.33 0.33\nKs 0.9 0.1 0.2\nNs 7",
+        "Kd 1 1 1\nKs 0.6 0.6 0.6\nNs 300\nmap_Kd quadrants.png"};
+    int n = 0;
+    for (const char* fields : materials) {
+      CAPTURE(fields);
+      WriteFileAtomic(dir + "/coat.mtl", std::string("newmtl coat\n") + fields + "\n");
+      const std::string obj = WriteSquare(dir, "mtllib coat.mtl");
+      const std::string out = dir + "/out" + std::to_string(n++);
+      const test::RunResult r = RenderSquare(obj, out);
+      REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+      const std::size_t at = r.err.find("as a glossy coat is --material ");
+      REQUIRE(at != std::string::npos);
+      const std::size_t begin = at + std::string("as a glossy coat is --material ").size();
+      const std::string offer = r.err.substr(begin, r.err.find_first_of(",)", r.err.find(',', begin) + 1) - begin);
+      CAPTURE(offer);
+      REQUIRE(offer.rfind("phong:", 0) == 0);
+      const test::RunResult back = RenderSquare(obj, out + "_glossy", "--material " + offer);
+      CHECK_MESSAGE(back.exit_code == 0, back.err);
+    }
   }
 
   TEST_CASE("exported assets: --albedo on a textured mesh replaces its textures, and the summary says so") {

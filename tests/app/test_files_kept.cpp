@@ -279,11 +279,55 @@ TEST_SUITE("app") {
     CHECK(Temporaries(dir).empty());
   }
 
+  TEST_CASE("files kept: --replace whose final move fails puts the user's file back under its own name") {
+    // The move of the new transport.txt from staging into place fails (a preloaded rename()
+    // that refuses it, tests/rename_fails.cpp), after the user's transport.txt was kept as
+    // transport.txt.orig: the run fails, and the user's file is back as transport.txt.
+    const std::string dir = test::ScratchDir("kept_replace_fails");
+    std::ofstream(dir + "/transport.txt") << "the course's transport\n";
+    // ASan checks that its runtime is the first library loaded; the stand-in is loaded before it.
+    const auto r = test::RunCommand("LD_PRELOAD=" + Q(PRT_RENAME_FAILS_PATH) + " PRT_FAIL_RENAME_TO=/transport.txt "
+                                    "ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0\" " +
+                                    Q(test::PrtBinary()) + " " + Precompute(dir) + " --replace");
+    CAPTURE(r.err);
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.find(dir + "/transport.txt: cannot write (") != std::string::npos);
+    CHECK(ReadFile(dir + "/transport.txt") == "the course's transport\n");
+    CHECK_FALSE(fs::exists(dir + "/transport.txt.orig"));
+    CHECK(Temporaries(dir).empty());
+    // The same run without the failing rename replaces it, keeping the user's as .orig.
+    const auto good = test::RunPrt(Precompute(dir) + " --replace");
+    CHECK(good.exit_code == 0);
+    CHECK(ReadFile(dir + "/transport.txt.orig") == "the course's transport\n");
+  }
+
   TEST_CASE("files kept: SIGTERM and SIGINT leave no temporary file, staging folder or lock (animated PNG)") {
     for (int sig : {SIGTERM, SIGINT}) {
       CAPTURE(sig);
       const std::string dir = test::ScratchDir(sig == SIGTERM ? "kept_sigterm" : "kept_sigint");
       CheckSignalLeavesNoTemporaries(dir, dir + "/k.png", sig);
+    }
+  }
+
+  TEST_CASE("files kept: SIGTERM into a new nested --out with --cache none leaves none of the folders it made") {
+    // The run makes new/a/b (three folders), its lock and its staging folder inside, and writes
+    // nothing in place (no cache). Its cleanup must take the staging folder and the lock first,
+    // then the folders innermost first: an outer folder removed before its content would stay.
+    for (int sig : {SIGTERM, SIGINT}) {
+      CAPTURE(sig);
+      const std::string dir = test::ScratchDir(sig == SIGTERM ? "kept_nested_sigterm" : "kept_nested_sigint");
+      std::ofstream(dir + "/mine.txt") << "the user's";
+      const std::string out = dir + "/new/a/b";
+      const pid_t pid = test::StartLongRender(out, "32x24", {"--cache", "none"});
+      REQUIRE(pid > 0);
+      const int status = test::SignalWhenFileAppears(pid, out + "/" + OutputFolder::kStagingName + "/frame_0020.png", sig);
+      REQUIRE(status != -1);
+      CHECK(WIFSIGNALED(status));
+      CHECK(WTERMSIG(status) == sig);
+      CHECK_FALSE(fs::exists(dir + "/new"));
+      std::set<std::string> left;
+      for (const auto& e : fs::directory_iterator(dir)) left.insert(e.path().filename().string());
+      CHECK(left == std::set<std::string>{"mine.txt"});
     }
   }
 

@@ -104,6 +104,27 @@ TEST_SUITE("app") {
           std::string::npos);
   }
 
+  TEST_CASE("output folder: a damaged list never makes a run remove a file outside the folder or in a sub-folder") {
+    // The list names what this command wrote earlier; a run removes those it does not write
+    // again. Entries edited by hand (or by a bad tool) to point elsewhere must be ignored.
+    const std::string parent = test::ScratchDir("folder_damaged_list"), dir = parent + "/out";
+    REQUIRE(test::RunPrt(test::QuickRender(dir, 1) + " --quiet").exit_code == 0);
+    fs::create_directories(dir + "/sub");
+    const std::string victims[] = {parent + "/outside.png", dir + "/sub/inner.png", parent + "/absolute.png"};
+    for (const std::string& v : victims) std::ofstream(v) << "not prt's";
+    std::ofstream(dir + "/" + OutputFolder::kListName, std::ios::app)
+        << "render\t../outside.png\nrender\tsub/inner.png\nrender\t./sub/inner.png\nrender\t" << parent
+        << "/absolute.png\nrender\t..\nrender\tsub\nrender\t.\n";
+    const auto r = test::RunPrt(test::QuickRender(dir, 1) + " --quiet");
+    CHECK(r.exit_code == 0);
+    for (const std::string& v : victims) {
+      CAPTURE(v);
+      CHECK(fs::exists(v));
+    }
+    CHECK(fs::is_directory(dir + "/sub"));
+    CHECK(fs::exists(dir + "/frame_0000.png"));
+  }
+
   TEST_CASE("output folder: precompute leaves no transport file of an earlier mode") {
     const std::string dir = test::ScratchDir("folder_precompute");
     const std::string scene = "precompute --env furnace --samples 16 --mesh " + Q(test::Fixture("obj/quad.obj")) +

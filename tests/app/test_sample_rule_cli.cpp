@@ -51,6 +51,20 @@ TEST_SUITE("app") {
     CHECK(s.err.find(std::to_string(side * side) + " stratified directions per vertex") != std::string::npos);
   }
 
+  TEST_CASE("sample rule: precompute has no camera: one count at every vertex, said without one") {
+    const int lmax = 12;
+    const int expected = DefaultSamples(lmax, Sampler::kFibonacci);
+    const std::string dir = test::ScratchDir("rule_precompute");
+    const auto r = test::RunPrt("precompute --mesh " + Q(test::Fixture("obj/quad.obj")) + " --env furnace --lmax " +
+                                std::to_string(lmax) + " --transport shadowed --cache none --out " + Q(dir + "/out"));
+    CAPTURE(r.err);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.err.find("transport: ") != std::string::npos);
+    CHECK(r.err.find(std::to_string(expected) + " fibonacci directions per vertex") != std::string::npos);
+    CHECK(r.err.find("the camera sees") == std::string::npos);
+    CHECK(r.err.find("it does not") == std::string::npos);
+  }
+
   TEST_CASE("sample rule: an explicit --samples below the minimum warns once, naming both counts") {
     const int lmax = 12;
     const int minimum = MinimumSamples(lmax, Sampler::kFibonacci);

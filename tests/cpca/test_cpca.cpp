@@ -111,6 +111,44 @@ TEST_CASE("cpca: one row per cluster, or as many terms as numbers, is lossless")
   CHECK(CpcaRelativeError(many, p.rows.data()) < kFloatPrecision);
 }
 
+TEST_CASE("cpca: no cluster ends empty, with repeated rows, clusters near the row count, any iteration count") {
+  // Repeated rows make k-means++ draw the same seed twice and tie rows between equal means
+  // (a tie goes to the lower index), so clusters start empty; each must end with a row.
+  struct Case {
+    int rows, distinct, clusters, terms, iterations;
+  };
+  for (const Case c : {Case{40, 3, 10, 1, 4}, Case{30, 1, 5, 0, 4}, Case{30, 1, 5, 2, 0}, Case{12, 12, 11, 2, 1},
+                       Case{12, 4, 12, 0, 0}, Case{64, 8, 32, 3, 2}}) {
+    CAPTURE(c.rows);
+    CAPTURE(c.distinct);
+    CAPTURE(c.clusters);
+    CAPTURE(c.terms);
+    CAPTURE(c.iterations);
+    const Planted p = Plant(c.distinct, 2, 1, 6, 1.0, 11);
+    std::vector<float> rows;
+    for (int r = 0; r < c.rows; ++r)  // row r repeats distinct row r % distinct
+      rows.insert(rows.end(), p.rows.begin() + (r % c.distinct) * 6, p.rows.begin() + (r % c.distinct + 1) * 6);
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+      CAPTURE(seed);
+      CpcaOptions o;
+      o.clusters = c.clusters, o.terms = c.terms, o.iterations = c.iterations, o.seed = seed;
+      const CpcaModel m = CompressCpca(rows.data(), std::size_t(c.rows), 6, o);
+      REQUIRE(m.clusters == c.clusters);
+      std::vector<int> members(std::size_t(m.clusters), 0);
+      for (std::uint32_t k : m.cluster) {
+        REQUIRE(k < std::uint32_t(m.clusters));
+        ++members[k];
+      }
+      for (int k = 0; k < m.clusters; ++k) CHECK_MESSAGE(members[std::size_t(k)] > 0, "cluster " << k << " is empty");
+      // And no worse than one cluster of all the rows would be (a mean of nothing is 0, far off).
+      CpcaOptions one = o;
+      one.clusters = 1;
+      CHECK(CpcaRelativeError(m, rows.data()) <=
+            CpcaRelativeError(CompressCpca(rows.data(), std::size_t(c.rows), 6, one), rows.data()) + kFloatPrecision);
+    }
+  }
+}
+
 TEST_CASE("cpca: the error never grows with more terms, and the weights project on the stored mean") {
   // One cluster is PCA: rows with a decaying spectrum (direction k scaled by 0.6^k), so each term
   // added removes a known share. Tolerance for "not larger": float rounding of the errors.

@@ -2,11 +2,14 @@
 // and layout the header promises (the signs of a step, the scaling coefficient of every level).
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "core/rng.h"
 #include "wavelet/haar.h"
+#include "wavelet/selection.h"
 
 namespace prt {
 namespace {
@@ -103,6 +106,51 @@ TEST_SUITE("wavelet") {
     CHECK(HaarSupport(3, 2, n) == 8);
     CHECK(HaarSupport(15, 0, n) == 2);
     CHECK(HaarSupport(8, 8, n) == 2);
+  }
+
+  TEST_CASE("selection: area weights are each detail's support in texels, as the inverse transform spreads it") {
+    // The documented rule, by an independent route: a coefficient's support area is the number
+    // of texels the inverse transform of that coefficient alone touches; each face's scaling
+    // coefficient is kept first (weight infinity) under either rule.
+    constexpr int n = 8;
+    const std::size_t face = std::size_t(n) * n;
+    const std::vector<double> area = SelectionWeights(n, Selection::kArea);
+    const std::vector<double> magnitude = SelectionWeights(n, Selection::kMagnitude);
+    REQUIRE(area.size() == 6 * face);
+    REQUIRE(magnitude.size() == 6 * face);
+    std::vector<double> scratch;
+    for (std::size_t i = 0; i < 6 * face; ++i) {
+      CAPTURE(i);
+      if (i % face == 0) {
+        CHECK(area[i] == std::numeric_limits<double>::infinity());
+        CHECK(magnitude[i] == std::numeric_limits<double>::infinity());
+        continue;
+      }
+      std::vector<double> x(face, 0.0);
+      x[i % face] = 1.0;
+      HaarInverse(x.data(), n, scratch);
+      const double touched = double(std::count_if(x.begin(), x.end(), [](double v) { return std::abs(v) > kRounding; }));
+      CHECK(area[i] == touched);
+      CHECK(magnitude[i] == 1.0);
+    }
+    // The kept ones: the scaling coefficients, then the largest |c| x area, by brute force.
+    std::vector<double> c = Random(n, 9);
+    for (int f = 1; f < 6; ++f) {
+      const std::vector<double> more = Random(n, 9 + f);
+      c.insert(c.end(), more.begin(), more.end());
+    }
+    constexpr std::size_t kBudget = 40;
+    std::vector<std::uint32_t> kept;
+    KeepLargest(c.data(), area, kBudget, kept);
+    std::vector<std::uint32_t> order(c.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+      const double wa = a % face == 0 ? 1e300 : std::abs(c[a]) * area[a], wb = b % face == 0 ? 1e300 : std::abs(c[b]) * area[b];
+      return wa > wb || (wa == wb && a < b);
+    });
+    std::vector<std::uint32_t> expected(order.begin(), order.begin() + kBudget);
+    std::sort(expected.begin(), expected.end());
+    CHECK(kept == expected);
   }
 }
 

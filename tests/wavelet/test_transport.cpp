@@ -3,8 +3,11 @@
 // prt reference under a sun, the SH bounces, and the same bytes for any thread count.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <set>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -17,9 +20,11 @@
 #include "precompute/light.h"
 #include "precompute/reference.h"
 #include "precompute/shade.h"
+#include "sh/coeffs.h"
 #include "wavelet/shade.h"
 #include "wavelet/transport.h"
 #include "tests/test_support.h"
+#include "wavelet/cube_grid.h"
 #include "wavelet/light_cube.h"
 #include "wavelet/texel_sh.h"
 
@@ -106,6 +111,61 @@ TEST_SUITE("wavelet") {
     CHECK(tested > 20);
   }
 
+  TEST_CASE("wavelet transport: a partly blocked texel's open share is weighted by cosine and solid angle") {
+    // A vertex facing up above a huge plane of slope 1/8 in x: it blocks exactly the directions
+    // with y < x / 8, and that boundary runs along the sub-square lines of the texels just above
+    // the horizon on the +X face (face coordinate 1/8 at F 8, 2 rays a side). Each of those
+    // texels is half blocked, its lower half, where the cosine is smallest: its transport is
+    // (the open half's integral of cos) / pi, which a brute force over 64 x 64 points a texel
+    // gives here; an open share counted by rays, not weighted, would give half the texel's.
+    Mesh mesh;
+    constexpr float kFar = 1e4f;
+    const glm::vec3 plane[4] = {{-kFar, -kFar / 8, -kFar}, {kFar, kFar / 8, -kFar}, {kFar, kFar / 8, kFar}, {-kFar, -kFar / 8, kFar}};
+    for (const glm::vec3& p : plane) mesh.positions.push_back(p), mesh.normals.push_back(glm::normalize(glm::vec3(-1, 8, 0)));
+    mesh.triangles = {{0, 2, 1}, {0, 3, 2}};
+    mesh.positions.push_back({0.0f, 1.0f, 0.0f}), mesh.normals.push_back({0, 1, 0});
+    mesh.albedo.assign(mesh.positions.size(), glm::vec3(0.8f));
+    TransportOptions sh;
+    WaveletOptions w;
+    w.face_size = 8;
+    w.split = 2;
+    w.budget = 6 * 8 * 8;
+    const WaveletTransport t = ComputeWaveletTransport(mesh, sh, w, nullptr);
+    const CubeGrid grid(8);
+    std::vector<glm::dvec3> fine;
+    std::vector<double> fine_solid;
+    grid.SubTexels(64, fine, fine_solid);
+    const glm::dvec3 up(0, 1, 0);
+    double got = 0.0, weighted = 0.0, counted = 0.0;
+    int straddled = 0;
+    for (std::size_t texel = 0; texel < grid.texels(); ++texel) {
+      double open = 0.0, all = 0.0, open_area = 0.0, area = 0.0;
+      for (std::size_t i = texel * 64 * 64; i < (texel + 1) * 64 * 64; ++i) {
+        const double c = glm::dot(up, fine[i]);
+        if (c <= 0.0) continue;
+        const bool blocked = fine[i].y < fine[i].x / 8.0;
+        all += c * fine_solid[i], area += fine_solid[i];
+        if (!blocked) open += c * fine_solid[i], open_area += fine_solid[i];
+      }
+      if (all == 0.0 || open == 0.0 || open == all) continue;
+      ++straddled;
+      CubeRgb rgb;
+      for (auto& ch : rgb.c) ch.assign(grid.texels(), 0.0);
+      rgb.c[1][texel] = 1.0;
+      got += ShadeWavelet(mesh, t, LightOfTexels(rgb, t), {}, false)[4].y;
+      weighted += open / kPi;
+      counted += all * (open_area / area) / kPi;
+    }
+    CAPTURE(straddled);
+    MESSAGE("half-blocked texels: transport " << got << ", weighted open share " << weighted << ", counted " << counted);
+    CHECK(straddled >= 8);  // a row of the +X face's texels (and the corners of its neighbours)
+    // The rays' cosines are taken at jittered points inside sub-squares wholly open or blocked:
+    // within a few percent of the weighted share, summed over the row.
+    constexpr double kJitter = 0.05;
+    CHECK(std::abs(got / weighted - 1.0) < kJitter);
+    CHECK(std::abs(counted / weighted - 1.0) > 4 * kJitter);  // the test can tell the two apart
+  }
+
   TEST_CASE("wavelet transport: under the sky's sun it agrees with prt reference far better than SH") {
     // The sun's shadow is what SH cannot draw: at lmax 8 the knot's shadow is a blob.
     const Mesh mesh = SunScene();
@@ -168,6 +228,61 @@ TEST_SUITE("wavelet") {
         previous = error;
       }
       CHECK(previous < 0.5 * sh4);  // 256 terms draw the sun's shadow SH lmax 4 cannot
+    }
+  }
+
+  TEST_CASE("wavelet transport: vertices no frame shows take the reduced rays, the others exactly the full set") {
+    // Every other vertex seen: a seen vertex's transport is bit for bit what it is when every
+    // vertex is seen (its rays depend on its index alone), and a hidden one's, traced with one
+    // ray a texel instead of four, differs wherever something blocks part of a texel.
+    const Mesh mesh = SunScene();
+    TransportOptions sh;
+    WaveletOptions w;
+    w.face_size = 8;
+    const WaveletTransport all = ComputeWaveletTransport(mesh, sh, w, nullptr);
+    sh.seen.assign(mesh.vertex_count(), 0);
+    for (std::size_t v = 0; v < mesh.vertex_count(); v += 2) sh.seen[v] = 1;
+    const WaveletTransport some = ComputeWaveletTransport(mesh, sh, w, nullptr);
+    REQUIRE(some.base_lmax == all.base_lmax);
+    const std::size_t n = CoeffCount(all.base_lmax);
+    std::size_t seen_differ = 0, hidden_differ = 0;
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+      const bool same = std::equal(all.base.begin() + v * n, all.base.begin() + (v + 1) * n, some.base.begin() + v * n);
+      (sh.seen[v] ? seen_differ : hidden_differ) += !same;
+    }
+    CHECK(seen_differ == 0);
+    CHECK(hidden_differ > mesh.vertex_count() / 20);  // the shadowed ones, at least
+    // A quarter of the rays at the hidden half: fewer than all, more than the seen half alone.
+    CHECK(some.rays < all.rays);
+    CHECK(some.rays > all.rays / 2);
+  }
+
+  TEST_CASE("wavelet transport: vertices at one point take different jittered ray sets") {
+    // 32 vertices at the same point, facing up, under the edge of a tilted roof: with one set of
+    // rays for all they would have the same transport; the pool's sets differ, so several
+    // transports differ (each vertex takes one of kJitterSets sets by its index), seen or not.
+    Mesh mesh;
+    const glm::vec3 roof[4] = {{-3.0f, 0.6f, -3.0f}, {0.4f, 0.9f, -3.0f}, {-0.2f, 0.9f, 3.0f}, {-3.0f, 0.6f, 3.0f}};
+    for (const glm::vec3& p : roof) mesh.positions.push_back(p), mesh.normals.push_back({0, -1, 0});
+    mesh.triangles = {{0, 2, 1}, {0, 3, 2}};
+    constexpr std::size_t kProbes = 32;
+    for (std::size_t i = 0; i < kProbes; ++i) mesh.positions.push_back({0.0f, 0.0f, 0.0f}), mesh.normals.push_back({0, 1, 0});
+    mesh.albedo.assign(mesh.positions.size(), glm::vec3(0.8f));
+    for (const bool seen : {true, false}) {
+      CAPTURE(seen);
+      TransportOptions sh;
+      sh.seen.assign(mesh.vertex_count(), 1);
+      if (!seen)
+        for (std::size_t i = 4; i < mesh.vertex_count(); ++i) sh.seen[i] = 0;
+      WaveletOptions w;
+      w.face_size = 8;
+      const WaveletTransport t = ComputeWaveletTransport(mesh, sh, w, nullptr);
+      const std::size_t n = CoeffCount(t.base_lmax);
+      std::set<std::vector<float>> distinct;
+      for (std::size_t v = 4; v < mesh.vertex_count(); ++v)
+        distinct.insert(std::vector<float>(t.base.begin() + v * n, t.base.begin() + (v + 1) * n));
+      CHECK(distinct.size() >= 4);
+      CHECK(distinct.size() <= std::size_t(kJitterSets));
     }
   }
 

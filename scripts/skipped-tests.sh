@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# bash scripts/skipped-tests.sh CTEST_OUTPUT
+# One line: how many tests CTest's output (a run of the suite) reports as skipped, and what they
+# lack. A test is skipped, never passed, when what it compares with is absent (tests/README.md):
+# the course's files in ../shared/data (a user's clone does not have them), ffmpeg, cmark-gfm.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+skipped=$(grep -c '(Skipped)$' "$1" || true)
+if [ "$skipped" -eq 0 ]; then
+  echo "tests: none skipped"
+  exit 0
+fi
+lacking=()
+data=${PRT_SHARED_DATA:-../shared/data}
+if [ "$data" = none ] || [ ! -d "$data" ]; then
+  lacking+=("the course's files (../shared/data, beside the clone; a fresh clone does not have them)")
+fi
+command -v ffmpeg >/dev/null || lacking+=("ffmpeg")
+command -v cmark-gfm >/dev/null || lacking+=("cmark-gfm")
+reason="what they compare with"
+if [ ${#lacking[@]} -gt 0 ]; then
+  reason=$(printf '%s, ' "${lacking[@]}")
+  reason=${reason%, }
+fi
+echo "tests: $skipped skipped, not passed, for want of $reason; tests/README.md says what each needs"
