@@ -73,7 +73,7 @@ CommandSpec ReportSpec() {
   for (OptionSpec& o : scene.options)
     if (o.name == "--basis")
       o.help = "sh | wavelet: wavelet adds a section comparing SH at lmax 2, 4, 8, 16 with Haar wavelets at 64 .. "
-               "2048 terms (--quick: lmax 2, 4, 8 and 64, 256, 1024 terms), each one's error against prt reference "
+               "2048 terms (--quick: lmax 2, 4, 8 and 64, 256, 512, 1024 terms), each one's error against prt reference "
                "beside its memory and precompute time (DIR/basis_error.png too); not with --stability (its wavelet "
                "cases run either way)";
   return {"prt report [scene options] --out DIR [--quick] [--stability]",

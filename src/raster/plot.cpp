@@ -78,9 +78,15 @@ bool Labelled(const LogRange& r, int m) {
 }
 
 /// A marker of `shape` centred on (x, y), about 7 pixels across; hollow: its outline only.
+/// A marker's half size in pixels (its outline reaches one more).
+constexpr int kMarkerRadius = 3;
+/// The data's ends sit this far inside the axes, so that a point at either end of a range (a
+/// value on a tick) is drawn whole inside them, clear of the axis lines and tick labels.
+constexpr int kDataInset = kMarkerRadius + 4;
+
 void Marker(Image8& im, double cx, double cy, PlotMarker shape, bool hollow, glm::vec3 c) {
   const int x = static_cast<int>(std::lround(cx)), y = static_cast<int>(std::lround(cy));
-  constexpr int r = 3;
+  constexpr int r = kMarkerRadius;
   const auto inside = [shape](int dx, int dy, int rad) {
     switch (shape) {
       case PlotMarker::kSquare: return std::abs(dx) <= rad && std::abs(dy) <= rad;
@@ -171,8 +177,12 @@ Image8 DrawLogLogPlot(const std::vector<PlotSeries>& series, const PlotOptions& 
   const int left = 70, top = 36, right = im.width - 200, bottom = im.height - 50;
   const LogRange xr = LogAxisRange(AxisValues(series, true)), yr = LogAxisRange(AxisValues(series, false));
   const double xl = std::log10(xr.lo), xh = std::log10(xr.hi), yl = std::log10(yr.lo), yh = std::log10(yr.hi);
-  auto px = [&](double x) { return left + (std::log10(x) - xl) / (xh - xl) * (right - left); };
-  auto py = [&](double y) { return bottom - (std::log10(y) - yl) / (yh - yl) * (bottom - top); };
+  auto px = [&](double x) {
+    return left + kDataInset + (std::log10(x) - xl) / (xh - xl) * (right - left - 2 * kDataInset);
+  };
+  auto py = [&](double y) {
+    return bottom - kDataInset - (std::log10(y) - yl) / (yh - yl) * (bottom - top - 2 * kDataInset);
+  };
 
   // Grid, ticks and tick labels: every m 10^e inside the range, powers of ten darker.
   ForEachTick(xr, [&](int m, int, double v) {

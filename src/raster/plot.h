@@ -11,7 +11,9 @@
 /// the data range widened only to the nearest ticks m 10^e (m = 1..9) outside it, so it begins
 /// less than a factor 2 before the first point and ends less than a factor 2 after the last
 /// (widening to whole decades could leave nine tenths of an axis empty) [1]; powers of ten are
-/// labelled, and 2 and 5 times them too when the axis spans under two decades [2]. Points with
+/// labelled, and 2 and 5 times them too when the axis spans under two decades [2]. The range's
+/// ends sit a few pixels inside the axis lines, so that a point on either end is drawn whole
+/// inside the axes. Points with
 /// x <= 0 or y <= 0 (or not finite) cannot be shown on log axes and are skipped, which breaks
 /// the line there.
 ///

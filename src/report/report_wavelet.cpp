@@ -53,7 +53,7 @@ WaveletStudyConfig MakeWaveletStudyConfig(bool quick, int bounces, std::uint64_t
     c.modes = {TransportMode::kShadowed};
     c.sh_lmax = {2, 4, 8};
     c.sh_samples = 4096;
-    c.budgets = {64, 256, 1024};
+    c.budgets = {64, 256, WaveletOptions{}.budget, 1024};  // the default (512) among them
     c.reference_samples = 4096;
   }
   return c;

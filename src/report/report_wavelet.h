@@ -58,7 +58,8 @@ struct WaveletStudyConfig {
 };
 
 /// The study `prt report --basis wavelet` runs: `quick` keeps it short (shadowed only, SH lmax
-/// 2, 4, 8 from 4096 directions, budgets 64, 256, 1024, a 4096-direction reference).
+/// 2, 4, 8 from 4096 directions, budgets 64, 256, 512 (the default) and 1024, a 4096-direction
+/// reference).
 WaveletStudyConfig MakeWaveletStudyConfig(bool quick, int bounces, std::uint64_t seed);
 
 /// The scene the wavelet basis was measured on: a (2, 3) torus knot of `segments` x `sides`
@@ -101,12 +102,15 @@ struct WaveletStudy {
 WaveletStudy RunWaveletStudy(const Mesh& mesh, const Environment& env, const WaveletStudyConfig& config);
 
 /// The report.md section (heading, how to read it, the table, what equal memory buys).
-std::string WaveletMarkdown(const WaveletStudy& study);
+/// `times_trusted`: the report's timing found its times trustworthy (TimesTrusted,
+/// report_sweep.h); if not, the conclusion quotes rays traced per vertex instead of seconds, and
+/// the table's seconds are marked untrusted, as error_vs_time.png turns to rays.
+std::string WaveletMarkdown(const WaveletStudy& study, bool times_trusted);
 /// report.csv rows in Csv's columns (report_write.cpp) plus basis, budget, bytes_per_vertex.
 std::string WaveletCsvRows(const WaveletStudy& study);
-/// basis_error.png: error against bytes per vertex (left) and against seconds (right), a line
-/// per basis and mode.
-Image8 WaveletPlot(const WaveletStudy& study);
+/// basis_error.png: error against bytes per vertex (left) and against seconds (right; rays traced
+/// per vertex when the times are not trusted), a line per basis and mode.
+Image8 WaveletPlot(const WaveletStudy& study, bool times_trusted);
 
 /// The stability suite's wavelet cases: MakeSunScene(segments, sides, ground) (by default the
 /// measured scene) under the default sky, wavelets at the

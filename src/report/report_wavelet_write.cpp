@@ -21,8 +21,15 @@ std::string SeriesLabel(TransportMode mode, bool wavelet) {
   return std::string(wavelet ? "wavelets " : "SH ") + TransportModeName(mode);
 }
 
+/// A row's cost beside its memory: its seconds when the report's times are trusted, else its
+/// directions a vertex (its work, which no busy machine changes).
+std::string Cost(const BasisRow& r, bool times_trusted) {
+  return times_trusted ? Formatted(" (%.0f bytes a vertex, %.3g s)", r.bytes_per_vertex, r.seconds)
+                       : Formatted(" (%.0f bytes a vertex, %d directions a vertex)", r.bytes_per_vertex, r.directions);
+}
+
 /// The cheapest wavelet row of `mode` (fewest bytes) as good as SH's best, in words.
-std::string EqualError(const WaveletStudy& d, TransportMode mode) {
+std::string EqualError(const WaveletStudy& d, TransportMode mode, bool times_trusted) {
   const BasisRow* best_sh = nullptr;
   for (const auto& r : d.rows)
     if (r.mode == mode && !r.wavelet && (!best_sh || r.total.relative < best_sh->total.relative)) best_sh = &r;
@@ -33,10 +40,9 @@ std::string EqualError(const WaveletStudy& d, TransportMode mode) {
         (!match || r.bytes_per_vertex < match->bytes_per_vertex))
       match = &r;
   std::string s = std::string(TransportModeName(mode)) + ": SH's lowest error, " + Percent(best_sh->total.relative) +
-                  " at " + Setting(*best_sh) + Formatted(" (%.0f bytes a vertex, %.3g s)", best_sh->bytes_per_vertex, best_sh->seconds);
+                  " at " + Setting(*best_sh) + Cost(*best_sh, times_trusted);
   if (match)
-    s += ", is reached by wavelets at " + Setting(*match) +
-         Formatted(" (%.0f bytes a vertex, %.3g s): ", match->bytes_per_vertex, match->seconds) +
+    s += ", is reached by wavelets at " + Setting(*match) + Cost(*match, times_trusted) + ": " +
          Percent(match->total.relative) + ".";
   else
     s += "; no wavelet budget of the study reaches it.";
@@ -45,7 +51,7 @@ std::string EqualError(const WaveletStudy& d, TransportMode mode) {
 
 }  // namespace
 
-std::string WaveletMarkdown(const WaveletStudy& d) {
+std::string WaveletMarkdown(const WaveletStudy& d, bool times_trusted) {
   const WaveletStudyConfig& c = d.config;
   std::string s = "\n## Basis: spherical harmonics against Haar wavelets\n\n";
   s += "Scene: " + d.scene + " (" + std::to_string(d.vertices) + " vertices), environment `" + d.environment +
@@ -63,24 +69,33 @@ std::string WaveletMarkdown(const WaveletStudy& d) {
        Formatted("; with interreflection the bounced light in SH at lmax %d from %d directions, its 3 x %d floats "
                  "counted in the bytes. ",
                  c.bounce_lmax, c.sh_samples, CoeffCount(c.bounce_lmax)) +
-       "Seconds: the whole transport (BVH build, rays, transform and selection, bounce pass), the fastest of repeats "
-       "lasting 0.05 s together. The light is the unturned environment with every coefficient kept. basis_error.png "
-       "plots the error against bytes per vertex (left) and against seconds (right).\n\n";
+       "Directions a vertex: SH's directions per vertex (the half below a vertex's horizon cost no ray); the "
+       "wavelets' rays traced per vertex on average, " + std::to_string(c.split * c.split) + " a texel over the "
+       "texels above its horizon (about half of the cube's " + std::to_string(6 * c.face_size * c.face_size) +
+       "). Seconds: the whole transport (BVH build, rays, transform and selection, bounce "
+       "pass), the fastest of repeats lasting 0.05 s together" +
+       (times_trusted ? std::string(". ")
+                      : std::string(", **not trusted** (the timing section above says why): the comparison below "
+                                    "and basis_error.png's right panel use the directions instead. ")) +
+       "The light is the unturned environment with every coefficient kept. basis_error.png plots the error against "
+       "bytes per vertex (left) and against " + (times_trusted ? "seconds" : "directions a vertex") + " (right).\n\n";
   s += MarkdownHeader({"mode", "reference directions", "reference seconds", "reference own error"});
   for (const auto& r : d.references)
     s += MarkdownRow({TransportModeName(r.mode), std::to_string(r.samples), Formatted("%.2f", r.seconds),
                       Percent(r.own_error)});
   s += "\n" + MarkdownHeader({"mode", "basis", "lmax / budget", "coefficients kept per vertex", "bytes per vertex",
-                              "precompute seconds", "relative RMS error", "max error", "transport energy kept"});
+                              "directions a vertex", times_trusted ? "precompute seconds" : "precompute seconds (not trusted)",
+                              "relative RMS error", "max error", "transport energy kept"});
   for (const auto& r : d.rows) {
     const std::string kept = r.wavelet ? Formatted("%.0f", r.kept) : std::to_string(CoeffCount(r.lmax));
     s += MarkdownRow({TransportModeName(r.mode), r.wavelet ? "wavelet" : "SH", Setting(r), kept,
-                      Formatted("%.0f", r.bytes_per_vertex), Formatted("%.3g", r.seconds), Percent(r.total.relative),
+                      Formatted("%.0f", r.bytes_per_vertex), std::to_string(r.directions), Formatted("%.3g", r.seconds),
+                      Percent(r.total.relative),
                       Formatted("%.3g", r.total.max), r.wavelet ? Percent(r.kept_energy) : std::string("-")});
   }
   s += "\n";
   for (TransportMode mode : c.modes) {
-    const std::string line = EqualError(d, mode);
+    const std::string line = EqualError(d, mode, times_trusted);
     if (!line.empty()) s += line + "\n\n";
   }
   s += "SH keeps the low frequencies of every vertex's transport, so a small sun's shadow edge, which no low band "
@@ -104,7 +119,7 @@ std::string WaveletCsvRows(const WaveletStudy& d) {
   return s;
 }
 
-Image8 WaveletPlot(const WaveletStudy& d) {
+Image8 WaveletPlot(const WaveletStudy& d, bool times_trusted) {
   std::vector<PlotSeries> by_bytes, by_seconds;
   for (std::size_t m = 0; m < d.config.modes.size(); ++m) {
     const TransportMode mode = d.config.modes[m];
@@ -117,7 +132,7 @@ Image8 WaveletPlot(const WaveletStudy& d) {
       for (const auto& r : d.rows)
         if (r.mode == mode && r.wavelet == wavelet) {
           b.x.push_back(r.bytes_per_vertex), b.y.push_back(r.total.relative);
-          t.x.push_back(r.seconds), t.y.push_back(r.total.relative);
+          t.x.push_back(times_trusted ? r.seconds : double(r.directions)), t.y.push_back(r.total.relative);
         }
       if (b.x.empty()) continue;
       by_bytes.push_back(b);
@@ -130,8 +145,8 @@ Image8 WaveletPlot(const WaveletStudy& d) {
   o.x_label = "bytes per vertex";
   o.y_label = "relative RMS error";
   const Image8 left = DrawLogLogPlot(by_bytes, o);
-  o.title = "error vs precompute time";
-  o.x_label = "seconds";
+  o.title = times_trusted ? "error vs precompute time" : "error vs work (times not trusted)";
+  o.x_label = times_trusted ? "seconds" : "directions per vertex";
   const Image8 right = DrawLogLogPlot(by_seconds, o);
   // The two panels side by side, on one image.
   Image8 both(left.width + right.width, std::max(left.height, right.height));

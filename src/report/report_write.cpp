@@ -163,7 +163,7 @@ std::string Markdown(const ReportData& d) {
     s += MarkdownRow({std::to_string(l.face_size), std::to_string(l.supersample) + "^2", TimeWithRange(l.time),
                       F("%.3g", l.coeff_error)});
   if (d.glossy) s += GlossyMarkdown(*d.glossy);
-  if (d.wavelet) s += WaveletMarkdown(*d.wavelet);
+  if (d.wavelet) s += WaveletMarkdown(*d.wavelet, TimesTrusted(d));
   if (d.noise) s += NoiseMarkdown(*d.noise);
   const std::size_t glossy_rows =
       d.glossy ? d.glossy->vector_rows.size() + d.glossy->matrix_rows.size() + (d.glossy->cpca ? d.glossy->cpca->rows.size() : 0)
@@ -188,7 +188,7 @@ void WriteReport(OutputFolder& folder, const ReportData& d) {
   WriteFileAtomic(folder.Output("report.md"), Markdown(d));
   WritePng(folder.Output("error_vs_time.png"), ErrorVsTimePlot(d));
   if (d.glossy) WritePng(folder.Output("glossy_error_vs_lmax.png"), GlossyPlot(*d.glossy));
-  if (d.wavelet) WritePng(folder.Output("basis_error.png"), WaveletPlot(*d.wavelet));
+  if (d.wavelet) WritePng(folder.Output("basis_error.png"), WaveletPlot(*d.wavelet, TimesTrusted(d)));
   Summary("wrote " + folder.dir() + "/report.csv, report.md and error_vs_time.png" +
           (d.glossy ? std::string(" and glossy_error_vs_lmax.png") : std::string()) +
           (d.wavelet ? std::string(" and basis_error.png") : std::string()));

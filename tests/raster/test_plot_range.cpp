@@ -48,6 +48,52 @@ TEST_SUITE("raster") {
     CHECK(none.hi == 10.0);
   }
 
+  TEST_CASE("plot: points on the ends of both ranges are drawn whole inside the axes") {
+    // Values on ticks make the range end exactly at them (the basis chart's 1 % point sat on the
+    // x axis, half of its marker below it). Every pixel of the series must lie inside the box the
+    // axis lines draw, clear of the lines themselves.
+    PlotSeries s;
+    s.label = "ends";
+    s.x = {1e-2, 1.0, 3e-1};
+    s.y = {1e-2, 1.0, 2e-2};
+    s.color = glm::vec3(1.0f, 0.0f, 0.0f);
+    s.marker = PlotMarker::kSquare;
+    PlotOptions o;
+    o.width = 600, o.height = 400;
+    const Image8 im = DrawLogLogPlot({s}, o);
+    // The axis lines: the leftmost column and the lowest row black for over half the image.
+    const auto black = [&im](int x, int y) {
+      const std::size_t i = 3 * (std::size_t(y) * im.width + x);
+      return im.rgb[i] == 0 && im.rgb[i + 1] == 0 && im.rgb[i + 2] == 0;
+    };
+    int axis_x = -1, axis_y = -1, axis_end = -1;
+    for (int x = 0; x < im.width && axis_x < 0; ++x) {
+      int run = 0;
+      for (int y = 0; y < im.height; ++y) run += black(x, y);
+      if (run > im.height / 2) axis_x = x;
+    }
+    for (int y = im.height - 1; y >= 0 && axis_y < 0; --y) {
+      int run = 0;
+      for (int x = 0; x < im.width; ++x) run += black(x, y);
+      if (run > im.width / 2) axis_y = y;
+    }
+    REQUIRE(axis_x > 0);
+    REQUIRE(axis_y > 0);
+    for (int x = axis_x; x < im.width && black(x, axis_y); ++x) axis_end = x;
+    int red = 0;
+    for (int y = 0; y < im.height; ++y)
+      for (int x = 0; x <= axis_end; ++x) {  // the legend, right of the axes, left out
+        const std::size_t i = 3 * (std::size_t(y) * im.width + x);
+        if (im.rgb[i] != 255 || im.rgb[i + 1] != 0 || im.rgb[i + 2] != 0) continue;
+        ++red;
+        CAPTURE(x);
+        CAPTURE(y);
+        CHECK(x > axis_x + 1);
+        CHECK(y < axis_y - 1);
+      }
+    CHECK(red > 3 * 40);  // three markers and the lines between them
+  }
+
   TEST_CASE("plot: each tick label names the tick it stands under, and the ends of lmax 1..8 read 1 and 8") {
     // The glossy plot's x axis: lmax 1, 2, 3, 4, 6, 8 (the quick study's).
     const LogRange lmax = LogAxisRange({1, 2, 3, 4, 6, 8});

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -162,7 +163,7 @@ TEST_SUITE("report") {
 
   TEST_CASE("basis study: report.md section, report.csv rows and the two-panel chart" * prt::test::WholeStudy()) {
     const prt::WaveletStudy& s = SmallStudy();
-    const std::string md = prt::WaveletMarkdown(s);
+    const std::string md = prt::WaveletMarkdown(s, true);
     CHECK(md.find("## Basis: spherical harmonics against Haar wavelets") != std::string::npos);
     CHECK(md.find("| shadowed | SH | lmax 4 | 25 | 100 |") != std::string::npos);
     CHECK(md.find("| interreflection | wavelet | 1536 terms | ") != std::string::npos);
@@ -186,7 +187,7 @@ TEST_SUITE("report") {
     }
     CHECK(n == s.rows.size());
     // Two panels side by side, each with its lines; the PNG decodes to the same pixels.
-    const prt::Image8 chart = prt::WaveletPlot(s);
+    const prt::Image8 chart = prt::WaveletPlot(s, true);
     REQUIRE(chart.width == 2000);
     REQUIRE(chart.height == 680);
     CHECK(Inked(chart, 0, 1000) > 3000);
@@ -196,6 +197,34 @@ TEST_SUITE("report") {
     const prt::Image8 back = prt::DecodePng(png, "basis_error.png");
     CHECK(back.width == chart.width);
     CHECK(back.rgb == chart.rgb);
+
+    // Times the report does not trust: the comparison quotes each row's directions a vertex, no
+    // seconds; the table marks its seconds; the right panel plots the directions.
+    const std::string untrusted = prt::WaveletMarkdown(s, false);
+    const std::string conclusion = untrusted.substr(untrusted.find("shadowed: SH's lowest error"));
+    CHECK(conclusion.find(" directions a vertex)") != std::string::npos);
+    CHECK_FALSE(std::regex_search(conclusion.substr(0, conclusion.find("\n")), std::regex("[0-9] s\\)")));
+    CHECK(untrusted.find("| precompute seconds (not trusted) |") != std::string::npos);
+    CHECK(md.find("(not trusted)") == std::string::npos);
+    const prt::Image8 work = prt::WaveletPlot(s, false);
+    REQUIRE(work.width == chart.width);
+    std::size_t left_differ = 0, right_differ = 0;
+    for (int y = 0; y < chart.height; ++y)
+      for (int x = 0; x < chart.width; ++x)
+        (x < chart.width / 2 ? left_differ : right_differ) +=
+            prt::test::PixelAt(work, x, y) != prt::test::PixelAt(chart, x, y);
+    CHECK(left_differ == 0);  // memory is memory
+    CHECK(right_differ > 1000);
+    // Every row's directions a vertex are in its table row: SH its directions, wavelets fewer
+    // than the cube's rays (those below the horizon are not traced), more than a tenth of them.
+    for (const prt::BasisRow& r : s.rows) {
+      if (!r.wavelet) CHECK(r.directions == s.config.sh_samples);
+      if (r.wavelet) {
+        const int cube = 6 * s.config.face_size * s.config.face_size * s.config.split * s.config.split;
+        CHECK(r.directions < cube);
+        CHECK(r.directions > cube / 10);
+      }
+    }
   }
 
   TEST_CASE("prt report --basis wavelet --quick writes the basis section, its rows and basis_error.png" * prt::test::WholeStudy()) {
@@ -225,8 +254,9 @@ TEST_SUITE("report") {
       sh_rows += f[14] == "basis-sh";
     }
     CHECK(sh_rows == 3);  // --quick: lmax 2, 4, 8
-    REQUIRE(wavelet_error.size() == 3);  // --quick: 64, 256, 1024 terms
-    CHECK(wavelet_error[2] < wavelet_error[0]);
+    CHECK(md.find("| shadowed | wavelet | 512 terms |") != std::string::npos);  // the default budget
+    REQUIRE(wavelet_error.size() == 4);  // --quick: 64, 256, 512 (the default), 1024 terms
+    CHECK(wavelet_error[3] < wavelet_error[0]);
     // Without --basis wavelet the report has no basis section, chart or columns.
     const auto plain = prt::test::RunPrt("report --quick --max-lmax 1 --max-samples 16 --mesh " + Q(mesh) +
                                          " --quiet --out " + Q(dir + "/plain"));
