@@ -228,6 +228,7 @@ TEST_SUITE("app") {
              Case{"--view Radiance", "--view: unknown value 'Radiance' (did you mean radiance? expected"},
              Case{"--view glow", "--view: unknown value 'glow' (did you mean glossy? expected"},
              Case{"--view xyz", "--view: unknown value 'xyz' (expected radiance,"},  // nothing near enough
+             Case{"--look cose", "--look: unknown value 'cose' (did you mean course? expected one of default, course)"},
              Case{"--no-such-option 3", "--no-such-option: unknown option"},
              Case{"stray", "'stray': unexpected argument"},
              Case{"--frames 2 --frames 3", "--frames: given twice"},

@@ -230,7 +230,10 @@ TEST_SUITE("app") {
       fs::copy_file(test::SourceDir() + "/scripts/" + script, tree + "/scripts/" + script);
     std::ofstream(tree + "/scripts/install-deps.sh") << "true\n";
     std::ofstream(bin + "/cmake") << "#!/bin/sh\ntrue\n";
-    std::ofstream(bin + "/ctest") << "#!/bin/sh\necho '100% tests passed, 0 tests failed out of 5'\n"
+    std::ofstream(bin + "/ctest") << "#!/bin/sh\n"
+                                     "echo '1/5 Test #12: obj: mary from the course data .......***Skipped   0.01 sec'\n"
+                                     "echo '2/5 Test #40: readme: the course commands ..........***Skipped   0.01 sec'\n"
+                                     "echo '100% tests passed, 0 tests failed out of 5'\n"
                                      "echo 'The following tests did not run:'\n"
                                      "echo '\t 12 - obj: mary from the course data (Skipped)'\n"
                                      "echo '\t 40 - readme: the course commands (Skipped)'\n"
@@ -252,6 +255,31 @@ TEST_SUITE("app") {
     const auto none = test::RunCommand("bash " + Q(tree + "/scripts/skipped-tests.sh") + " " + Q(tree + "/none.log"));
     CHECK(none.exit_code == 0);
     CHECK(none.out == "tests: none skipped\n");
+    // What is lacking, each by its own check, on a PATH that holds only what the script needs
+    // (and, the second time, stand-ins for ffmpeg and cmark-gfm).
+    const std::string log = tree + "/build/suite.log", tools = tree + "/tools";
+    fs::create_directories(tools);
+    for (const char* tool : {"grep", "dirname"}) {
+      const auto where = test::RunCommand(std::string("command -v ") + tool);
+      REQUIRE(where.exit_code == 0);
+      fs::create_symlink(where.out.substr(0, where.out.find('\n')), tools + "/" + tool);
+    }
+    const auto lacking = [&](const std::string& data) {
+      const auto r = test::RunCommand("PATH=" + Q(tools) + " PRT_SHARED_DATA=" + Q(data) + " /bin/bash " +
+                                      Q(tree + "/scripts/skipped-tests.sh") + " " + Q(log));
+      CHECK(r.exit_code == 0);
+      return r.out;
+    };
+    const std::string missing = tree + "/no-such-data";
+    CHECK(lacking(missing) == "tests: 2 skipped, not passed, for want of the course's files (../shared/data, beside the "
+                              "clone; a fresh clone does not have them), ffmpeg, cmark-gfm; tests/README.md says what "
+                              "each needs\n");
+    for (const char* tool : {"ffmpeg", "cmark-gfm"}) {
+      std::ofstream(tools + "/" + tool) << "#!/bin/sh\n";
+      fs::permissions(tools + "/" + tool, fs::perms::owner_all);
+    }
+    CHECK(lacking(tree) == "tests: 2 skipped, not passed, for want of what they compare with; tests/README.md says what "
+                           "each needs\n");
   }
 
   TEST_CASE("ci run: its phase table holds the steps of the scripts it calls, and its last line says how it ended") {

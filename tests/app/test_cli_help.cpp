@@ -74,6 +74,16 @@ TEST_SUITE("app") {
     CHECK(NearestName("--zzzzzz", {"--samples", "--seed"}).empty());  // nothing close: no guess
     CHECK(NearestName("lihgt", {"light", "bvh"}) == "light");          // a transposition is one typo
     CHECK(NearestName("ACES", {"srgb", "reinhard", "aces"}) == "aces");  // case does not count
+    // A value of a short list: the nearest even a few letters off, if no other is as near and it
+    // is at most half its own length away (rounded up).
+    CHECK(NearestName("lite", {"light", "glossy"}).empty());
+    CHECK(NearestChoice("lite", {"radiance", "light", "glossy"}) == "light");        // 3 of 5
+    CHECK(NearestChoice("Lite", {"radiance", "light", "glossy"}) == "light");
+    CHECK(NearestChoice("cose", {"default", "course"}) == "course");                 // 2 of 6
+    CHECK(NearestChoice("abcd", {"abxy", "abzw"}).empty());                          // a tie: no guess
+    CHECK(NearestChoice("abcd", {"zzzz", "abzw", "abxy", "abcx"}) == "abcx");        // nearer than the tie
+    CHECK(NearestChoice("qqqqqq", {"light", "glossy"}).empty());                     // too far
+    CHECK(NearestChoice("ligh", {"light", "glossy"}) == "light");                    // NearestName's first
     CHECK_THROWS_WITH_AS(Args("render", {"--sampels", "64"}, RenderSpec()),
                          "--sampels: unknown option (did you mean --samples?)", UsageError);
 

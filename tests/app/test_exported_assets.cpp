@@ -205,6 +205,10 @@ TEST_SUITE("app") {
     CHECK(warning("coat", "-blendu on -blendv on -t 0 0 0 -type sphere -colorspace sRGB quadrants.png") ==
           prefix + "-t -blendu -blendv -type -colorspace of material 'coat'");
     CHECK(warning("Coat Mat", "-clamp on quadrants.png") == prefix + "-clamp of material 'Coat Mat'");
+    // Options apart by tabs, as a tab is a blank to the format; and the last of two map_Kd lines
+    // of one material is the one read, its options too.
+    CHECK(warning("coat", "-clamp\ton\t-bm 1 quadrants.png") == prefix + "-clamp -bm of material 'coat'");
+    CHECK(warning("coat", "-clamp on quadrants.png\nmap_Kd -bm 1 quadrants.png") == prefix + "-bm of material 'coat'");
     // -s and -o alone, and no option: nothing to name.
     CHECK(warning("coat", "-s 2 2 1 -o 0 0 0 quadrants.png") == "");
     CHECK(warning("coat", "quadrants.png") == "");

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include <regex>
 #include <string>
 
 #include "core/atomic_file.h"
@@ -52,17 +53,51 @@ TEST_SUITE("app") {
   }
 
   TEST_CASE("sample rule: precompute has no camera: one count at every vertex, said without one") {
+    // With interreflection the bounce pass adds sender vertices that no camera sees (a large
+    // triangle's subdivision, bounce_senders.h): their own count must not make the line speak
+    // of a camera, as it did ("for each of the 4 vertices the camera sees, 4096 for the 0 it does
+    // not").
     const int lmax = 12;
     const int expected = DefaultSamples(lmax, Sampler::kFibonacci);
-    const std::string dir = test::ScratchDir("rule_precompute");
-    const auto r = test::RunPrt("precompute --mesh " + Q(test::Fixture("obj/quad.obj")) + " --env furnace --lmax " +
-                                std::to_string(lmax) + " --transport shadowed --cache none --out " + Q(dir + "/out"));
-    CAPTURE(r.err);
-    REQUIRE(r.exit_code == 0);
-    CHECK(r.err.find("transport: ") != std::string::npos);
-    CHECK(r.err.find(std::to_string(expected) + " fibonacci directions per vertex") != std::string::npos);
-    CHECK(r.err.find("the camera sees") == std::string::npos);
-    CHECK(r.err.find("it does not") == std::string::npos);
+    for (const char* transport : {"shadowed", "interreflection"}) {
+      CAPTURE(transport);
+      const std::string dir = test::ScratchDir(std::string("rule_precompute_") + transport);
+      const auto r = test::RunPrt("precompute --mesh " + Q(test::Fixture("obj/quad.obj")) + " --env furnace --lmax " +
+                                  std::to_string(lmax) + " --transport " + transport + " --cache none --out " +
+                                  Q(dir + "/out"));
+      CAPTURE(r.err);
+      REQUIRE(r.exit_code == 0);
+      const std::size_t at = r.err.find("transport: ");
+      REQUIRE(at != std::string::npos);
+      const std::string line = r.err.substr(at, r.err.find('\n', at) - at);
+      CHECK(line.find(std::to_string(expected) + " fibonacci directions per vertex") != std::string::npos);
+      CHECK(line.find("the camera sees") == std::string::npos);
+      CHECK(line.find("it does not") == std::string::npos);
+      // The rule in the words of a run without a camera: every vertex takes the same count.
+      CHECK(line.find("every vertex takes") != std::string::npos);
+      CHECK(line.find("for those it sees") == std::string::npos);
+    }
+    // The rule's words give the count: at lmax 40, above the floor, its multiplier times the
+    // minimum is what every vertex took.
+    {
+      const int high = 40, count = DefaultSamples(high, Sampler::kFibonacci);
+      REQUIRE(count > kDefaultFloor);
+      const auto r = test::RunPrt("precompute --mesh " + Q(test::Fixture("obj/quad.obj")) + " --env furnace --lmax " +
+                                  std::to_string(high) + " --transport shadowed --cache none --out " + Q(test::ScratchDir("rule_precompute_40")));
+      REQUIRE(r.exit_code == 0);
+      std::smatch m;
+      REQUIRE(std::regex_search(r.err, m, std::regex("every vertex takes ([0-9]+) times that, at least ([0-9]+)")));
+      CHECK(std::stoi(m[1]) * MinimumSamples(high, Sampler::kFibonacci) == count);
+      CHECK(std::stoi(m[2]) == kDefaultFloor);
+      CHECK(r.err.find(std::to_string(count) + " fibonacci directions per vertex") != std::string::npos);
+    }
+    // A render whose camera sees every vertex of the quad: one count too, in the rule's words
+    // for a camera.
+    const auto render = RenderAt("rule_all_seen", lmax, "--transport interreflection");
+    REQUIRE(render.exit_code == 0);
+    CHECK(render.err.find(std::to_string(expected) + " fibonacci directions per vertex") != std::string::npos);
+    CHECK(render.err.find("it does not") == std::string::npos);
+    CHECK(render.err.find("for those it sees") != std::string::npos);
   }
 
   TEST_CASE("sample rule: an explicit --samples below the minimum warns once, naming both counts") {

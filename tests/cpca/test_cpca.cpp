@@ -149,6 +149,26 @@ TEST_CASE("cpca: no cluster ends empty, with repeated rows, clusters near the ro
   }
 }
 
+TEST_CASE("cpca: a cluster left empty never takes the only row of another") {
+  // Rows B, C (one each) first, then eight of A: every row is reconstructed exactly (terms 0, each
+  // cluster one value), so the rows' errors tie and the empty cluster's new row is found by row
+  // order; B and C come first, but each is its cluster's only row and must stay where it is.
+  const std::vector<float> a = {1, 0, 0}, b = {0, 1, 0}, c = {0, 0, 1};
+  std::vector<float> rows;
+  for (const auto* v : {&b, &c}) rows.insert(rows.end(), v->begin(), v->end());
+  for (int i = 0; i < 8; ++i) rows.insert(rows.end(), a.begin(), a.end());
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    CAPTURE(seed);
+    CpcaOptions o;
+    o.clusters = 4, o.terms = 0, o.iterations = 1, o.seed = seed;
+    const CpcaModel m = CompressCpca(rows.data(), 10, 3, o);
+    std::vector<int> members(std::size_t(m.clusters), 0);
+    for (std::uint32_t k : m.cluster) ++members[k];
+    for (int k = 0; k < m.clusters; ++k) CHECK_MESSAGE(members[std::size_t(k)] > 0, "cluster " << k << " is empty");
+    CHECK(CpcaRelativeError(m, rows.data()) == 0.0);  // B and C keep clusters of their own
+  }
+}
+
 TEST_CASE("cpca: the error never grows with more terms, and the weights project on the stored mean") {
   // One cluster is PCA: rows with a decaying spectrum (direction k scaled by 0.6^k), so each term
   // added removes a known share. Tolerance for "not larger": float rounding of the errors.
