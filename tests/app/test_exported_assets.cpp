@@ -208,6 +208,7 @@ TEST_SUITE("app") {
     // Options apart by tabs, as a tab is a blank to the format; and the last of two map_Kd lines
     // of one material is the one read, its options too.
     CHECK(warning("coat", "-clamp\ton\t-bm 1 quadrants.png") == prefix + "-clamp -bm of material 'coat'");
+    CHECK(warning("coat", "-o 0.5 0 0 -bm 1 quadrants.png") == prefix + "-bm of material 'coat'");  // -o's three words
     CHECK(warning("coat", "-clamp on quadrants.png\nmap_Kd -bm 1 quadrants.png") == prefix + "-bm of material 'coat'");
     // -s and -o alone, and no option: nothing to name.
     CHECK(warning("coat", "-s 2 2 1 -o 0 0 0 quadrants.png") == "");
