@@ -14,7 +14,7 @@ namespace prt {
 
 CommandSpec BenchSpec() {
   return {"prt bench WHAT [options]",
-          "WHAT is one of: light, bvh, raster, transport, wavelet (a frame in the wavelet basis beside SH lmax 4 and 16), all. Prints key=value lines; comparisons end with "
+          "WHAT is one of: machine (the machine lines alone), light, bvh, raster, transport, wavelet (a frame in the wavelet basis beside SH lmax 4 and 16), all. Prints key=value lines; comparisons end with "
           "ratio_<what>=<x>. Times are medians. The last lines, page_faults= and peak_memory_mib=, are the "
           "process's minor page faults (first touches of fresh memory) and its peak resident memory.",
           {{"options",
@@ -30,6 +30,10 @@ namespace {
 
 using BenchFn = int (*)(Args&);
 
+/// `prt bench machine`: the machine lines that start every benchmark's output, and nothing
+/// timed (what a script asks before it trusts a figure: the CPU and the kernels chosen on it).
+int NoMeasurement(Args&) { return 0; }
+
 struct Bench {
   BenchFn run;
   std::set<std::string> options;  ///< what it reads, validated before it runs
@@ -38,6 +42,7 @@ struct Bench {
 /// The benchmarks in the order `all` runs them.
 const std::vector<std::pair<std::string, Bench>>& Benches() {
   static const std::vector<std::pair<std::string, Bench>> benches = {
+      {"machine", {NoMeasurement, {"--threads", "--quiet"}}},
       {"light", {bench::BenchLight, {"--runs", "--threads", "--quiet"}}},
       {"bvh", {bench::BenchBvh, {"--runs", "--threads", "--mesh", "--quiet"}}},
       {"raster", {bench::BenchRaster, {"--runs", "--threads", "--size", "--quiet"}}},
@@ -55,7 +60,7 @@ std::vector<std::string> BenchNames() {
   return names;
 }
 
-/// "light, bvh, raster, transport or all".
+/// "machine, light, bvh, raster, transport, wavelet or all".
 std::string NameList() {
   const std::vector<std::string> names = BenchNames();
   std::string list;

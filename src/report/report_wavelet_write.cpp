@@ -90,8 +90,8 @@ std::string WaveletMarkdown(const WaveletStudy& d, bool times_trusted) {
     const std::string kept = r.wavelet ? Formatted("%.0f", r.kept) : std::to_string(CoeffCount(r.lmax));
     s += MarkdownRow({TransportModeName(r.mode), r.wavelet ? "wavelet" : "SH", Setting(r), kept,
                       Formatted("%.0f", r.bytes_per_vertex), std::to_string(r.directions), Formatted("%.3g", r.seconds),
-                      Percent(r.total.relative),
-                      Formatted("%.3g", r.total.max), r.wavelet ? Percent(r.kept_energy) : std::string("-")});
+                      Percent(r.total.relative), Formatted("%.3g", r.total.max),
+                      r.wavelet ? Percent(r.kept_energy) : std::string("-")});
   }
   s += "\n";
   for (TransportMode mode : c.modes) {

@@ -175,8 +175,9 @@ TEST_SUITE("app") {
     const char* sizes[2] = {"400x300", "1600x1200"};
     for (int i = 0; i < 2; ++i) {
       const std::string out = dir + "/" + sizes[i];
+      // The embedded scene, or under a sanitizer the small scene (tests/README.md).
       const auto r = test::RunPrt(std::string("render --view transport:0 --samples 16 --frames 1 --size ") + sizes[i] +
-                                  " --out " + Q(out));
+                                  test::ScaledMesh("transport_view_small_scene") + " --out " + Q(out));
       REQUIRE(r.exit_code == 0);
       const Image8 image = ReadPng(out + "/frame_0000.png");
       // The top-left corner shows background: the default --background env would be sky blue.
