@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -182,6 +183,28 @@ TEST_CASE("cpu levels: the cap reaches the kernel choices (prt bench's printout)
     CHECK_MESSAGE(r.out.find("\ncpu_vector_level=" + level + capped + "\n") != std::string::npos, r.out);
     CHECK_MESSAGE(r.out.find("\nisa_bvh=" + level + "\n") != std::string::npos, r.out);
   }
+}
+
+TEST_CASE("prt bench machine: the machine lines that start every benchmark, and nothing timed") {
+  // The keys every benchmark prints before its first measurement (bench/timing.cpp's
+  // PrintMachine), then the process's page faults and memory: catches a machine row that runs a
+  // measurement (the cap test above relies on it staying instant) or leaves a machine line out.
+  const auto keys = [](const std::string& out) {
+    std::vector<std::string> k;
+    std::istringstream in(out);
+    for (std::string line; std::getline(in, line);) k.push_back(line.substr(0, line.find('=')));
+    return k;
+  };
+  const test::RunResult machine = test::RunPrt("bench machine --threads 3");
+  REQUIRE_MESSAGE(machine.exit_code == 0, machine.err);
+  const std::vector<std::string> expected = {"cpu_model", "cpu_vector_level", "isa_bvh", "threads", "page_faults",
+                                             "peak_memory_mib"};
+  CHECK(keys(machine.out) == expected);
+  CHECK(machine.out.find("\nthreads=3\n") != std::string::npos);
+  // An option it does not read is refused, as for every benchmark.
+  const test::RunResult runs = test::RunPrt("bench machine --runs 2");
+  CHECK(runs.exit_code == 2);
+  CHECK(runs.err.find("--runs: not used by prt bench machine") != std::string::npos);
 }
 
 TEST_CASE("cpu levels: PRT_CPU_LEVEL names a level this CPU runs, else a one-line error") {
