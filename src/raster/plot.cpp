@@ -77,13 +77,13 @@ bool Labelled(const LogRange& r, int m) {
   return m == 1 || (span < 100.0 && (m == 2 || m == 5)) || span < 3.0;
 }
 
-/// A marker of `shape` centred on (x, y), about 7 pixels across; hollow: its outline only.
 /// A marker's half size in pixels (its outline reaches one more).
 constexpr int kMarkerRadius = 3;
 /// The data's ends sit this far inside the axes, so that a point at either end of a range (a
 /// value on a tick) is drawn whole inside them, clear of the axis lines and tick labels.
 constexpr int kDataInset = kMarkerRadius + 4;
 
+/// A marker of `shape` centred on (x, y), about 7 pixels across; hollow: its outline only.
 void Marker(Image8& im, double cx, double cy, PlotMarker shape, bool hollow, glm::vec3 c) {
   const int x = static_cast<int>(std::lround(cx)), y = static_cast<int>(std::lround(cy));
   constexpr int r = kMarkerRadius;

@@ -13,9 +13,8 @@
 /// (widening to whole decades could leave nine tenths of an axis empty) [1]; powers of ten are
 /// labelled, and 2 and 5 times them too when the axis spans under two decades [2]. The range's
 /// ends sit a few pixels inside the axis lines, so that a point on either end is drawn whole
-/// inside the axes. Points with
-/// x <= 0 or y <= 0 (or not finite) cannot be shown on log axes and are skipped, which breaks
-/// the line there.
+/// inside the axes. Points with x <= 0 or y <= 0 (or not finite) cannot be shown on log axes
+/// and are skipped, which breaks the line there.
 ///
 /// References
 /// [1] Cleveland, "The Elements of Graphing Data", Hobart Press 1994, ch. 2 (logarithmic scales;

@@ -21,7 +21,6 @@
 #include "sh/basis.h"
 #include "sh/zonal.h"
 #include "tests/precompute/glossy_test_util.h"
-#include "tests/test_support.h"
 
 using namespace prt;
 
@@ -29,7 +28,6 @@ TEST_SUITE_BEGIN("precompute");
 using test::BandLimitedLight;
 using test::LightAt;
 using test::SphereOverPlane;
-using test::SphereOverPlaneShape;
 
 namespace {
 
@@ -123,8 +121,7 @@ TEST_CASE("matrix path with interreflection: the hit points' diffuse light, per 
   const int lmax = 3, n = CoeffCount(lmax);
   // Edges short enough that interreflection bounces off the mesh itself (bounce_senders.h), so
   // the brute force below can gather from its triangles.
-  // Scaled under a sanitizer (tests/README.md): a quarter of the vertices, edges still short enough.
-  Mesh mesh = SphereOverPlane(test::kSanitized ? SphereOverPlaneShape{4.0f, 30, 48} : SphereOverPlaneShape{4.0f, 60, 96});
+  Mesh mesh = SphereOverPlane({4.0f, 60, 96});
   for (auto& a : mesh.albedo) a = glm::vec3(0.6f, 0.3f, 0.1f);
   const ShRgb light = BandLimitedLight(lmax);
   const glm::dvec3 eye(4.0, 3.0, 5.0);
