@@ -145,9 +145,18 @@ void ReadView(Args& args, RenderOptions& o, const RenderOptions& d) {
   } else if (const auto v = ViewFromName(view); v && *v != View::kTransport) {
     o.view = *v;
   } else {
-    const std::string near = NearestChoice(view, {"radiance", "irradiance", "albedo", "light", "glossy"});
+    // The views' own words: `transport` is offered as transport:K, and never suggested bare.
+    const std::vector<std::string> names = ViewNames();
+    std::vector<std::string> whole;
+    std::string list;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      const bool transport = names[i] == ViewName(View::kTransport);
+      if (!transport) whole.push_back(names[i]);
+      list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i] + (transport ? ":K" : "");
+    }
+    const std::string near = NearestChoice(view, whole);
     args.Fail("--view: unknown value '" + view + "' (" + (near.empty() ? "" : "did you mean " + near + "? ") +
-              "expected radiance, irradiance, albedo, transport:K, light or glossy)");
+              "expected " + list + ")");
   }
 }
 

@@ -24,6 +24,12 @@ std::optional<View> ViewFromName(const std::string& name) {
   return std::nullopt;
 }
 
+std::vector<std::string> ViewNames() {
+  std::vector<std::string> names;
+  for (const auto& view : kViews) names.emplace_back(view.second);
+  return names;
+}
+
 RenderOptions WithDemoCamera(RenderOptions o) {
   o.eye = glm::dvec3(6.0, 3.2, 9.0);
   o.target = glm::dvec3(0.0, 1.5, 0.0);

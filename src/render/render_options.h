@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -29,6 +30,8 @@ enum class View {
 const char* ViewName(View view);
 /// The view called `name` (ViewName's words), or nullopt.
 std::optional<View> ViewFromName(const std::string& name);
+/// Every view's word, in the enum's order.
+std::vector<std::string> ViewNames();
 
 struct RenderOptions {
   int frames = 120;
