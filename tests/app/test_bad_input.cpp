@@ -227,7 +227,9 @@ TEST_SUITE("app") {
              Case{"--view lite", "--view: unknown value 'lite' (did you mean light? expected radiance, irradiance,"},
              Case{"--view Radiance", "--view: unknown value 'Radiance' (did you mean radiance? expected"},
              Case{"--view glow", "--view: unknown value 'glow' (did you mean glossy? expected"},
-             Case{"--view xyz", "--view: unknown value 'xyz' (expected radiance,"},  // nothing near enough
+             // Nothing near enough; every view named, transport with its coefficient.
+             Case{"--view xyz", "--view: unknown value 'xyz' (expected radiance, irradiance, albedo, transport:K, light "
+                                "or glossy)"},
              Case{"--look cose", "--look: unknown value 'cose' (did you mean course? expected one of default, course)"},
              Case{"--no-such-option 3", "--no-such-option: unknown option"},
              Case{"stray", "'stray': unexpected argument"},
