@@ -21,7 +21,8 @@ set(PRT_MODULES
   "wavelet: core sh geometry env precompute precompute_io basis"
   "video: core io"
   "render: core sh geometry io env raster basis video"
+  "view: core io raster render"
   "report: core sh geometry io material env precompute cpca raster sh_basis wavelet render"
-  "app: core texture sh geometry io material env precompute cpca precompute_io raster basis sh_basis wavelet video render report"
+  "app: core texture sh geometry io material env precompute cpca precompute_io raster basis sh_basis wavelet video render view report"
   "bench: core sh geometry io material env precompute cpca precompute_io raster sh_basis wavelet render app"
 )

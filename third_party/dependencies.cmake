@@ -7,6 +7,8 @@ find_package(nanoflann CONFIG REQUIRED)           # libnanoflann-dev
 find_package(doctest CONFIG REQUIRED)             # doctest-dev
 find_package(OpenEXR CONFIG REQUIRED)             # libopenexr-dev
 find_package(ZLIB REQUIRED)                       # zlib1g-dev (PNG deflate)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(PRT_HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)  # libcpp-httplib-dev (prt view)
 
 # stb ships no CMake config; Debian builds the implementations into libstb.
 find_path(PRT_STB_INCLUDE_DIR stb_image.h PATH_SUFFIXES stb REQUIRED)
@@ -35,3 +37,8 @@ target_link_libraries(prt::doctest INTERFACE doctest::doctest)
 
 prt_system_target(prt::openexr)
 target_link_libraries(prt::openexr INTERFACE OpenEXR::OpenEXR)
+
+# Debian builds cpp-httplib as a library (with TLS, zlib and brotli, which prt does not use):
+# its pkg-config flags make the header declare the classes as the library was built.
+prt_system_target(prt::httplib)
+target_link_libraries(prt::httplib INTERFACE PkgConfig::PRT_HTTPLIB)

@@ -39,6 +39,10 @@ PreparedBasis PrepareSh(const BasisInputs& in) {
   if (compressed) data->cpca = CompressSceneMatrices(data->transport, in.cpca.clusters, in.cpca.terms);
   PreparedBasis prepared;
   prepared.light = MakeShFrameLight(data->transport, in.light, in.axis, compressed ? &data->cpca : nullptr);
+  const ShData* kept = data.get();
+  prepared.relight = [kept, compressed](const Environment&, const ShRgb& light, const glm::dvec3& axis) {
+    return MakeShFrameLight(kept->transport, light, axis, compressed ? &kept->cpca : nullptr);
+  };
   const AxisRotation rotation(in.axis, data->transport.lmax);
   Summary("rotation: " + rotation.Describe() + "; only the " + std::to_string(CoeffCount(data->transport.lmax)) +
           " coefficients the transport has are turned");
@@ -53,6 +57,10 @@ PreparedBasis PrepareShLight(const BasisInputs& in) {
   transport->lmax = in.scene.lmax;
   PreparedBasis prepared;
   prepared.light = MakeShFrameLight(*transport, in.light, in.axis);
+  const Transport* kept = transport.get();
+  prepared.relight = [kept](const Environment&, const ShRgb& light, const glm::dvec3& axis) {
+    return MakeShFrameLight(*kept, light, axis);
+  };
   prepared.transport = std::move(transport);
   return prepared;
 }
@@ -65,6 +73,11 @@ PreparedBasis PrepareWavelet(const BasisInputs& in) {
   PreparedBasis prepared;
   prepared.light = MakeWaveletFrameLight(*transport, in.env, in.light, in.axis, in.scene.wavelet.light_terms,
                                          in.scene.wavelet.light_selection);
+  const WaveletTransport* kept = transport.get();
+  const WaveletOptions w = in.scene.wavelet;
+  prepared.relight = [kept, w](const Environment& env, const ShRgb& light, const glm::dvec3& axis) {
+    return MakeWaveletFrameLight(*kept, env, light, axis, w.light_terms, w.light_selection);
+  };
   Summary("rotation: the environment turned and spread onto the wavelet cube each frame (its energy kept exactly, "
           "a compact source's light moving smoothly between texels: wavelet/light_cube.h)" +
           std::string(transport->bounce.coeffs.empty() ? "" : "; the bounces' SH light turned by its band matrices"));
@@ -79,6 +92,11 @@ PreparedBasis PrepareWaveletLight(const BasisInputs& in) {
   PreparedBasis prepared;
   prepared.light = MakeWaveletFrameLight(*transport, in.env, in.light, in.axis, in.scene.wavelet.light_terms,
                                          in.scene.wavelet.light_selection);
+  const WaveletTransport* kept = transport.get();
+  const WaveletOptions w = in.scene.wavelet;
+  prepared.relight = [kept, w](const Environment& env, const ShRgb& light, const glm::dvec3& axis) {
+    return MakeWaveletFrameLight(*kept, env, light, axis, w.light_terms, w.light_selection);
+  };
   prepared.transport = std::move(transport);
   return prepared;
 }

@@ -10,6 +10,7 @@
 ///   wavelet no      no      no           no         --cube-size --wavelet-terms --light-terms  wavelet.cache
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,6 +46,12 @@ struct BasisInputs {
 struct PreparedBasis {
   std::shared_ptr<const void> transport;
   std::unique_ptr<FrameLight> light;
+  /// Another frame light of the same transport: under environment `env` (whose SH projection is
+  /// `light`) turning about `axis` (prt view: a light dragged about any axis, another --env, SH
+  /// bands above a lower lmax zeroed in `light`). `env` must outlive the result, and the result
+  /// must not outlive `transport`.
+  std::function<std::unique_ptr<FrameLight>(const Environment& env, const ShRgb& light, const glm::dvec3& axis)>
+      relight;
 };
 
 struct Basis {

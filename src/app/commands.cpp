@@ -8,6 +8,7 @@ const std::vector<Command>& Commands() {
       {"render", "precompute (or reuse the cache), then write rotating-light frames", RenderSpec, RunRender},
       {"precompute", "write light.txt and transport.txt in the course's format", PrecomputeSpec, RunPrecompute},
       {"light", "print an environment's SH coefficients", LightSpec, RunLight},
+      {"view", "serve a page that relights the scene live in a browser", ViewSpec, RunView},
       {"reference", "ground truth without SH truncation", ReferenceSpec, RunReference},
       {"report", "error against run time, and the stiff and extreme cases", ReportSpec, RunReport},
       {"diff", "compare two images", DiffSpec, RunDiff},

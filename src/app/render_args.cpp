@@ -47,6 +47,10 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderJobOptions& job) {
   add(ReplaceOption());
   add({"--axis", "X,Y,Z", "rotation axis of the light", VecText(d.axis) + ", world up"});
   add({"--turns", "T", "full turns of the light over all frames, -1e6..1e6", Formatted("%g", double(d.turns))});
+  add({"--start-angle", "DEGREES",
+       "the light's turn about the axis at frame 0, -1e6..1e6 (frame i: DEGREES + 360 * turns * i / N); prt view's "
+       "command line uses it to start a sequence where the page left the light",
+       Formatted("%g", d.start_degrees)});
   add({"--background", "B", "env | black | R,G,B (linear, each >= 0): env draws the environment, turning with the light",
        d.env_background ? "env" : "black"});
   add({"--tonemap", "T", "srgb (clamp) | reinhard | aces (a filmic curve that keeps bright suns from clipping)",
@@ -224,7 +228,7 @@ bool HasControlCharacter(const std::string& file) {
 
 const std::vector<std::string>& AllRenderOptionNames() {
   static const std::vector<std::string> names = {
-      "--frames", "--size",     "--out",  "--replace", "--axis", "--turns",  "--background", "--tonemap", "--exposure",
+      "--frames", "--size",     "--out",  "--replace", "--axis", "--turns", "--start-angle", "--background", "--tonemap", "--exposure",
       "--ssaa",   "--view",     "--eye",  "--target", "--up",   "--fov",        "--orbit", "--cpca",
       "--vertex-radiance", "--video", "--fps", "--cache"};
   return names;
@@ -252,6 +256,7 @@ RenderJobOptions ReadRenderOptions(Args& args, const RenderJobOptions& job_defau
     }
   }
   if (has("--turns")) o.turns = args.Double("--turns", d.turns, -1e6, 1e6);
+  if (has("--start-angle")) o.start_degrees = args.Double("--start-angle", d.start_degrees, -1e6, 1e6);
   if (has("--background")) ReadBackground(args, o, d);
   if (has("--tonemap")) {
     const std::string curve = args.Choice("--tonemap", ToneCurveName(d.tonemap), {"srgb", "reinhard", "aces"});

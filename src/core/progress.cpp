@@ -1,5 +1,6 @@
 #include "core/progress.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -13,7 +14,28 @@ namespace {
 
 constexpr std::chrono::milliseconds kRedraw(100);  // at most ten draws a second
 
+/// The newest bar, for LatestProgress: its label and total under the mutex, its count atomic.
+struct Latest {
+  std::mutex mutex;
+  std::atomic<const void*> owner{nullptr};
+  std::string label;
+  std::size_t total = 0;
+  std::atomic<std::size_t> done{0};
+};
+
+Latest& TheLatest() {
+  static Latest* latest = new Latest;  // never destroyed: bars may end after main's statics
+  return *latest;
+}
+
 }  // namespace
+
+ProgressReading LatestProgress() {
+  Latest& l = TheLatest();
+  std::lock_guard<std::mutex> lock(l.mutex);
+  const std::size_t done = l.done;
+  return {l.label, l.total ? std::min(1.0, double(done) / double(l.total)) : 0.0, l.owner != nullptr};
+}
 
 std::string TimeLeft(double fraction, double elapsed_s) {
   if (!(fraction >= kTimeLeftFraction) || fraction >= 1.0 || !(elapsed_s >= 0.0)) return {};
@@ -42,14 +64,25 @@ std::chrono::duration<double> ProgressDelay() {
 
 Progress::Progress(std::string label, std::size_t total)
     : label_(std::move(label)), total_(total), enabled_(!IsQuiet() && ::isatty(2) && total > 0),
-      start_(std::chrono::steady_clock::now()), last_(start_ - kRedraw) {}  // the first draw waits for the delay only
+      start_(std::chrono::steady_clock::now()), last_(start_ - kRedraw) {  // the first draw waits for the delay only
+  Latest& l = TheLatest();
+  std::lock_guard<std::mutex> lock(l.mutex);
+  l.owner = this;
+  l.label = label_;
+  l.total = total_;
+  l.done = 0;
+}
 
 Progress::~Progress() {
   if (enabled_) std::fprintf(stderr, "\r\033[K");
+  Latest& l = TheLatest();
+  std::lock_guard<std::mutex> lock(l.mutex);
+  if (l.owner == this) l.owner = nullptr;
 }
 
 void Progress::Advance(std::size_t n) {
   const std::size_t done = done_ += n;
+  if (TheLatest().owner == this) TheLatest().done = done;  // a newer bar may have taken its place
   if (!enabled_) return;
   const auto now = std::chrono::steady_clock::now();
   std::unique_lock<std::mutex> lock(mutex_, std::try_to_lock);

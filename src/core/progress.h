@@ -34,6 +34,15 @@ std::chrono::duration<double> ProgressDelay();
 /// `elapsed_s` seconds; empty before kTimeLeftFraction or when done.
 std::string TimeLeft(double fraction, double elapsed_s);
 
+/// The newest bar's label and the fraction of its work done, whether or not it is drawn (prt
+/// view shows it on its page while a transport is computed); `active` is false once it ended.
+struct ProgressReading {
+  std::string label;
+  double fraction = 0.0;
+  bool active = false;
+};
+ProgressReading LatestProgress();
+
 /// A progress bar over `total` items (see the file comment).
 class Progress {
  public:

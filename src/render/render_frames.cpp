@@ -72,6 +72,10 @@ glm::vec3 UpAcross(const glm::vec3& view) { return view.y < 0.f ? glm::vec3(0, 0
 
 }  // namespace
 
+double FrameAngle(const RenderOptions& o, int i) {
+  return o.start_degrees * (kPi / 180.0) + 2.0 * kPi * o.turns * double(i) / double(o.frames);
+}
+
 std::string FrameName(int i, int count) {
   int digits = 4;
   for (long long limit = 10000; limit < count; limit *= 10) ++digits;
@@ -203,7 +207,7 @@ FrameStats RenderFrames(const Mesh& mesh, FrameLight& light, const Environment& 
   Progress progress("rendering", static_cast<std::size_t>(o.frames));
   for (int i = 0; i < o.frames; ++i) {
     // Each frame from its absolute angle: no accumulated drift.
-    const double angle = 2.0 * kPi * o.turns * double(i) / double(o.frames);
+    const double angle = FrameAngle(o, i);
     Image8& image = writer.Next(i, &stats.encode_seconds);  // rethrows an earlier frame's write error
     const auto t0 = std::chrono::steady_clock::now();
     const Camera seen_from = Orbit(camera, o.orbit * double(i) / double(o.frames), bounds.lo, bounds.hi);

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The frame loop of `render` and `demo`. For frame i of N the light is turned by
-///     a_i = 2 pi * turns * i / N
+///     a_i = start + 2 pi * turns * i / N   (start: --start-angle, 0 by default)
 /// about the axis (from the absolute angle: no drift) and the camera by orbit * i / N degrees
 /// about its target (raster/camera.h, Orbit), the vertices are shaded by their transport in its
 /// basis (basis/frame_light.h), the mesh is rasterized over the environment
@@ -94,6 +94,10 @@ ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, FrameLight& light
 /// measured on frame 0 and used for every frame.
 FrameStats RenderFrames(const Mesh& mesh, FrameLight& light, const Environment& env, const Camera& camera,
                         const RenderOptions& options, OutputFolder& folder, VideoWriter* video = nullptr);
+
+/// The light's turn at frame `i` of `options.frames`, in radians, from the absolute angle:
+///     a_i = start_degrees * pi / 180 + 2 pi * turns * i / frames
+double FrameAngle(const RenderOptions& options, int i);
 
 /// The file name of frame `i` of `count`: frame_0000.png ..., with as many digits as count - 1
 /// needs (at least four), so that the names sort in frame order.

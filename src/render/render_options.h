@@ -38,6 +38,7 @@ struct RenderOptions {
   int width = 640, height = 480;
   glm::dvec3 axis{0.0, 1.0, 0.0};  ///< rotation axis of the light (world up)
   double turns = 1.0;              ///< full turns over all frames
+  double start_degrees = 0.0;      ///< the light's turn at frame 0 (--start-angle)
   bool env_background = true;      ///< the environment behind the mesh, else background_color
   glm::vec3 background_color{0.0f};
   ToneCurve tonemap = ToneCurve::kAces;

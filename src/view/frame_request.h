@@ -1,0 +1,50 @@
+#pragma once
+/// \file
+/// What the page of `prt view` asks for: one frame, as the query of `/frame` (and `/frame.png`,
+/// `/command`) gives it. Every parameter is checked against what the run can draw (ViewLimits):
+/// a name not listed below, a name given twice, a value that does not parse or is out of range
+/// is refused with an Error naming the parameter, which the server answers with 400.
+///
+///   axis=X,Y,Z angle=DEGREES   the light turned by DEGREES about the axis (any non-zero axis)
+///   lmax=L                     SH bands 0..L, L <= the bands computed (they nest)
+///   basis=NAME mode=MODE       the transport: a basis and a transport mode the run offers
+///   env=I                      the I-th environment of the command line (0: --env)
+///   view=V                     radiance | irradiance | albedo | light | glossy | transport:K
+///   exposure=EV tonemap=CURVE  -20..20; srgb | reinhard | aces
+///   eye=, target=, up=X,Y,Z fov=DEGREES   the camera (fov 1..179)
+///   size=WxH ssaa=K            16..4096 each; 1..4
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "render/render_options.h"
+
+namespace prt {
+
+/// What the run can draw.
+struct ViewLimits {
+  int lmax = 2;                     ///< the SH bands computed
+  std::vector<std::string> bases;   ///< bases offered (the command line's first)
+  std::vector<std::string> modes;   ///< transport modes offered
+  int environments = 1;
+  int coefficients = 9;             ///< transport:K takes K below this
+  bool camera_moves = true;         ///< false: a glossy transfer computed for one eye
+};
+
+struct FrameRequest {
+  RenderOptions draw;  ///< axis, start_degrees (the light's turn), view, tone curve, exposure, camera, size, ssaa
+  int lmax = 2;
+  std::string basis, mode;
+  int env = 0;
+};
+
+/// `defaults` with the parameters of `query` (name, value pairs in order) applied and checked.
+FrameRequest ParseFrameRequest(const std::vector<std::pair<std::string, std::string>>& query,
+                               const FrameRequest& defaults, const ViewLimits& limits);
+
+/// The query that ParseFrameRequest reads back as `request` (every parameter written; numbers
+/// with 17 significant digits).
+std::string FrameQuery(const FrameRequest& request);
+
+}  // namespace prt

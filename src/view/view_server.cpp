@@ -1,0 +1,138 @@
+#include "view/view_server.h"
+
+#include <exception>
+#include <utility>
+#include <vector>
+
+#include <httplib.h>
+
+#include "core/error.h"
+#include "io/png_io.h"
+#include "view/page.h"
+#include "view/request_guard.h"
+
+namespace prt {
+namespace {
+
+/// Seconds a connection may take to send its request or to read a response before it is
+/// dropped: a stalled client holds one pool thread at most this long.
+constexpr int kTimeoutSeconds = 5;
+/// The largest request body accepted: the page sends none.
+constexpr std::size_t kMaxBody = 1024;
+
+void Text(httplib::Response& res, int status, const std::string& text) {
+  res.status = status;
+  res.set_content(text + "\n", "text/plain; charset=utf-8");
+}
+
+std::vector<std::pair<std::string, std::string>> Query(const httplib::Request& req) {
+  return {req.params.begin(), req.params.end()};
+}
+
+}  // namespace
+
+struct ViewServer::Impl {
+  httplib::Server server;
+  std::vector<std::string> hosts;
+};
+
+ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
+    : impl_(std::make_unique<Impl>()), bind_(bind) {
+  httplib::Server& s = impl_->server;
+  s.set_read_timeout(kTimeoutSeconds, 0);
+  s.set_write_timeout(kTimeoutSeconds, 0);
+  s.set_payload_max_length(kMaxBody);
+  s.set_keep_alive_max_count(10000);  // the page asks for frame after frame on one connection
+  s.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
+    const std::string why = RefusedRequest(req.method, req.get_header_value("Host"), req.get_header_value("Origin"),
+                                           req.get_header_value("Sec-Fetch-Site"), impl_->hosts);
+    if (why.empty()) return httplib::Server::HandlerResponse::Unhandled;
+    Text(res, 403, "refused: " + why);
+    return httplib::Server::HandlerResponse::Handled;
+  });
+  // Anything a handler throws is the request's fault or the scene's: an answer, never an end.
+  const auto guarded = [](auto handler) {
+    return [handler](const httplib::Request& req, httplib::Response& res) {
+      try {
+        handler(req, res);
+      } catch (const NotReady& e) {
+        Text(res, 409, e.what());
+      } catch (const Error& e) {
+        Text(res, 400, e.what());
+      } catch (const std::exception& e) {
+        Text(res, 500, std::string("internal error: ") + e.what());
+      }
+    };
+  };
+  s.Get(R"(/|/[A-Za-z0-9_.-]+\.(html|js))", guarded([](const httplib::Request& req, httplib::Response& res) {
+          const std::optional<PageFile> file = FindPageFile(req.path);
+          if (!file) return Text(res, 404, "not found: " + req.path);
+          res.set_content(std::string(file->body), file->type);
+          res.set_header("Cache-Control", "no-store");
+        }));
+  s.Get("/state", guarded([&backend](const httplib::Request&, httplib::Response& res) {
+          res.set_content(backend.StateJson(), "application/json");
+          res.set_header("Cache-Control", "no-store");
+        }));
+  const auto frame = [&backend](const httplib::Request& req, bool png, httplib::Response& res) {
+    const FrameRequest request = ParseFrameRequest(Query(req), backend.Defaults(), backend.Limits());
+    double ms = 0.0;
+    const Image8 image = backend.Frame(request, &ms);
+    res.set_header("X-Prt-Size", std::to_string(image.width) + "x" + std::to_string(image.height));
+    res.set_header("X-Prt-Draw-Ms", std::to_string(ms));
+    res.set_header("Cache-Control", "no-store");
+    if (png) {
+      res.set_header("Content-Disposition", "attachment; filename=\"prt-view.png\"");
+      res.set_content(EncodePng(image), "image/png");
+    } else {
+      res.set_content(std::string(image.rgb.begin(), image.rgb.end()), "application/octet-stream");
+    }
+  };
+  s.Get("/frame", guarded([frame](const httplib::Request& req, httplib::Response& res) { frame(req, false, res); }));
+  s.Get("/frame.png", guarded([frame](const httplib::Request& req, httplib::Response& res) { frame(req, true, res); }));
+  s.Get("/command", guarded([&backend](const httplib::Request& req, httplib::Response& res) {
+          const FrameRequest request = ParseFrameRequest(Query(req), backend.Defaults(), backend.Limits());
+          res.set_content(backend.Command(request) + "\n", "text/plain; charset=utf-8");
+        }));
+  s.Post("/compute", guarded([&backend](const httplib::Request& req, httplib::Response& res) {
+           FrameRequest request = backend.Defaults();
+           std::vector<std::pair<std::string, std::string>> query;
+           for (const auto& [name, value] : req.params) {
+             if (name != "basis" && name != "mode") throw Error(name + ": unknown parameter (expected basis, mode)");
+             query.emplace_back(name, value);
+           }
+           request = ParseFrameRequest(query, request, backend.Limits());
+           backend.Compute(request.basis, request.mode);
+           Text(res, 202, "computing " + request.basis + " " + request.mode);
+         }));
+  const auto not_allowed = [](const httplib::Request& req, httplib::Response& res) {
+    Text(res, 405, req.method + " " + req.path + ": not allowed (the page uses GET, and POST /compute)");
+  };
+  s.Put(".*", not_allowed);
+  s.Delete(".*", not_allowed);
+  s.Patch(".*", not_allowed);
+  s.Options(".*", not_allowed);
+  s.Post(".*", not_allowed);  // after /compute, which matches first
+  s.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
+    if (res.body.empty()) Text(res, res.status, std::to_string(res.status) + ": " + req.method + " " + req.path);
+  });
+
+  port_ = port == 0 ? s.bind_to_any_port(bind) : (s.bind_to_port(bind, port) ? port : -1);
+  if (port_ <= 0)
+    throw Error("--bind " + bind + " --port " + std::to_string(port) +
+                ": cannot listen there (the port is taken, or the address is not this machine's)");
+  impl_->hosts = AllowedHosts(bind, port_);
+}
+
+ViewServer::~ViewServer() { Stop(); }
+
+std::string ViewServer::Address() const {
+  const std::string host = bind_.find(':') != std::string::npos ? "[" + bind_ + "]" : bind_;
+  return "http://" + host + ":" + std::to_string(port_) + "/";
+}
+
+void ViewServer::Serve() { impl_->server.listen_after_bind(); }
+
+void ViewServer::Stop() { impl_->server.stop(); }
+
+}  // namespace prt

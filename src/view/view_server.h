@@ -1,0 +1,74 @@
+#pragma once
+/// \file
+/// The web server of `prt view` (cpp-httplib, Debian's libcpp-httplib): the page, and what the
+/// page asks of the scene behind it (ViewBackend). Routes:
+///
+///   GET  /, /view.js      the embedded page (view/page.h); any other path is 404
+///   GET  /state           the run as JSON (ViewBackend::StateJson): limits, defaults, progress
+///   GET  /frame?QUERY     one frame (view/frame_request.h) as raw RGB bytes, row by row from the
+///                         top; its size and the time it took to draw in the headers
+///                         X-Prt-Size (WxH) and X-Prt-Draw-Ms
+///   GET  /frame.png?QUERY the same frame as a PNG file, to save
+///   GET  /command?QUERY   the `prt render` command line that draws the same frame
+///   POST /compute?basis=B&mode=M   starts computing that transport (202), progress in /state
+///
+/// Every request passes view/request_guard.h first (403). A bad query is 400 with the reason, a
+/// frame of a transport not computed yet 409, a body 413, any other method 405, and the server
+/// goes on. Each connection is served by a pool thread with 5 s read and write timeouts, so a
+/// client that stalls or disappears holds one thread for at most that long and never the others;
+/// the backend draws one frame at a time, and a frame's bytes are sent after its lock is left.
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "core/image.h"
+#include "view/frame_request.h"
+
+namespace prt {
+
+/// A frame the transport of which is still being computed (409).
+struct NotReady : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// The scene behind the page. Every call may come from any server thread.
+class ViewBackend {
+ public:
+  virtual ~ViewBackend() = default;
+  virtual const ViewLimits& Limits() const = 0;
+  /// The first frame: the command line's options.
+  virtual const FrameRequest& Defaults() const = 0;
+  virtual std::string StateJson() const = 0;
+  /// Draws `request`; throws NotReady while its transport is being computed, Error for one the
+  /// run cannot draw. `draw_ms` gets the time the drawing took.
+  virtual Image8 Frame(const FrameRequest& request, double* draw_ms) = 0;
+  /// Starts computing `basis`'s transport in `mode` in the background, if not done or started.
+  virtual void Compute(const std::string& basis, const std::string& mode) = 0;
+  /// The `prt render` command line that draws `request` as its frame 0.
+  virtual std::string Command(const FrameRequest& request) const = 0;
+};
+
+class ViewServer {
+ public:
+  /// Binds `bind`:`port` (0: any free port); throws Error when it cannot.
+  ViewServer(ViewBackend& backend, const std::string& bind, int port);
+  ~ViewServer();
+  ViewServer(const ViewServer&) = delete;
+  ViewServer& operator=(const ViewServer&) = delete;
+
+  int port() const { return port_; }
+  /// http://ADDRESS:PORT/ (an IPv6 address in brackets).
+  std::string Address() const;
+  /// Serves until Stop().
+  void Serve();
+  void Stop();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::string bind_;
+  int port_ = 0;
+};
+
+}  // namespace prt
