@@ -69,7 +69,7 @@ run_asan() {
 # The modules with a stage that runs on several threads (a thread pool, worker or writer
 # threads, atomics, mutexes), each a test label. A test (tests/app/test_ci_scripts.cpp) reads
 # src/ and fails when a module with threaded code is neither here nor in TSAN_LEFT_OUT.
-THREADED="core|sh|env|material|wavelet|precompute|precompute_io|cpca|raster|render|video|app"
+THREADED="core|sh|env|material|wavelet|precompute|precompute_io|cpca|raster|render|video|view|app"
 # Modules with threaded code whose tests do not run under ThreadSanitizer, each with its reason:
 # - report: `prt report`'s studies, built on precompute's stages (under TSan through precompute's
 #   and app's tests); its own parallel loop, the stability suite's lowest value over 200,000

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <httplib.h>
+#include <sys/socket.h>
 
 #include "core/error.h"
 #include "io/png_io.h"
@@ -42,7 +43,13 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
   s.set_read_timeout(kTimeoutSeconds, 0);
   s.set_write_timeout(kTimeoutSeconds, 0);
   s.set_payload_max_length(kMaxBody);
-  s.set_keep_alive_max_count(10000);  // the page asks for frame after frame on one connection
+  s.set_keep_alive_max_count(10000);
+  // The library's default, SO_REUSEPORT, would let a second server share the port and take half
+  // its connections: SO_REUSEADDR alone lets a restart take the port of one just ended, no more.
+  s.set_socket_options([](int sock) {
+    int yes = 1;
+    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });  // the page asks for frame after frame on one connection
   s.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
     const std::string why = RefusedRequest(req.method, req.get_header_value("Host"), req.get_header_value("Origin"),
                                            req.get_header_value("Sec-Fetch-Site"), impl_->hosts);

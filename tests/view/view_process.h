@@ -1,0 +1,53 @@
+#pragma once
+/// \file
+/// `prt view` as the tests run it: a child process serving the small scene, its address read
+/// from its stdout, and plain HTTP/1.1 requests to it over a socket of their own (so a test can
+/// send what a browser never would: a wrong Host, a malformed line, half a request).
+
+#include <string>
+#include <vector>
+
+namespace prt::test {
+
+class ViewProcess {
+ public:
+  /// Starts `prt view ARGS...` (stderr into `log`, stdout read for the address line); waits for
+  /// the address for up to five minutes. FAILs the test when none comes.
+  ViewProcess(const std::vector<std::string>& args, const std::string& log);
+  ~ViewProcess();  ///< SIGKILL if still running
+  ViewProcess(const ViewProcess&) = delete;
+  ViewProcess& operator=(const ViewProcess&) = delete;
+
+  int port() const { return port_; }
+  int pid() const { return pid_; }
+  const std::string& address() const { return address_; }
+  /// Sends `signal` and waits: the raw wait status.
+  int Stop(int signal);
+
+ private:
+  int pid_ = -1;
+  int port_ = 0;
+  std::string address_;
+};
+
+struct HttpReply {
+  int status = 0;                ///< 0: no reply (the connection closed first)
+  std::string head;              ///< status line and headers
+  std::string body;
+  std::string Header(const std::string& name) const;  ///< "" when absent
+};
+
+/// Sends `raw` (a whole request, as bytes) to 127.0.0.1:port and reads the reply until the
+/// server closes the connection or 30 s pass.
+HttpReply SendRaw(int port, const std::string& raw);
+
+/// A GET (or `method`) of `target` with the Host the server expects and `extra` header lines
+/// ("Name: value\r\n" each), Connection: close.
+HttpReply Request(int port, const std::string& target, const std::string& method = "GET",
+                  const std::string& extra = "", const std::string& body = "");
+
+/// The small scene's view arguments the tests share: WriteSmallScene in `dir`, lmax 3, 256
+/// directions a vertex, 160x120 frames, one thread per process kept free.
+std::vector<std::string> SmallViewArgs(const std::string& dir);
+
+}  // namespace prt::test
