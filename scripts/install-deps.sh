@@ -11,8 +11,9 @@ packages=(g++ cmake make pkg-config
 # encode .mp4 and .webm and decode every video with Debian's ffmpeg (prt itself needs it only for
 # those two formats, and says so when it is missing). The report tests render the Markdown tables
 # prt writes with Debian's cmark-gfm, GitHub's own Markdown renderer, to check every row keeps its
-# columns (prt itself never runs it).
-[ "${1:-}" = test ] && packages+=(ffmpeg cmark-gfm)
+# columns (prt itself never runs it). The tests of `prt view` drive Debian's chromium, headless,
+# from python3 over the DevTools Protocol (scripts/cdp.py), to check the page in a real browser.
+[ "${1:-}" = test ] && packages+=(ffmpeg cmark-gfm chromium python3)
 [ -n "${PRT_EXTRA_PACKAGES:-}" ] && read -r -a extra <<<"$PRT_EXTRA_PACKAGES" && packages+=("${extra[@]}")
 
 missing=()

@@ -11,7 +11,8 @@
 // A run whose filters select no test case at all fails: every CTest test names one case.
 // The tests that need Debian's ffmpeg (test::NeedsFfmpeg()) follow the same two rules, with
 // PRT_REQUIRE_FFMPEG=1, and so do those that need Debian's cmark-gfm (test::NeedsCmarkGfm()),
-// with PRT_REQUIRE_CMARK_GFM=1.
+// with PRT_REQUIRE_CMARK_GFM=1, and those that need Debian's chromium (test::NeedsChromium()),
+// with PRT_REQUIRE_CHROMIUM=1.
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
 
@@ -94,6 +95,10 @@ int main(int argc, char** argv) {
   }
   if (Required("PRT_REQUIRE_CMARK_GFM") && !prt::test::CmarkGfm()) {
     std::fprintf(stderr, "prt_tests: PRT_REQUIRE_CMARK_GFM is set, but cmark-gfm is not on PATH\n");
+    return 1;
+  }
+  if (Required("PRT_REQUIRE_CHROMIUM") && !prt::test::Chromium()) {
+    std::fprintf(stderr, "prt_tests: PRT_REQUIRE_CHROMIUM is set, but chromium or python3 is not on PATH\n");
     return 1;
   }
   int result = 0;

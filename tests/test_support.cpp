@@ -63,6 +63,13 @@ std::optional<std::string> CmarkGfm() { return FindProgram("cmark-gfm"); }
 
 doctest::skip NeedsCmarkGfm() { return doctest::skip(!CmarkGfm().has_value()); }
 
+std::optional<std::string> Chromium() {
+  if (!FindProgram("python3")) return std::nullopt;
+  return FindProgram("chromium");
+}
+
+doctest::skip NeedsChromium() { return doctest::skip(!Chromium().has_value()); }
+
 doctest::test_suite WholeStudy() { return doctest::test_suite("report_study"); }
 
 std::string ErrorMessage(const std::function<void()>& run) {

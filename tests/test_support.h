@@ -47,6 +47,12 @@ std::optional<std::string> CmarkGfm();
 /// runner, without it (PRT_REQUIRE_CMARK_GFM=1, which CI sets, makes its absence an error).
 doctest::skip NeedsCmarkGfm();
 
+/// Debian's chromium (and python3, which drives it over the DevTools Protocol: scripts/cdp.py)
+/// if both are on PATH: the browser tests of `prt view` need them.
+std::optional<std::string> Chromium();
+/// The decorator of a test case that needs Chromium(): skipped, and counted as skipped by the
+/// runner, without it (PRT_REQUIRE_CHROMIUM=1, which CI sets, makes its absence an error).
+doctest::skip NeedsChromium();
 /// The decorator of a test case that runs a whole `prt report` study end to end (minutes under a
 /// sanitizer): `TEST_CASE("..." * test::WholeStudy())` puts it in the suite, and so the CTest
 /// label, `report_study`. The unsanitized suite runs it; the ASan + UBSan pass leaves the label

@@ -1,0 +1,160 @@
+"""prt view in a real browser (Debian's chromium, headless, driven over the DevTools Protocol):
+the page loads without a console error; a drag turns the light by the angle it should, and the
+picture on the page is what `prt render` draws from the command line the page gives (within one
+level); an lmax switch changes the picture as `prt render --lmax` does; the page shows its frame
+rate. Run by tests/view/test_view_browser.cpp; exits 0 when every check holds, else 1 with the
+failures on stderr.
+
+    python3 browser_check.py PRT_BINARY MESH.obj SCRATCH_DIR
+"""
+import base64
+import os
+import re
+import shlex
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scripts"))
+import cdp  # noqa: E402
+
+# Degrees the light turns per pixel dragged (src/view/page/view.js, DEGREES_PER_PIXEL).
+DEGREES_PER_PIXEL = 0.5
+# The page's picture and prt render's are drawn by the same code from the same numbers; the
+# camera goes through the command line at 9 significant digits: one level.
+SAME_FRAME = 1
+
+failures = []
+
+
+def check(ok, what):
+    print(("ok: " if ok else "FAILED: ") + what, file=sys.stderr)
+    if not ok:
+        failures.append(what)
+
+
+def max_difference(prt, a, b):
+    run = subprocess.run([prt, "diff", a, b], capture_output=True, text=True)
+    match = re.search(r"max_abs=(\d+)", run.stdout)
+    if not match:
+        raise RuntimeError("prt diff %s %s: %s" % (a, b, run.stderr))
+    return int(match.group(1))
+
+
+def canvas_png(page, path):
+    data = page.evaluate("document.getElementById('frame').toDataURL('image/png')")
+    with open(path, "wb") as f:
+        f.write(base64.b64decode(data.split(",", 1)[1]))
+
+
+def settled(page, drawn_before):
+    """Waits until a frame newer than `drawn_before` is drawn and none is pending."""
+    page.wait_for("prtView.framesDrawn > %d && !prtView.dirty && !prtView.inflight" % drawn_before)
+    page.wait_for("!prtView.dirty && !prtView.inflight")
+
+
+def render_command(prt, page, out):
+    """The page's `prt render` line, run into `out` for one frame; returns frame 0's path."""
+    page.evaluate("document.getElementById('command').value = ''")
+    page.evaluate("document.getElementById('showcommand').click()")
+    line = page.wait_for("document.getElementById('command').value")
+    words = shlex.split(line)
+    assert words[:2] == ["prt", "render"], line
+    words = [prt] + words[1:]
+    at = words.index("--out")
+    words[at + 1] = out
+    words[words.index("--frames") + 1] = "1"
+    run = subprocess.run(words + ["--quiet"], capture_output=True, text=True)
+    if run.returncode != 0:
+        raise RuntimeError("%s: %s" % (line, run.stderr))
+    return os.path.join(out, "frame_0000.png"), line
+
+
+def main():
+    prt, mesh, scratch = sys.argv[1:4]
+    view = subprocess.Popen([prt, "view", "--mesh", mesh, "--lmax", "3", "--samples", "256", "--size", "320x240",
+                             "--port", "0"], stdout=subprocess.PIPE, stderr=open(os.path.join(scratch, "view.txt"), "w"),
+                            text=True)
+    try:
+        address = view.stdout.readline().strip()
+        check(address.startswith("http://127.0.0.1:"), "prt view printed its address: " + address)
+        with cdp.Browser() as browser:
+            page = browser.open(address)
+            page.wait_for("window.prtView && prtView.framesDrawn >= 1", timeout=120)
+            page.wait_for("!prtView.dirty && !prtView.inflight")
+            browser.pump(0.5)
+            check(page.errors() == [], "the page loads and draws with no console error: %s" % page.errors())
+
+            # A drag: 90 px to the right over the canvas, in steps, as a hand does.
+            box = page.evaluate("(() => { const r = document.getElementById('frame').getBoundingClientRect();"
+                                " return [r.left, r.top, r.width, r.height]; })()")
+            x0, y0 = box[0] + box[2] / 2, box[1] + box[3] / 2
+            drawn = page.evaluate("prtView.framesDrawn")
+            page.mouse("mousePressed", x0, y0)
+            for step in range(1, 10):
+                page.mouse("mouseMoved", x0 + 10 * step, y0)
+            page.mouse("mouseReleased", x0 + 90, y0)
+            settled(page, drawn)
+            turn = page.evaluate("axisAngle()")
+            check(abs(turn["angle"] - 90 * DEGREES_PER_PIXEL) < 1e-9 and
+                  max(abs(a - b) for a, b in zip(turn["axis"], [0, 1, 0])) < 1e-12,
+                  "a 90 px drag turned the light by 45 degrees about the camera's up: %s" % turn)
+            query = page.evaluate("prtView.lastQuery")
+            check("angle=45&" in query and "axis=0%2C1%2C0&" in query, "the frame drawn is that turn's: " + query)
+            canvas_png(page, os.path.join(scratch, "page_turned.png"))
+            frame, line = render_command(prt, page, os.path.join(scratch, "render_turned"))
+            check("--start-angle 45 " in line and "--axis 0,1,0 " in line, "the command line says the turn: " + line)
+            diff = max_difference(prt, os.path.join(scratch, "page_turned.png"), frame)
+            check(diff <= SAME_FRAME, "the page's picture is prt render's of the same light (max_abs %d)" % diff)
+
+            # A vertical drag as well: a turn about another axis, still render's picture.
+            drawn = page.evaluate("prtView.framesDrawn")
+            page.mouse("mousePressed", x0, y0)
+            for step in range(1, 5):
+                page.mouse("mouseMoved", x0, y0 + 10 * step)
+            page.mouse("mouseReleased", x0, y0 + 40)
+            settled(page, drawn)
+            turn = page.evaluate("axisAngle()")
+            check(abs(turn["axis"][1]) < 0.999, "a vertical drag turned the light about another axis: %s" % turn)
+            canvas_png(page, os.path.join(scratch, "page_tilted.png"))
+            frame, line = render_command(prt, page, os.path.join(scratch, "render_tilted"))
+            diff = max_difference(prt, os.path.join(scratch, "page_tilted.png"), frame)
+            check(diff <= SAME_FRAME, "after a drag about another axis, still render's picture (max_abs %d)" % diff)
+
+            # lmax 3 -> 1: the picture changes, as prt render --lmax 1 draws it.
+            drawn = page.evaluate("prtView.framesDrawn")
+            page.evaluate("(() => { const s = document.getElementById('lmax'); s.value = '1';"
+                          " s.dispatchEvent(new Event('input')); })()")
+            settled(page, drawn)
+            check("lmax=1&" in page.evaluate("prtView.lastQuery"), "the frame drawn asks for lmax 1")
+            check(page.evaluate("document.getElementById('lmaxtext').textContent") == "1", "the page says lmax 1")
+            canvas_png(page, os.path.join(scratch, "page_lmax1.png"))
+            frame, line = render_command(prt, page, os.path.join(scratch, "render_lmax1"))
+            check(" --lmax 1 " in line, "the command line says --lmax 1: " + line)
+            diff = max_difference(prt, os.path.join(scratch, "page_lmax1.png"), frame)
+            check(diff <= SAME_FRAME, "lmax 1 on the page is prt render --lmax 1 (max_abs %d)" % diff)
+            changed = max_difference(prt, os.path.join(scratch, "page_lmax1.png"),
+                                     os.path.join(scratch, "page_tilted.png"))
+            check(changed > 5, "the lmax switch changed the picture (max_abs %d against lmax 3)" % changed)
+
+            # Playing: the light turns on its own and the page shows the frame rate.
+            page.evaluate("document.getElementById('play').click()")
+            time.sleep(2.0)
+            fps = page.evaluate("document.getElementById('fps').textContent")
+            drawn = page.evaluate("prtView.framesDrawn")
+            check(re.fullmatch(r"\d+\.\d", fps or "") is not None and float(fps) > 0,
+                  "the page shows its frame rate while the light turns: '%s' fps" % fps)
+            check(re.fullmatch(r"\d+\.\d", page.evaluate("document.getElementById('drawms').textContent")) is not None,
+                  "the page shows the frame's draw time")
+            page.evaluate("document.getElementById('play').click()")
+            check(drawn >= 5, "frames kept coming while playing (%d drawn)" % drawn)
+            browser.pump(0.2)
+            check(page.errors() == [], "no console error over the whole session: %s" % page.errors())
+    finally:
+        view.terminate()
+        view.wait(timeout=30)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

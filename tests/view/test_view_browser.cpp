@@ -1,0 +1,27 @@
+// prt view in a real browser: tests/view/browser_check.py drives Debian's chromium, headless,
+// over the DevTools Protocol (scripts/cdp.py); this case runs it on the small scene.
+#include "tests/test_support.h"
+
+namespace prt::test {
+
+TEST_SUITE("view") {
+
+TEST_CASE("prt view in chromium: no console error, a drag turns the light as render does, lmax switches, frame rate shown" *
+          NeedsChromium()) {
+  const std::string dir = ScratchDir("view_browser");
+  const std::string script = SourceDir() + "/tests/view/browser_check.py";
+  const RunResult r = RunCommand("python3 " + Q(script) + " " + Q(PrtBinary()) + " " + Q(WriteSmallScene(dir)) + " " +
+                                 Q(dir));
+  INFO(r.err);
+  CHECK(r.exit_code == 0);
+  // Each check the script makes is named; none may be missing from its report.
+  for (const char* said : {"no console error", "turned the light by 45 degrees", "prt render's of the same light",
+                           "still render's picture", "prt render --lmax 1", "changed the picture",
+                           "shows its frame rate"})
+    CHECK(r.err.find(said) != std::string::npos);
+  CHECK(r.err.find("FAILED") == std::string::npos);
+}
+
+}  // TEST_SUITE
+
+}  // namespace prt::test
