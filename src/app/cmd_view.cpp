@@ -21,7 +21,8 @@ const std::vector<std::string> kViewRenderOptions = {"--size",  "--axis", "--sta
 const std::set<std::string> kNotRepeated = {"--lmax", "--transport", "--basis", "--env", "--samples",
                                             "--hidden-samples", "--size", "--axis", "--start-angle", "--tonemap",
                                             "--exposure", "--ssaa", "--view", "--eye", "--target", "--up", "--fov",
-                                            "--cache", "--port", "--bind", "--quiet", "--threads"};
+                                            "--cache", "--port", "--bind", "--quiet", "--threads",
+                                            "--reference-samples"};
 
 SceneOptions ViewSceneDefaults() {
   SceneOptions s;
@@ -69,6 +70,8 @@ CommandSpec ViewSpec() {
             {{"--port", "N", "the port to listen on, 0..65535; 0 takes any free one", "8202"},
              {"--bind", "ADDRESS", "the address to listen on: 127.0.0.1 serves this machine only; 0.0.0.0 every "
               "network this machine is on (anyone who can reach it may use the page)", "127.0.0.1"},
+             {"--reference-samples", "N", "directions a vertex of the reference the page measures when asked (its "
+              "error figures: each setting against prt reference), 2..1048576", "1024"},
              QuietOption()}}}};
 }
 
@@ -81,7 +84,8 @@ int RunView(const std::vector<std::string>& tokens) {
   const RenderJobOptions job = CompleteRenderOptions(args, ReadRenderOptions(args, defaults), scene);
   const int port = args.Int("--port", 8202, 0, 65535);
   const std::string bind = args.String("--bind", "127.0.0.1");
-  ViewSetup setup{scene, job.draw, {scene.env}, job.cache, KeptTokens(tokens, spec)};
+  const int reference_samples = args.Int("--reference-samples", 1024, 2, 1 << 20);
+  ViewSetup setup{scene, job.draw, {scene.env}, job.cache, reference_samples, KeptTokens(tokens, spec)};
   // Each is loaded (and so checked) with --env's, before any transport is computed.
   for (const std::string& env : args.TakePositionals()) setup.envs.push_back(env);
   args.Finish();

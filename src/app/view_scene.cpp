@@ -9,6 +9,7 @@
 #include "core/log.h"
 #include "core/progress.h"
 #include "core/text.h"
+#include "precompute/reference.h"
 #include "raster/exposure.h"
 #include "render/render_frames.h"
 
@@ -49,6 +50,14 @@ std::string Vec(const glm::dvec3& v) { return Formatted("%.9g,%.9g,%.9g", v.x, v
 std::string Key(const std::string& basis, const std::string& mode) { return basis + " " + mode; }
 
 }  // namespace
+
+/// A reference the page asked for: measuring (not done), measured, or failed (`error`).
+struct ViewScene::Measured {
+  std::mutex mutex;
+  bool done = false;
+  std::string error;
+  Reference reference;
+};
 
 /// One transport the page asked for: computing (prepared empty), ready, or failed (`error`).
 struct ViewScene::Prepared {
@@ -199,6 +208,84 @@ Image8 ViewScene::Frame(const FrameRequest& request, double* draw_ms) {
   return std::move(toned.image);
 }
 
+void ViewScene::MeasureReference(const FrameRequest& r) {
+  const std::string key = r.mode + " " + std::to_string(r.env);
+  std::lock_guard<std::mutex> lock(mutex_);
+  auto& slot = references_[key];
+  if (slot) return;
+  slot = std::make_shared<Measured>();
+  Summary("view: measuring prt reference for " + r.mode + " under " + setup_.envs[r.env] + " (" +
+          std::to_string(setup_.reference_samples) + " directions a vertex), as the page asked");
+  ReferenceOptions ro;
+  ro.mode = TransportModeFromName(r.mode);
+  ro.samples = setup_.reference_samples;
+  ro.bounces = setup_.scene.bounces;
+  ro.seed = setup_.scene.seed;
+  ro.material = setup_.scene.material;
+  ro.eye = glm::dvec3(camera_.eye);
+  workers_.emplace_back([this, s = slot, ro, env = r.env] {
+    try {
+      Reference reference = ComputeReference(mesh_, *envs_[env], ro);
+      std::lock_guard<std::mutex> l(s->mutex);
+      s->reference = std::move(reference);
+      s->done = true;
+    } catch (const std::exception& e) {
+      std::lock_guard<std::mutex> l(s->mutex);
+      s->error = e.what();
+      s->done = true;
+    }
+  });
+}
+
+std::string ViewScene::ErrorJson(const FrameRequest& r) {
+  std::shared_ptr<Measured> measured;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = references_.find(r.mode + " " + std::to_string(r.env));
+    if (it != references_.end()) measured = it->second;
+  }
+  if (!measured) throw NotReady("the reference of " + r.mode + " under environment " + std::to_string(r.env) +
+                                " is not measured (POST /reference starts it)");
+  {
+    std::lock_guard<std::mutex> lock(measured->mutex);
+    if (!measured->done) throw NotReady("the reference is still being measured");
+    if (!measured->error.empty()) throw Error("reference: " + measured->error);
+  }
+  const std::shared_ptr<Prepared> slot = Find(r.basis, r.mode);
+  if (!slot) throw NotReady(Key(r.basis, r.mode) + ": not computed (POST /compute starts it)");
+  {
+    std::lock_guard<std::mutex> lock(slot->mutex);
+    if (!slot->done) throw NotReady(Key(r.basis, r.mode) + ": still computing");
+    if (!slot->error.empty()) throw Error(slot->error);
+  }
+  std::lock_guard<std::mutex> lock(draw_mutex_);
+  const bool sh = slot->scene.basis->windowed_light;
+  const int computed = slot->scene.lmax;
+  const int lmax = sh ? std::min(r.lmax, computed) : computed;
+  const std::string key = Key(r.basis, r.mode) + " " + std::to_string(r.env) + " " + std::to_string(lmax);
+  if (const auto it = errors_.find(key); it != errors_.end()) return it->second;
+  // This setting's radiance per vertex, the light unturned, against the reference's.
+  ShRgb light = Light(r.env, lmax, View::kRadiance, slot->scene);
+  light.resize(CoeffCount(computed), glm::dvec3(0.0));
+  const std::unique_ptr<FrameLight> frame_light = slot->basis.relight(*envs_[r.env], light, defaults_.draw.axis);
+  frame_light->Turn(0.0);
+  const glm::dvec3 eye(camera_.eye);
+  const std::vector<glm::vec3> shaded = frame_light->Shade(mesh_, true, &eye);
+  const Reference& ref = measured->reference;
+  double diff = 0.0, norm = 0.0;
+  for (std::size_t v = 0; v < shaded.size(); ++v) {
+    const glm::dvec3 d = glm::dvec3(shaded[v]) - ref.radiance[v];
+    diff += glm::dot(d, d);
+    norm += glm::dot(ref.radiance[v], ref.radiance[v]);
+  }
+  const double error = norm > 0 ? std::sqrt(diff / norm) : 0.0;
+  const double own = ref.rms_radiance > 0 ? ref.rms_error / ref.rms_radiance : 0.0;
+  const std::string json = Formatted("{\"error\":%.6g,\"reference_error\":%.6g,\"vertices\":%zu,\"samples\":%d,"
+                                     "\"lmax\":%d}", error, own, shaded.size(), setup_.reference_samples, lmax);
+  errors_[key] = json;
+  return json;
+}
+
 std::string ViewScene::Command(const FrameRequest& r) const {
   std::string line = "prt render";
   for (const std::string& t : setup_.kept_tokens) line += " " + ShellWord(t);
@@ -221,7 +308,7 @@ std::string ViewScene::Command(const FrameRequest& r) const {
 }
 
 std::string ViewScene::StateJson() const {
-  std::string transports = "[";
+  std::string transports = "[", references = "[";
   {
     std::lock_guard<std::mutex> lock(mutex_);
     for (const auto& [key, slot] : prepared_) {
@@ -230,8 +317,15 @@ std::string ViewScene::StateJson() const {
       transports += std::string(transports.size() > 1 ? "," : "") + "{\"key\":" + JsonString(key) +
                     ",\"state\":\"" + state + "\",\"error\":" + JsonString(slot->error) + "}";
     }
+    for (const auto& [key, measured] : references_) {
+      std::lock_guard<std::mutex> measured_lock(measured->mutex);
+      const std::string state = !measured->done ? "measuring" : measured->error.empty() ? "ready" : "failed";
+      references += std::string(references.size() > 1 ? "," : "") + "{\"key\":" + JsonString(key) +
+                    ",\"state\":\"" + state + "\",\"error\":" + JsonString(measured->error) + "}";
+    }
   }
   transports += "]";
+  references += "]";
   const ProgressReading progress = LatestProgress();
   const RenderOptions& d = defaults_.draw;
   std::vector<std::string> env_names = setup_.envs;
@@ -243,7 +337,7 @@ std::string ViewScene::StateJson() const {
          "],\"up\":[" + Vec(*d.up) + "],\"fov\":" + Formatted("%.9g", *d.fov) +
          ",\"exposure\":" + Formatted("%.9g", d.exposure.value_or(0.0)) + ",\"axis\":[" + Vec(d.axis) +
          "],\"width\":" + std::to_string(d.width) + ",\"height\":" + std::to_string(d.height) +
-         "},\"transports\":" + transports + ",\"progress\":{\"label\":" + JsonString(progress.label) +
+         "},\"transports\":" + transports + ",\"references\":" + references + ",\"progress\":{\"label\":" + JsonString(progress.label) +
          ",\"fraction\":" + Formatted("%.4f", progress.fraction) + ",\"active\":" + (progress.active ? "true" : "false") +
          "}}";
 }

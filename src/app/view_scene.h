@@ -10,6 +10,10 @@
 ///   another axis, env or lmax       a new frame light of the same transport (PreparedBasis::relight)
 ///   another basis or mode           that transport computed in the background on first use
 ///                                   (409 for its frames meanwhile, progress in /state), then kept
+///   the error against prt reference the reference's per-vertex radiance under the unturned
+///                                   environment, measured in the background when the page asks
+///                                   (precompute/reference.h, --reference-samples directions), then
+///                                   each setting's relative RMS error over every vertex
 ///   the camera                      nothing: a diffuse transport does not depend on it (a glossy
 ///                                   one was computed for the command line's eye, which stays)
 ///
@@ -35,7 +39,8 @@ struct ViewSetup {
   SceneOptions scene;                  ///< the first transport's options (its basis and mode)
   RenderOptions draw;                  ///< the first frame
   std::vector<std::string> envs;       ///< --env, then the extra environments
-  std::string cache;                   ///< --cache: the first transport's cache file ("" none)
+  std::string cache;                   ///< --cache: the first transport's cache file ("none": none)
+  int reference_samples = 1024;        ///< --reference-samples: directions a vertex of the measured reference
   /// The options as typed that the render command line repeats as they are (those the page does
   /// not set and render takes).
   std::vector<std::string> kept_tokens;
@@ -53,6 +58,8 @@ class ViewScene : public ViewBackend {
   Image8 Frame(const FrameRequest& request, double* draw_ms) override;
   void Compute(const std::string& basis, const std::string& mode) override;
   std::string Command(const FrameRequest& request) const override;
+  void MeasureReference(const FrameRequest& request) override;
+  std::string ErrorJson(const FrameRequest& request) override;
 
  private:
   struct Prepared;
@@ -71,6 +78,9 @@ class ViewScene : public ViewBackend {
   mutable std::mutex mutex_;  ///< guards prepared_ and the workers
   std::map<std::string, std::shared_ptr<Prepared>> prepared_;
   std::vector<std::thread> workers_;
+  struct Measured;
+  std::map<std::string, std::shared_ptr<Measured>> references_;  ///< by mode and env; under mutex_
+  std::map<std::string, std::string> errors_;                    ///< ErrorJson by setting; under draw_mutex_
 
   std::mutex draw_mutex_;  ///< one frame at a time: what follows is the frame loop's
   std::map<std::string, ShRgb> lights_;

@@ -112,14 +112,29 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
            backend.Compute(request.basis, request.mode);
            Text(res, 202, "computing " + request.basis + " " + request.mode);
          }));
+  s.Post("/reference", guarded([&backend](const httplib::Request& req, httplib::Response& res) {
+           std::vector<std::pair<std::string, std::string>> query;
+           for (const auto& [name, value] : req.params) {
+             if (name != "mode" && name != "env") throw Error(name + ": unknown parameter (expected mode, env)");
+             query.emplace_back(name, value);
+           }
+           const FrameRequest request = ParseFrameRequest(query, backend.Defaults(), backend.Limits());
+           backend.MeasureReference(request);
+           Text(res, 202, "measuring the reference");
+         }));
+  s.Get("/error", guarded([&backend](const httplib::Request& req, httplib::Response& res) {
+          const FrameRequest request = ParseFrameRequest(Query(req), backend.Defaults(), backend.Limits());
+          res.set_content(backend.ErrorJson(request), "application/json");
+          res.set_header("Cache-Control", "no-store");
+        }));
   const auto not_allowed = [](const httplib::Request& req, httplib::Response& res) {
-    Text(res, 405, req.method + " " + req.path + ": not allowed (the page uses GET, and POST /compute)");
+    Text(res, 405, req.method + " " + req.path + ": not allowed (the page uses GET, and POST for /compute and /reference)");
   };
   s.Put(".*", not_allowed);
   s.Delete(".*", not_allowed);
   s.Patch(".*", not_allowed);
   s.Options(".*", not_allowed);
-  s.Post(".*", not_allowed);  // after /compute, which matches first
+  s.Post(".*", not_allowed);  // after /compute and /reference, which match first
   s.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
     if (res.body.empty()) Text(res, res.status, std::to_string(res.status) + ": " + req.method + " " + req.path);
   });

@@ -11,6 +11,9 @@
 ///   GET  /frame.png?QUERY the same frame as a PNG file, to save
 ///   GET  /command?QUERY   the `prt render` command line that draws the same frame
 ///   POST /compute?basis=B&mode=M   starts computing that transport (202), progress in /state
+///   POST /reference?mode=M&env=I   starts measuring prt reference's radiance for them (202)
+///   GET  /error?QUERY     the frame's setting's error against that reference, as JSON (409
+///                         until it is measured)
 ///
 /// Every request passes view/request_guard.h first (403). A bad query is 400 with the reason, a
 /// frame of a transport not computed yet 409, a body 413, any other method 405, and the server
@@ -45,6 +48,13 @@ class ViewBackend {
   virtual Image8 Frame(const FrameRequest& request, double* draw_ms) = 0;
   /// Starts computing `basis`'s transport in `mode` in the background, if not done or started.
   virtual void Compute(const std::string& basis, const std::string& mode) = 0;
+  /// Starts measuring the reference (precompute/reference.h) of `request`'s mode and environment
+  /// in the background, if not done or started.
+  virtual void MeasureReference(const FrameRequest& request) = 0;
+  /// {"error": E, "reference_error": R, ...}: the relative RMS error of `request`'s per-vertex
+  /// radiance (its basis, mode, lmax and environment, the light unturned) against the measured
+  /// reference, and the reference's own; throws NotReady until that reference is measured.
+  virtual std::string ErrorJson(const FrameRequest& request) = 0;
   /// The `prt render` command line that draws `request` as its frame 0.
   virtual std::string Command(const FrameRequest& request) const = 0;
 };

@@ -137,6 +137,18 @@ def main():
                                      os.path.join(scratch, "page_tilted.png"))
             check(changed > 5, "the lmax switch changed the picture (max_abs %d against lmax 3)" % changed)
 
+            # The error figures: measured against prt reference on request, less error at more bands.
+            page.evaluate("document.getElementById('measure').click()")
+            page.wait_for("prtView.error && prtView.error.lmax === 1", timeout=120)
+            low = page.evaluate("prtView.error.error")
+            text = page.evaluate("document.getElementById('error').textContent")
+            check(("%.2f %% RMS" % (100 * low)) in text, "the page shows the error at lmax 1: " + text)
+            page.evaluate("(() => { const s = document.getElementById('lmax'); s.value = '3';"
+                          " s.dispatchEvent(new Event('input')); })()")
+            page.wait_for("prtView.error.lmax === 3")
+            high = page.evaluate("prtView.error.error")
+            check(high < low, "more bands, less error on the page: lmax 3 %.4f < lmax 1 %.4f" % (high, low))
+
             # Playing: the light turns on its own and the page shows the frame rate.
             page.evaluate("document.getElementById('play').click()")
             time.sleep(2.0)

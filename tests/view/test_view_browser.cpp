@@ -17,7 +17,7 @@ TEST_CASE("prt view in chromium: no console error, a drag turns the light as ren
   // Each check the script makes is named; none may be missing from its report.
   for (const char* said : {"no console error", "turned the light by 45 degrees", "prt render's of the same light",
                            "still render's picture", "prt render --lmax 1", "changed the picture",
-                           "shows its frame rate"})
+                           "shows its frame rate", "the page shows the error", "more bands, less error"})
     CHECK(r.err.find(said) != std::string::npos);
   CHECK(r.err.find("FAILED") == std::string::npos);
 }

@@ -75,6 +75,45 @@ function query() {
 
 function status(text) { $('status').textContent = text; }
 
+// The setting's error against prt reference, when the run has measured that reference (the
+// light unturned: the figure belongs to the setting, not to the frame).
+async function updateError() {
+  const key = $('mode').value + ' ' + $('env').value;
+  const setting = key + ' ' + $('basis').value + ' ' + $('lmax').value;
+  if (setting === view.errorSetting) return;
+  view.errorSetting = setting;
+  const state = await (await fetch('/state')).json();
+  const ref = state.references.find((x) => x.key === key);
+  const t = state.transports.find((x) => x.key === $('basis').value + ' ' + $('mode').value);
+  if (!ref || ref.state !== 'ready' || !t || t.state !== 'ready') {
+    $('error').textContent = 'error against prt reference: ' +
+      (ref && ref.state === 'measuring' ? 'measuring ...' : ref && ref.error ? ref.error : 'not measured for this mode and environment');
+    view.errorSetting = null;
+    return;
+  }
+  const e = await (await fetch('/error?' + query())).json();
+  $('error').textContent = 'error against prt reference: ' + (100 * e.error).toFixed(2) + ' % RMS over ' + e.vertices +
+    ' vertices (' + $('basis').value + (($('basis').value === 'sh') ? ' lmax ' + e.lmax : '') + ', ' + $('mode').value +
+    ', the light unturned); the reference\'s own error ' + (100 * e.reference_error).toFixed(2) + ' % at ' + e.samples +
+    ' directions a vertex';
+  view.error = e;
+}
+
+async function measure() {
+  const mode = $('mode').value, env = $('env').value;
+  await fetch('/reference?mode=' + mode + '&env=' + env, { method: 'POST' });
+  for (;;) {
+    const state = await (await fetch('/state')).json();
+    const ref = state.references.find((x) => x.key === mode + ' ' + env);
+    if (ref && ref.state !== 'measuring') break;
+    const p = state.progress;
+    $('error').textContent = 'measuring prt reference' + (p.active ? ': ' + p.label + ' ' + Math.round(100 * p.fraction) + ' %' : '') + ' ...';
+    await new Promise((r) => setTimeout(r, 250));
+  }
+  view.errorSetting = null;
+  updateError();
+}
+
 function changed() {
   view.dirty = true;
   if (view.pendingInput === null) view.pendingInput = performance.now();
@@ -84,6 +123,7 @@ function changed() {
   $('lmaxtext').textContent = $('lmax').value;
   $('exposuretext').textContent = Number($('exposure').value).toFixed(1);
   $('save').href = '/frame.png?' + query();
+  updateError();
 }
 
 function median(xs) {
@@ -201,6 +241,7 @@ function setupControls() {
     $('play').textContent = view.playing ? 'pause' : 'play';
   });
   $('reset').addEventListener('click', () => { view.q = [0, 0, 0, 1]; changed(); });
+  $('measure').addEventListener('click', measure);
   $('showcommand').addEventListener('click', async () => {
     $('command').value = (await (await fetch('/command?' + query())).text()).trim();
   });
