@@ -9,12 +9,16 @@
 // README writes it and then holds every case's figure to its own limits.
 #include <doctest/doctest.h>
 
+#include <csignal>
 #include <filesystem>
+
+#include <sys/wait.h>
 #include <string>
 
 #include "core/atomic_file.h"
 #include "tests/readme_commands.h"
 #include "tests/test_support.h"
+#include "tests/view/view_process.h"
 
 namespace prt {
 namespace {
@@ -26,6 +30,7 @@ enum class Group {
   kCourse,     ///< names $GAMES202: the course's framework
   kSamples,    ///< reads or writes out/samples, the sample files
   kReport,     ///< prt report (not --stability)
+  kView,       ///< prt view: serves until Ctrl-C
   kOther,      ///< everything else
 };
 
@@ -33,6 +38,7 @@ Group GroupOf(const std::string& command) {
   if (command.find("$GAMES202") != std::string::npos) return Group::kCourse;
   if (command.find("out/samples") != std::string::npos) return Group::kSamples;
   if (command.find("prt report") != std::string::npos) return Group::kReport;
+  if (command.find("prt view") != std::string::npos) return Group::kView;
   return Group::kOther;
 }
 
@@ -75,6 +81,25 @@ TEST_SUITE("readme") {
     const std::string clone = test::MakeReadmeClone("readme_other");
     CHECK(RunReadmeCommands(clone, Group::kOther) >= 5);
     CHECK(fs::exists(clone + "/out/diff.png"));
+  }
+
+  TEST_CASE("readme: prt view runs as written, serves its page and a frame, and ends on Ctrl-C") {
+    const std::string clone = test::MakeReadmeClone("readme_view");
+    int ran = 0;
+    for (const std::string& command : test::ReadmeCommands()) {
+      if (GroupOf(command) != Group::kView) continue;
+      INFO(command);
+      test::ViewProcess view = test::ViewProcess::Shell(command, clone, clone + "/view_stderr.txt");
+      CHECK(test::Request(view.port(), "/").status == 200);
+      const test::HttpReply frame = test::Request(view.port(), "/frame");
+      CHECK(frame.status == 200);
+      CHECK(frame.body.size() == 640u * 480u * 3u);
+      const int status = view.Stop(SIGINT);
+      CHECK(WIFSIGNALED(status));
+      CHECK(WTERMSIG(status) == SIGINT);
+      ++ran;
+    }
+    CHECK(ran >= 1);
   }
 
   TEST_CASE("readme: the course commands run against the course's framework" * test::NeedsSharedData()) {

@@ -22,6 +22,16 @@ namespace prt::test {
 ViewProcess::ViewProcess(const std::vector<std::string>& args, const std::string& log) {
   std::vector<std::string> all = {PrtBinary(), "view"};
   all.insert(all.end(), args.begin(), args.end());
+  Start(all, log, "");
+}
+
+ViewProcess ViewProcess::Shell(const std::string& command, const std::string& dir, const std::string& log) {
+  ViewProcess p;
+  p.Start({"/bin/bash", "-c", "exec " + command}, log, dir);
+  return p;
+}
+
+void ViewProcess::Start(std::vector<std::string> all, const std::string& log, const std::string& dir) {
   std::vector<char*> argv;
   for (auto& a : all) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -34,6 +44,7 @@ ViewProcess::ViewProcess(const std::vector<std::string>& args, const std::string
     const int err = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (err >= 0) ::dup2(err, 2);
     ::close(out[0]);
+    if (!dir.empty() && ::chdir(dir.c_str()) != 0) ::_exit(126);
     ::execv(binary.c_str(), argv.data());
     ::_exit(127);
   }

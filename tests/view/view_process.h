@@ -14,9 +14,15 @@ class ViewProcess {
   /// Starts `prt view ARGS...` (stderr into `log`, stdout read for the address line); waits for
   /// the address for up to five minutes. FAILs the test when none comes.
   ViewProcess(const std::vector<std::string>& args, const std::string& log);
+  /// Runs `command` with bash in folder `dir` instead (a README command, as a user types it).
+  static ViewProcess Shell(const std::string& command, const std::string& dir, const std::string& log);
   ~ViewProcess();  ///< SIGKILL if still running
   ViewProcess(const ViewProcess&) = delete;
   ViewProcess& operator=(const ViewProcess&) = delete;
+  ViewProcess(ViewProcess&& other) noexcept
+      : pid_(other.pid_), port_(other.port_), address_(std::move(other.address_)) {
+    other.pid_ = -1;
+  }
 
   int port() const { return port_; }
   int pid() const { return pid_; }
@@ -25,6 +31,9 @@ class ViewProcess {
   int Stop(int signal);
 
  private:
+  ViewProcess() = default;
+  void Start(std::vector<std::string> argv, const std::string& log, const std::string& dir);
+
   int pid_ = -1;
   int port_ = 0;
   std::string address_;
