@@ -86,7 +86,9 @@ run_tsan() {
   # that still has a thread (prt's signal watcher), to catch races with threads still running;
   # that second was most of the suite (a test that runs prt 40 times took 43 s, 0.9 s without
   # it). prt joins its workers before it exits, and its tests check what they leave behind.
-  export TSAN_OPTIONS=halt_on_error=1:second_deadlock_stack=1:atexit_sleep_ms=0
+  # suppressions: the interceptors that Debian's uninstrumented cpp-httplib calls, for prt view
+  # (scripts/tsan-suppressions.txt says why).
+  export TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:atexit_sleep_ms=0:suppressions=$PWD/scripts/tsan-suppressions.txt"
   run_suite "TSan" build-tsan "the modules with threaded code" "--label-regex ^($THREADED)$" "$@"
 }
 
