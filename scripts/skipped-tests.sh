@@ -2,7 +2,8 @@
 # bash scripts/skipped-tests.sh CTEST_OUTPUT
 # One line: how many tests CTest's output (a run of the suite) reports as skipped, and what they
 # lack. A test is skipped, never passed, when what it compares with is absent (tests/README.md):
-# the course's files in ../shared/data (a user's clone does not have them), ffmpeg, cmark-gfm.
+# the course's files in ../shared/data (a user's clone does not have them), ffmpeg, cmark-gfm,
+# chromium and python3 (which drives it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 skipped=$(grep -c '(Skipped)$' "$1" || true)
@@ -17,6 +18,8 @@ if [ "$data" = none ] || [ ! -d "$data" ]; then
 fi
 command -v ffmpeg >/dev/null || lacking+=("ffmpeg")
 command -v cmark-gfm >/dev/null || lacking+=("cmark-gfm")
+command -v chromium >/dev/null || lacking+=("chromium")
+command -v python3 >/dev/null || lacking+=("python3")
 reason="what they compare with"
 if [ ${#lacking[@]} -gt 0 ]; then
   reason=$(printf '%s, ' "${lacking[@]}")

@@ -256,7 +256,7 @@ TEST_SUITE("app") {
     CHECK(none.exit_code == 0);
     CHECK(none.out == "tests: none skipped\n");
     // What is lacking, each by its own check, on a PATH that holds only what the script needs
-    // (and, the second time, stand-ins for ffmpeg and cmark-gfm).
+    // (and, the second time, stand-ins for ffmpeg, cmark-gfm, chromium and python3).
     const std::string log = tree + "/build/suite.log", tools = tree + "/tools";
     fs::create_directories(tools);
     for (const char* tool : {"grep", "dirname"}) {
@@ -272,14 +272,40 @@ TEST_SUITE("app") {
     };
     const std::string missing = tree + "/no-such-data";
     CHECK(lacking(missing) == "tests: 2 skipped, not passed, for want of the course's files (../shared/data, beside the "
-                              "clone; a fresh clone does not have them), ffmpeg, cmark-gfm; tests/README.md says what "
-                              "each needs\n");
-    for (const char* tool : {"ffmpeg", "cmark-gfm"}) {
+                              "clone; a fresh clone does not have them), ffmpeg, cmark-gfm, chromium, python3; "
+                              "tests/README.md says what each needs\n");
+    for (const char* tool : {"ffmpeg", "cmark-gfm", "chromium", "python3"}) {
       std::ofstream(tools + "/" + tool) << "#!/bin/sh\n";
       fs::permissions(tools + "/" + tool, fs::perms::owner_all);
     }
     CHECK(lacking(tree) == "tests: 2 skipped, not passed, for want of what they compare with; tests/README.md says what "
                            "each needs\n");
+  }
+
+  TEST_CASE("install-deps: what it installs to build, and to test (ffmpeg, cmark-gfm, chromium, python3)") {
+    // As a user who is not root on a machine that has none of them: the script names what is
+    // missing and stops, which shows its lists without installing anything.
+    const std::string tree = test::ScratchDir("install_deps"), bin = tree + "/bin";
+    fs::create_directories(bin);
+    std::ofstream(bin + "/dpkg-query") << "#!/bin/sh\nexit 1\n";
+    std::ofstream(bin + "/id") << "#!/bin/sh\necho 1000\n";
+    for (const char* tool : {"/dpkg-query", "/id"}) fs::permissions(bin + tool, fs::perms::owner_all);
+    const auto missing = [&](const std::string& argument) {
+      const auto r = test::RunCommand("PATH=" + Q(bin) + ":\"$PATH\" bash " + Q(test::SourceDir() + "/scripts/install-deps.sh") +
+                                      " " + argument);
+      CHECK(r.exit_code == 1);
+      return r.err.substr(0, r.err.find('\n'));
+    };
+    const std::string build = missing(""), test_set = missing("test");
+    for (const char* package : {"g++", "cmake", "libglm-dev", "libopenexr-dev", "libcpp-httplib-dev"}) {
+      CHECK(build.find(std::string(" ") + package) != std::string::npos);
+      CHECK(test_set.find(std::string(" ") + package) != std::string::npos);
+    }
+    for (const char* package : {"ffmpeg", "cmark-gfm", "chromium", "python3"}) {
+      CAPTURE(package);
+      CHECK(build.find(std::string(" ") + package) == std::string::npos);
+      CHECK(test_set.find(std::string(" ") + package) != std::string::npos);
+    }
   }
 
   TEST_CASE("ci run: its phase table holds the steps of the scripts it calls, and its last line says how it ended") {

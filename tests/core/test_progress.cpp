@@ -23,4 +23,31 @@ TEST_SUITE("core") {
     CHECK(prt::TimeLeft(std::numeric_limits<double>::quiet_NaN(), 5.0).empty());
     CHECK(prt::TimeLeft(0.5, -1.0).empty());
   }
+
+  TEST_CASE("LatestProgress: the newest bar's label and fraction, whether drawn or not, until it ends") {
+    {
+      prt::Progress outer("outer work", 4);
+      outer.Advance(1);
+      prt::ProgressReading r = prt::LatestProgress();
+      CHECK(r.active);
+      CHECK(r.label == "outer work");
+      CHECK(r.fraction == 0.25);
+      {
+        prt::Progress inner("inner work", 10);
+        inner.Advance(3);
+        outer.Advance(1);  // an older bar does not take the reading back
+        r = prt::LatestProgress();
+        CHECK(r.label == "inner work");
+        CHECK(r.fraction == doctest::Approx(0.3).epsilon(1e-12));
+        inner.Advance(20);
+        CHECK(prt::LatestProgress().fraction == 1.0);  // never past the whole
+      }
+      CHECK_FALSE(prt::LatestProgress().active);  // the newest ended
+    }
+    CHECK_FALSE(prt::LatestProgress().active);
+    prt::Progress last("last", 8);
+    last.Advance(8);
+    CHECK(prt::LatestProgress().fraction == 1.0);
+    CHECK(prt::LatestProgress().active);
+  }
 }
