@@ -40,7 +40,7 @@ PreparedBasis PrepareSh(const BasisInputs& in) {
   PreparedBasis prepared;
   prepared.light = MakeShFrameLight(data->transport, in.light, in.axis, compressed ? &data->cpca : nullptr);
   const ShData* kept = data.get();
-  prepared.relight = [kept, compressed](const Environment&, const ShRgb& light, const glm::dvec3& axis) {
+  prepared.relight = [kept, compressed](const Environment&, const ShRgb& light, const glm::dvec3& axis, int) {
     return MakeShFrameLight(kept->transport, light, axis, compressed ? &kept->cpca : nullptr);
   };
   const AxisRotation rotation(in.axis, data->transport.lmax);
@@ -58,7 +58,7 @@ PreparedBasis PrepareShLight(const BasisInputs& in) {
   PreparedBasis prepared;
   prepared.light = MakeShFrameLight(*transport, in.light, in.axis);
   const Transport* kept = transport.get();
-  prepared.relight = [kept](const Environment&, const ShRgb& light, const glm::dvec3& axis) {
+  prepared.relight = [kept](const Environment&, const ShRgb& light, const glm::dvec3& axis, int) {
     return MakeShFrameLight(*kept, light, axis);
   };
   prepared.transport = std::move(transport);
@@ -75,8 +75,8 @@ PreparedBasis PrepareWavelet(const BasisInputs& in) {
                                          in.scene.wavelet.light_selection);
   const WaveletTransport* kept = transport.get();
   const WaveletOptions w = in.scene.wavelet;
-  prepared.relight = [kept, w](const Environment& env, const ShRgb& light, const glm::dvec3& axis) {
-    return MakeWaveletFrameLight(*kept, env, light, axis, w.light_terms, w.light_selection);
+  prepared.relight = [kept, w](const Environment& env, const ShRgb& light, const glm::dvec3& axis, int terms) {
+    return MakeWaveletFrameLight(*kept, env, light, axis, terms, w.light_selection);
   };
   Summary("rotation: the environment turned and spread onto the wavelet cube each frame (its energy kept exactly, "
           "a compact source's light moving smoothly between texels: wavelet/light_cube.h)" +
@@ -94,8 +94,8 @@ PreparedBasis PrepareWaveletLight(const BasisInputs& in) {
                                          in.scene.wavelet.light_selection);
   const WaveletTransport* kept = transport.get();
   const WaveletOptions w = in.scene.wavelet;
-  prepared.relight = [kept, w](const Environment& env, const ShRgb& light, const glm::dvec3& axis) {
-    return MakeWaveletFrameLight(*kept, env, light, axis, w.light_terms, w.light_selection);
+  prepared.relight = [kept, w](const Environment& env, const ShRgb& light, const glm::dvec3& axis, int terms) {
+    return MakeWaveletFrameLight(*kept, env, light, axis, terms, w.light_selection);
   };
   prepared.transport = std::move(transport);
   return prepared;

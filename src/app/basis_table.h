@@ -47,10 +47,12 @@ struct PreparedBasis {
   std::shared_ptr<const void> transport;
   std::unique_ptr<FrameLight> light;
   /// Another frame light of the same transport: under environment `env` (whose SH projection is
-  /// `light`) turning about `axis` (prt view: a light dragged about any axis, another --env, SH
-  /// bands above a lower lmax zeroed in `light`). `env` must outlive the result, and the result
-  /// must not outlive `transport`.
-  std::function<std::unique_ptr<FrameLight>(const Environment& env, const ShRgb& light, const glm::dvec3& axis)>
+  /// `light`) turning about `axis`, the wavelet light keeping its `light_terms` most important
+  /// coefficients each frame (0: all; SH has no such terms and ignores it). prt view: a light
+  /// dragged about any axis, another --env, SH bands above a lower lmax zeroed in `light`, another
+  /// --light-terms. `env` must outlive the result, and the result must not outlive `transport`.
+  std::function<std::unique_ptr<FrameLight>(const Environment& env, const ShRgb& light, const glm::dvec3& axis,
+                                            int light_terms)>
       relight;
 };
 

@@ -21,7 +21,7 @@ const std::vector<std::string> kViewRenderOptions = {"--size",  "--axis", "--sta
 const std::set<std::string> kNotRepeated = {"--lmax", "--transport", "--basis", "--env", "--samples",
                                             "--hidden-samples", "--size", "--axis", "--start-angle", "--tonemap",
                                             "--exposure", "--ssaa", "--view", "--eye", "--target", "--up", "--fov",
-                                            "--cache", "--port", "--bind", "--quiet", "--threads",
+                                            "--cache", "--port", "--bind", "--quiet", "--threads", "--light-terms",
                                             "--reference-samples"};
 
 SceneOptions ViewSceneDefaults() {

@@ -83,6 +83,7 @@ ViewScene::ViewScene(ViewSetup setup) : setup_(std::move(setup)) {
   limits_.modes = kModes;
   limits_.environments = static_cast<int>(envs_.size());
   limits_.coefficients = CoeffCount(setup_.scene.lmax);
+  limits_.light_terms = 6 * setup_.scene.wavelet.face_size * setup_.scene.wavelet.face_size;
   limits_.camera_moves = !setup_.scene.material.glossy;
 
   defaults_.draw = setup_.draw;
@@ -93,6 +94,7 @@ ViewScene::ViewScene(ViewSetup setup) : setup_(std::move(setup)) {
   defaults_.lmax = setup_.scene.lmax;
   defaults_.basis = setup_.scene.basis->name;
   defaults_.mode = setup_.scene.transport;
+  defaults_.light_terms = setup_.scene.wavelet.light_terms;
 
   auto first = std::make_shared<Prepared>();
   prepared_[Key(defaults_.basis, defaults_.mode)] = first;
@@ -193,12 +195,13 @@ Image8 ViewScene::Frame(const FrameRequest& request, double* draw_ms) {
   const int computed = slot->scene.lmax;
   const int lmax = sh ? std::min(request.lmax, computed) : computed;
   const std::string key = Key(request.basis, request.mode) + " " + std::to_string(request.env) + " " +
-                          std::to_string(lmax) + " " + ViewName(request.draw.view) + " " + Vec(request.draw.axis);
+                          std::to_string(lmax) + " " + ViewName(request.draw.view) + " " + Vec(request.draw.axis) +
+                          " " + std::to_string(request.light_terms);
   if (key != light_key_ || !light_) {
     // Bands above lmax zeroed: the frame of a transport computed at lmax.
     ShRgb light = Light(request.env, lmax, request.draw.view, slot->scene);
     light.resize(CoeffCount(computed), glm::dvec3(0.0));
-    light_ = slot->basis.relight(*envs_[request.env], light, request.draw.axis);
+    light_ = slot->basis.relight(*envs_[request.env], light, request.draw.axis, request.light_terms);
     light_key_ = key;
   }
   const Camera camera = ChooseCamera(mesh_, request.draw);
@@ -262,12 +265,13 @@ std::string ViewScene::ErrorJson(const FrameRequest& r) {
   const bool sh = slot->scene.basis->windowed_light;
   const int computed = slot->scene.lmax;
   const int lmax = sh ? std::min(r.lmax, computed) : computed;
-  const std::string key = Key(r.basis, r.mode) + " " + std::to_string(r.env) + " " + std::to_string(lmax);
+  const std::string key =
+      Key(r.basis, r.mode) + " " + std::to_string(r.env) + " " + std::to_string(lmax) + " " + std::to_string(r.light_terms);
   if (const auto it = errors_.find(key); it != errors_.end()) return it->second;
   // This setting's radiance per vertex, the light unturned, against the reference's.
   ShRgb light = Light(r.env, lmax, View::kRadiance, slot->scene);
   light.resize(CoeffCount(computed), glm::dvec3(0.0));
-  const std::unique_ptr<FrameLight> frame_light = slot->basis.relight(*envs_[r.env], light, defaults_.draw.axis);
+  const std::unique_ptr<FrameLight> frame_light = slot->basis.relight(*envs_[r.env], light, defaults_.draw.axis, r.light_terms);
   frame_light->Turn(0.0);
   const glm::dvec3 eye(camera_.eye);
   const std::vector<glm::vec3> shaded = frame_light->Shade(mesh_, true, &eye);
@@ -292,8 +296,12 @@ std::string ViewScene::Command(const FrameRequest& r) const {
   const SceneOptions scene = SceneOf(r.basis, r.mode);
   const bool sh = scene.basis->windowed_light;
   const RenderOptions& d = r.draw;
-  line += " --basis " + r.basis + " --transport " + r.mode + " --lmax " + std::to_string(sh ? r.lmax : scene.lmax) +
+  // The transport view shows coefficient K whatever the light's lmax: render computes its band.
+  int lmax = sh ? r.lmax : scene.lmax;
+  if (d.view == View::kTransport) lmax = std::max(lmax, static_cast<int>(std::sqrt(double(d.transport_index))));
+  line += " --basis " + r.basis + " --transport " + r.mode + " --lmax " + std::to_string(lmax) +
           " --env " + ShellWord(setup_.envs[r.env]);
+  if (!sh) line += " --light-terms " + std::to_string(r.light_terms);
   if (sh && r.mode != "unshadowed")
     line += " --samples " + std::to_string(scene.samples) + " --hidden-samples " + std::to_string(scene.samples);
   line += " --axis " + Vec(d.axis) + Formatted(" --start-angle %.9g", d.start_degrees) + " --view " +
@@ -332,6 +340,7 @@ std::string ViewScene::StateJson() const {
   return "{\"limits\":{\"lmax\":" + std::to_string(limits_.lmax) + ",\"bases\":" + JsonList(limits_.bases) +
          ",\"modes\":" + JsonList(limits_.modes) + ",\"environments\":" + JsonList(env_names) +
          ",\"coefficients\":" + std::to_string(limits_.coefficients) +
+         ",\"light_terms\":" + std::to_string(limits_.light_terms) +
          ",\"camera_moves\":" + (limits_.camera_moves ? "true" : "false") + "},\"defaults\":{\"query\":" +
          JsonString(FrameQuery(defaults_)) + ",\"eye\":[" + Vec(*d.eye) + "],\"target\":[" + Vec(*d.target) +
          "],\"up\":[" + Vec(*d.up) + "],\"fov\":" + Formatted("%.9g", *d.fov) +

@@ -7,7 +7,8 @@
 ///   lmax L <= the bands computed   the light's bands above L zeroed: SH bands nest, so this is
 ///                                   the frame of a transport computed at L with the same
 ///                                   directions (the command line gives them: --samples)
-///   another axis, env or lmax       a new frame light of the same transport (PreparedBasis::relight)
+///   another axis, env, lmax or      a new frame light of the same transport (PreparedBasis::relight)
+///   wavelet light terms
 ///   another basis or mode           that transport computed in the background on first use
 ///                                   (409 for its frames meanwhile, progress in /state), then kept
 ///   the error against prt reference the reference's per-vertex radiance under the unturned

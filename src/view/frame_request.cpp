@@ -17,6 +17,9 @@ namespace {
 /// The largest frame side the page may ask for, in pixels.
 constexpr int kMaxSide = 4096;
 constexpr int kMaxSsaa = 4;
+/// The most samples a frame may take, width x height x ssaa^2: what a 4096 x 4096 frame takes
+/// without supersampling (its buffers about 0.5 GB).
+constexpr double kMaxSamples = 4096.0 * 4096.0;
 
 [[noreturn]] void Refuse(const std::string& name, const std::string& value, const std::string& expected) {
   throw Error(name + "=" + value + ": refused (expected " + expected + ")");
@@ -115,9 +118,13 @@ FrameRequest ParseFrameRequest(const std::vector<std::pair<std::string, std::str
     else if (name == "fov") d.fov = Number(name, value, 1, 179);
     else if (name == "size") ReadSize(value, d);
     else if (name == "ssaa") d.ssaa = Integer(name, value, 1, kMaxSsaa);
+    else if (name == "terms") r.light_terms = Integer(name, value, 0, limits.light_terms);
     else throw Error(name + ": unknown parameter (expected axis, angle, lmax, basis, mode, env, view, exposure, "
-                            "tonemap, eye, target, up, fov, size, ssaa)");
+                            "tonemap, eye, target, up, fov, size, ssaa, terms)");
   }
+  if (double(d.width) * d.height * d.ssaa * d.ssaa > kMaxSamples)
+    throw Error("size=" + std::to_string(d.width) + "x" + std::to_string(d.height) + "&ssaa=" + std::to_string(d.ssaa) +
+                ": refused (expected width x height x ssaa^2 at most 4096^2 samples)");
   if (d.eye && d.target && glm::length(*d.eye - *d.target) < 1e-9) throw Error("eye: the same point as target");
   if (!limits.camera_moves && (seen.count("eye") || seen.count("target") || seen.count("up") || seen.count("fov")) &&
       (d.eye != defaults.draw.eye || d.target != defaults.draw.target || d.up != defaults.draw.up ||
@@ -137,7 +144,8 @@ std::string FrameQuery(const FrameRequest& r) {
   if (d.target) q += "&target=" + Vec(*d.target);
   if (d.up) q += "&up=" + Vec(*d.up);
   if (d.fov) q += Formatted("&fov=%.17g", *d.fov);
-  q += "&size=" + std::to_string(d.width) + "x" + std::to_string(d.height) + "&ssaa=" + std::to_string(d.ssaa);
+  q += "&size=" + std::to_string(d.width) + "x" + std::to_string(d.height) + "&ssaa=" + std::to_string(d.ssaa) +
+       "&terms=" + std::to_string(r.light_terms);
   return q;
 }
 

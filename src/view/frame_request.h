@@ -12,7 +12,8 @@
 ///   view=V                     radiance | irradiance | albedo | light | glossy | transport:K
 ///   exposure=EV tonemap=CURVE  -20..20; srgb | reinhard | aces
 ///   eye=, target=, up=X,Y,Z fov=DEGREES   the camera (fov 1..179)
-///   size=WxH ssaa=K            16..4096 each; 1..4
+///   terms=K                    the wavelet light's coefficients kept per frame, 0 (all)..6 F^2
+///   size=WxH ssaa=K            16..4096 each; 1..4; W x H x K^2 at most 4096^2 samples
 
 #include <string>
 #include <utility>
@@ -29,6 +30,7 @@ struct ViewLimits {
   std::vector<std::string> modes;   ///< transport modes offered
   int environments = 1;
   int coefficients = 9;             ///< transport:K takes K below this
+  int light_terms = 0;              ///< terms=K takes K up to this (the wavelet cube's coefficients)
   bool camera_moves = true;         ///< false: a glossy transfer computed for one eye
 };
 
@@ -37,6 +39,7 @@ struct FrameRequest {
   int lmax = 2;
   std::string basis, mode;
   int env = 0;
+  int light_terms = 0;  ///< the wavelet light's terms kept per frame (0: all)
 };
 
 /// `defaults` with the parameters of `query` (name, value pairs in order) applied and checked.

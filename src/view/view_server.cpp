@@ -20,6 +20,9 @@ namespace {
 constexpr int kTimeoutSeconds = 5;
 /// The largest request body accepted: the page sends none.
 constexpr std::size_t kMaxBody = 1024;
+/// Threads serving connections: a page keeps one or two busy, so 32 leave room for 30 stalled
+/// clients before another waits for a timeout.
+constexpr std::size_t kPoolThreads = 32;
 
 void Text(httplib::Response& res, int status, const std::string& text) {
   res.status = status;
@@ -43,7 +46,10 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
   s.set_read_timeout(kTimeoutSeconds, 0);
   s.set_write_timeout(kTimeoutSeconds, 0);
   s.set_payload_max_length(kMaxBody);
-  s.set_keep_alive_max_count(10000);
+  s.set_keep_alive_max_count(10000);  // the page asks for frame after frame on one connection
+  // Each connection holds a pool thread while it is read or written: enough of them that clients
+  // which stall (each dropped after its timeout) leave threads for the others.
+  s.new_task_queue = [] { return new httplib::ThreadPool(kPoolThreads); };
   // The library's default, SO_REUSEPORT, would let a second server share the port and take half
   // its connections: SO_REUSEADDR alone lets a restart take the port of one just ended, no more.
   s.set_socket_options([](int sock) {

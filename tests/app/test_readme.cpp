@@ -91,6 +91,10 @@ TEST_SUITE("readme") {
       INFO(command);
       test::ViewProcess view = test::ViewProcess::Shell(command, clone, clone + "/view_stderr.txt");
       CHECK(test::Request(view.port(), "/").status == 200);
+      // Its defaults as docs/CLI.md gives them: lmax 4, SH, shadowed.
+      const std::string state = test::Request(view.port(), "/state").body;
+      CHECK(state.find("\"limits\":{\"lmax\":4,\"bases\":[\"sh\",\"wavelet\"]") != std::string::npos);
+      CHECK(state.find("mode=shadowed&") != std::string::npos);
       const test::HttpReply frame = test::Request(view.port(), "/frame");
       CHECK(frame.status == 200);
       CHECK(frame.body.size() == 640u * 480u * 3u);

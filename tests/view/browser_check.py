@@ -8,6 +8,7 @@ failures on stderr.
     python3 browser_check.py PRT_BINARY MESH.obj SCRATCH_DIR
 """
 import base64
+import math
 import os
 import re
 import shlex
@@ -25,6 +26,29 @@ DEGREES_PER_PIXEL = 0.5
 SAME_FRAME = 1
 
 failures = []
+
+
+def normalize(v):
+    n = math.sqrt(sum(x * x for x in v))
+    return [x / n for x in v]
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def rotation(axis, degrees):
+    """The matrix that turns by `degrees` about `axis` (right-handed), by Rodrigues' formula."""
+    x, y, z = normalize(axis)
+    t = math.radians(degrees)
+    c, s, k = math.cos(t), math.sin(t), 1 - math.cos(t)
+    return [[c + x * x * k, x * y * k - z * s, x * z * k + y * s],
+            [y * x * k + z * s, c + y * y * k, y * z * k - x * s],
+            [z * x * k - y * s, z * y * k + x * s, c + z * z * k]]
+
+
+def matmul(a, b):
+    return [[sum(a[i][k] * b[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
 
 
 def check(ok, what):
@@ -73,7 +97,7 @@ def render_command(prt, page, out):
 def main():
     prt, mesh, scratch = sys.argv[1:4]
     view = subprocess.Popen([prt, "view", "--mesh", mesh, "--lmax", "3", "--samples", "256", "--size", "320x240",
-                             "--port", "0"], stdout=subprocess.PIPE, stderr=open(os.path.join(scratch, "view.txt"), "w"),
+                             "--start-angle", "10", "--port", "0"], stdout=subprocess.PIPE, stderr=open(os.path.join(scratch, "view.txt"), "w"),
                             text=True)
     try:
         address = view.stdout.readline().strip()
@@ -84,6 +108,12 @@ def main():
             page.wait_for("!prtView.dirty && !prtView.inflight")
             browser.pump(0.5)
             check(page.errors() == [], "the page loads and draws with no console error: %s" % page.errors())
+            first = page.evaluate("prtView.lastQuery")
+            state = page.evaluate("prtView.state.defaults")
+            check("angle=10&" in first and "axis=0%2C1%2C0&" in first,
+                  "the first frame is the command line's light, --start-angle 10: " + first)
+            check(("exposure=%s&" % state["exposure"]) in first or ("exposure=%g&" % state["exposure"]) in first,
+                  "the first frame has the measured exposure %s: %s" % (state["exposure"], first))
 
             # A drag: 90 px to the right over the canvas, in steps, as a hand does.
             box = page.evaluate("(() => { const r = document.getElementById('frame').getBoundingClientRect();"
@@ -96,14 +126,14 @@ def main():
             page.mouse("mouseReleased", x0 + 90, y0)
             settled(page, drawn)
             turn = page.evaluate("axisAngle()")
-            check(abs(turn["angle"] - 90 * DEGREES_PER_PIXEL) < 1e-9 and
+            check(abs(turn["angle"] - (10 + 90 * DEGREES_PER_PIXEL)) < 1e-9 and
                   max(abs(a - b) for a, b in zip(turn["axis"], [0, 1, 0])) < 1e-12,
-                  "a 90 px drag turned the light by 45 degrees about the camera's up: %s" % turn)
+                  "a 90 px drag turned the light by 45 degrees about the camera's up, from 10 to 55: %s" % turn)
             query = page.evaluate("prtView.lastQuery")
-            check("angle=45&" in query and "axis=0%2C1%2C0&" in query, "the frame drawn is that turn's: " + query)
+            check("angle=55&" in query and "axis=0%2C1%2C0&" in query, "the frame drawn is that turn's: " + query)
             canvas_png(page, os.path.join(scratch, "page_turned.png"))
             frame, line = render_command(prt, page, os.path.join(scratch, "render_turned"))
-            check("--start-angle 45 " in line and "--axis 0,1,0 " in line, "the command line says the turn: " + line)
+            check("--start-angle 55 " in line and "--axis 0,1,0 " in line, "the command line says the turn: " + line)
             diff = max_difference(prt, os.path.join(scratch, "page_turned.png"), frame)
             check(diff <= SAME_FRAME, "the page's picture is prt render's of the same light (max_abs %d)" % diff)
 
@@ -116,6 +146,15 @@ def main():
             settled(page, drawn)
             turn = page.evaluate("axisAngle()")
             check(abs(turn["axis"][1]) < 0.999, "a vertical drag turned the light about another axis: %s" % turn)
+            # The two drags compose as rotations: 45 degrees about up, then 20 about the camera's
+            # right, computed here with matrices, independently of the page's quaternions.
+            cam = page.evaluate("prtView.camera")
+            forward = normalize([t - e for t, e in zip(cam["target"], cam["eye"])])
+            right = normalize(cross(forward, cam["up"]))
+            expected = matmul(rotation(right, 40 * DEGREES_PER_PIXEL), rotation([0, 1, 0], 10 + 90 * DEGREES_PER_PIXEL))
+            got = rotation(turn["axis"], turn["angle"])
+            worst = max(abs(expected[i][j] - got[i][j]) for i in range(3) for j in range(3))
+            check(worst < 1e-9, "the drags composed: the page's rotation is up 55 then right 20 (off by %.2g)" % worst)
             canvas_png(page, os.path.join(scratch, "page_tilted.png"))
             frame, line = render_command(prt, page, os.path.join(scratch, "render_tilted"))
             diff = max_difference(prt, os.path.join(scratch, "page_tilted.png"), frame)
@@ -136,6 +175,30 @@ def main():
             changed = max_difference(prt, os.path.join(scratch, "page_lmax1.png"),
                                      os.path.join(scratch, "page_tilted.png"))
             check(changed > 5, "the lmax switch changed the picture (max_abs %d against lmax 3)" % changed)
+
+            # The transport view, coefficient 5, chosen on the page: render's --view transport:5.
+            drawn = page.evaluate("prtView.framesDrawn")
+            page.evaluate("(() => { document.getElementById('coef').value = '5'; const v = document.getElementById('view');"
+                          " v.value = 'transport'; v.dispatchEvent(new Event('input')); })()")
+            settled(page, drawn)
+            canvas_png(page, os.path.join(scratch, "page_transport5.png"))
+            frame, line = render_command(prt, page, os.path.join(scratch, "render_transport5"))
+            check(" --view transport:5 " in line, "the command line says --view transport:5: " + line)
+            diff = max_difference(prt, os.path.join(scratch, "page_transport5.png"), frame)
+            check(diff <= SAME_FRAME, "the transport view on the page is prt render's (max_abs %d)" % diff)
+            drawn = page.evaluate("prtView.framesDrawn")
+            page.evaluate("(() => { const v = document.getElementById('view'); v.value = 'radiance';"
+                          " v.dispatchEvent(new Event('input')); })()")
+            settled(page, drawn)
+
+            # Input to picture is timed from the oldest input a frame answers: two inputs 0.3 s
+            # apart while a frame is in flight, answered by one frame, count from the first.
+            page.evaluate("prtView.latencies.length = 0; prtView.inflight = true; changed()")
+            time.sleep(0.3)
+            page.evaluate("changed(); prtView.inflight = false")
+            page.wait_for("prtView.latencies.length >= 1")
+            first_latency = page.evaluate("prtView.latencies[0]")
+            check(first_latency >= 300, "input to picture counts from the oldest input (%.0f ms)" % first_latency)
 
             # The error figures: measured against prt reference on request, less error at more bands.
             page.evaluate("document.getElementById('measure').click()")

@@ -14,6 +14,7 @@ ViewLimits Limits() {
   l.modes = {"unshadowed", "shadowed", "interreflection"};
   l.environments = 2;
   l.coefficients = 25;
+  l.light_terms = 6144;
   return l;
 }
 
@@ -40,7 +41,7 @@ TEST_CASE("ParseFrameRequest reads every parameter into the frame it names") {
   const FrameRequest r = ParseFrameRequest(
       {{"axis", "1,2,3"}, {"angle", "-37.5"}, {"lmax", "2"}, {"basis", "wavelet"}, {"mode", "interreflection"},
        {"env", "1"}, {"view", "transport:24"}, {"exposure", "2.5"}, {"tonemap", "reinhard"}, {"eye", "1,2,3.5"},
-       {"target", "0,0,1"}, {"up", "0,0,1"}, {"fov", "50"}, {"size", "320x200"}, {"ssaa", "3"}},
+       {"target", "0,0,1"}, {"up", "0,0,1"}, {"fov", "50"}, {"size", "320x200"}, {"ssaa", "3"}, {"terms", "6144"}},
       Defaults(), Limits());
   CHECK(r.draw.axis == glm::dvec3(1, 2, 3));
   CHECK(r.draw.start_degrees == -37.5);
@@ -59,6 +60,7 @@ TEST_CASE("ParseFrameRequest reads every parameter into the frame it names") {
   CHECK(r.draw.width == 320);
   CHECK(r.draw.height == 200);
   CHECK(r.draw.ssaa == 3);
+  CHECK(r.light_terms == 6144);
   // Nothing given: the defaults as they are.
   const FrameRequest d = ParseFrameRequest({}, Defaults(), Limits());
   CHECK(d.lmax == 4);
@@ -100,7 +102,15 @@ TEST_CASE("ParseFrameRequest refuses what the run cannot draw, naming the parame
   CHECK_FALSE(refused({{"ssaa", "5"}}).empty());
   for (const char* size : {"15x100", "100x15", "4097x16", "16x4097", "100", "x100", "100x", "100.5x100", "axb"})
     CHECK_FALSE(refused({{"size", size}}).empty());
-  CHECK(ParseFrameRequest({{"size", "4096x16"}}, Defaults(), Limits()).draw.width == 4096);
+  CHECK(ParseFrameRequest({{"size", "4096x16"}, {"ssaa", "4"}}, Defaults(), Limits()).draw.width == 4096);
+  CHECK(ParseFrameRequest({{"size", "4096x4096"}, {"ssaa", "1"}}, Defaults(), Limits()).draw.width == 4096);
+  // Supersampling counts: a frame of more than 4096^2 samples is refused whatever its size.
+  CHECK(refused({{"size", "4096x4096"}, {"ssaa", "2"}}) ==
+        "size=4096x4096&ssaa=2: refused (expected width x height x ssaa^2 at most 4096^2 samples)");
+  CHECK_FALSE(refused({{"size", "2049x2048"}, {"ssaa", "2"}}).empty());
+  CHECK(ParseFrameRequest({{"size", "2048x2048"}, {"ssaa", "2"}}, Defaults(), Limits()).draw.ssaa == 2);
+  CHECK_FALSE(refused({{"terms", "6145"}}).empty());
+  CHECK_FALSE(refused({{"terms", "-1"}}).empty());
   CHECK(refused({{"lmax", "1"}, {"lmax", "1"}}) == "lmax: given twice (expected each parameter once)");
   CHECK(refused({{"colour", "red"}}).find("colour: unknown parameter") == 0);
   CHECK(refused({{"eye", "0,1.5,0"}}) == "eye: the same point as target");
@@ -132,6 +142,7 @@ TEST_CASE("FrameQuery writes what ParseFrameRequest reads back as the same frame
   r.draw.width = 300;
   r.draw.height = 17;
   r.draw.ssaa = 1;
+  r.light_terms = 77;
   std::vector<std::pair<std::string, std::string>> query;
   const std::string text = FrameQuery(r);
   for (std::size_t start = 0; start <= text.size();) {
@@ -158,6 +169,7 @@ TEST_CASE("FrameQuery writes what ParseFrameRequest reads back as the same frame
   CHECK(back.draw.width == 300);
   CHECK(back.draw.height == 17);
   CHECK(back.draw.ssaa == 1);
+  CHECK(back.light_terms == 77);
 }
 
 }  // TEST_SUITE

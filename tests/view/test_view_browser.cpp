@@ -16,7 +16,7 @@ TEST_CASE("prt view in chromium: no console error, a drag turns the light as ren
   CHECK(r.exit_code == 0);
   // Each check the script makes is named; none may be missing from its report.
   for (const char* said : {"no console error", "turned the light by 45 degrees", "prt render's of the same light",
-                           "still render's picture", "prt render --lmax 1", "changed the picture",
+                           "still render's picture", "the drags composed", "--start-angle 10", "the measured exposure", "the transport view on the page", "from the oldest input", "prt render --lmax 1", "changed the picture",
                            "shows its frame rate", "the page shows the error", "more bands, less error"})
     CHECK(r.err.find(said) != std::string::npos);
   CHECK(r.err.find("FAILED") == std::string::npos);

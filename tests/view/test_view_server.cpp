@@ -7,6 +7,7 @@
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
+#include <poll.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -34,6 +35,10 @@ Image8 RenderCommand(int port, const std::string& query, const std::string& out)
   while (!line.empty() && line.back() == '\n') line.pop_back();
   REQUIRE(line.rfind("prt render ", 0) == 0);
   CHECK(line.find(" --out out/view ") != std::string::npos);
+  // Every vertex takes the page's directions (256), those the camera sees and the others, whose
+  // bounces reach the seen ones.
+  if (query.find("basis=wavelet") == std::string::npos && query.find("mode=unshadowed") == std::string::npos)
+    CHECK(line.find(" --samples 256 --hidden-samples 256 ") != std::string::npos);
   // Into the test's folder, one frame: the frame the page showed is frame 0.
   line = line.substr(4) ;
   line = line.substr(0, line.find(" --out out/view")) + " --out " + Q(out) + " --frames 1 --quiet";
@@ -91,10 +96,14 @@ TEST_CASE("prt view serves its page, its state and frames, and refuses everythin
   CHECK(script.body.find("window.prtView") != std::string::npos);
   const HttpReply state = Request(port, "/state");
   CHECK(state.status == 200);
+  CHECK(state.Header("Content-Type") == "application/json");
   CHECK(state.body.find("\"lmax\":3") != std::string::npos);
   const HttpReply frame = Request(port, "/frame");
   CHECK(frame.status == 200);
   CHECK(frame.Header("X-Prt-Size") == "160x120");
+  CHECK(frame.Header("Content-Type") == "application/octet-stream");
+  CHECK(script.Header("Content-Type") == "text/javascript; charset=utf-8");
+  CHECK(Request(port, "/command").Header("Content-Type") == "text/plain; charset=utf-8");
   CHECK(frame.body.size() == 160u * 120u * 3u);
 
   // Never a file from disk, whatever the path says.
@@ -194,6 +203,18 @@ TEST_CASE("prt view's frames are the frames of the prt render command line it gi
     CHECK(MaxDifference(low, RenderCommand(port, "lmax=1", dir + "/lmax1")) <= kSameFrame);
   }
 
+  // The wavelet basis, all its light terms and eight of them: render's pictures, and not the same.
+  REQUIRE(Request(port, "/compute?basis=wavelet&mode=shadowed", "POST", origin).status == 202);
+  WaitReady(port, "wavelet shadowed");
+  for (const std::string terms : {"0", "8"}) {
+    const std::string query = "basis=wavelet&angle=25&terms=" + terms + (terms == "8" ? "&env=1" : "");
+    INFO(query);
+    fs::create_directories(dir + "/wavelet" + terms);
+    const Image8 page = FramePng(port, query, dir, "wavelet" + terms + ".png");
+    CHECK(MaxDifference(page, RenderCommand(port, query, dir + "/wavelet" + terms)) <= kSameFrame);
+  }
+  CHECK(MaxDifference(ReadPng(dir + "/wavelet0.png"), ReadPng(dir + "/wavelet8.png")) > 5);
+
   // Another mode: computed on request, then its frames are render's in that mode.
   REQUIRE(Request(port, "/compute?basis=sh&mode=unshadowed", "POST", origin).status == 202);
   WaitReady(port, "sh unshadowed");
@@ -201,6 +222,11 @@ TEST_CASE("prt view's frames are the frames of the prt render command line it gi
   const Image8 unshadowed = FramePng(port, "mode=unshadowed&angle=90", dir, "unshadowed.png");
   CHECK(MaxDifference(unshadowed, RenderCommand(port, "mode=unshadowed&angle=90", dir + "/unshadowed")) <= kSameFrame);
   CHECK(MaxDifference(unshadowed, FramePng(port, "angle=90", dir, "shadowed.png")) > 5);
+  REQUIRE(Request(port, "/compute?basis=sh&mode=interreflection", "POST", origin).status == 202);
+  WaitReady(port, "sh interreflection");
+  fs::create_directories(dir + "/bounced");
+  const Image8 bounced = FramePng(port, "mode=interreflection&angle=60", dir, "bounced.png");
+  CHECK(MaxDifference(bounced, RenderCommand(port, "mode=interreflection&angle=60", dir + "/bounced")) <= kSameFrame);
 }
 
 /// The number after `"name":` in a flat JSON object.
@@ -224,6 +250,7 @@ TEST_CASE("prt view's error figures: each setting against the prt reference it m
   for (int i = 0; i < 3000 && (reply = Request(port, "/error?lmax=0")).status == 409; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(100));
   REQUIRE(reply.status == 200);
+  CHECK(reply.Header("Content-Type") == "application/json");
   // More bands, less error (measured 43 %, 20 %, 16 %, 13 % under the sky's sun): the figure
   // follows the setting, not the frame.
   double last = 2.0;
@@ -241,6 +268,9 @@ TEST_CASE("prt view's error figures: each setting against the prt reference it m
   WaitReady(port, "wavelet shadowed");
   const double wavelet = JsonNumber(Request(port, "/error?basis=wavelet").body, "error");
   CHECK(wavelet < last / 4);
+  // Fewer of the light's wavelet terms, more error: the figure is the setting's.
+  const double few = JsonNumber(Request(port, "/error?basis=wavelet&terms=8").body, "error");
+  CHECK(few > 1.5 * wavelet);
   // The reference is prt reference's at the same directions: its own error as that command says.
   const HttpReply e = Request(port, "/error?lmax=3");
   const RunResult ref = RunPrt("reference --mesh " + Q(args[1]) + " --reference-samples 512 --size 32x24 --out " +
@@ -250,6 +280,10 @@ TEST_CASE("prt view's error figures: each setting against the prt reference it m
   REQUIRE(at != std::string::npos);
   const std::size_t open = ref.err.rfind('(', at);
   CHECK(std::stod(ref.err.substr(open + 1)) == doctest::Approx(100.0 * JsonNumber(e.body, "reference_error")).epsilon(2e-3));
+  // The command line of a view given --reference-samples runs (render has no such option).
+  fs::create_directories(dir + "/command");
+  CHECK(MaxDifference(FramePng(port, "lmax=2", dir, "lmax2.png"), RenderCommand(port, "lmax=2", dir + "/command")) <=
+        kSameFrame);
   // Another mode's reference is its own.
   CHECK(Request(port, "/error?mode=unshadowed").status == 409);
 }
@@ -306,6 +340,41 @@ TEST_CASE("prt view: a client that stalls or vanishes mid-frame stalls no other,
   CHECK(::kill(view.pid(), 0) == 0);  // still running
 }
 
+TEST_CASE("prt view: more stalled clients than a small pool has threads stall no one, and each is dropped in seconds") {
+  const std::string dir = ScratchDir("view_many_stalls");
+  ViewProcess view(SmallViewArgs(dir), dir + "/stderr.txt");
+  const int port = view.port();
+  // Twelve connections, each with half a request line, then nothing.
+  std::vector<int> stalled;
+  for (int i = 0; i < 12; ++i) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in addr{};
+    addr.sin_family = AF_INET;
+    addr.sin_port = htons(static_cast<std::uint16_t>(port));
+    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    REQUIRE(::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
+    REQUIRE(::send(fd, "GET /sta", 8, MSG_NOSIGNAL) == 8);
+    stalled.push_back(fd);
+  }
+  const auto start = std::chrono::steady_clock::now();
+  CHECK(Request(port, "/state").status == 200);
+  CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 3.0);
+  // The server closes each stalled connection once its read timeout (5 s) has passed: a recv
+  // that returns 0 (closed), well before the 20 s this waits.
+  for (const int fd : stalled) {
+    pollfd p{fd, POLLIN, 0};
+    const bool closed = ::poll(&p, 1, 20000) == 1 && [&] {
+      char c = 0;
+      return ::recv(fd, &c, 1, 0) <= 0;
+    }();
+    CHECK(closed);
+    ::close(fd);
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  CHECK(seconds > 3.0);   // not at once: the timeout, not a refusal
+  CHECK(seconds < 15.0);  // and not a timeout of minutes
+}
+
 TEST_CASE("prt view ends cleanly on SIGTERM and SIGINT, leaving only the cache it completed") {
   for (const int sig : {SIGTERM, SIGINT}) {
     INFO(sig);
@@ -356,7 +425,8 @@ TEST_CASE("prt view: --port, --bind and its other options are checked before any
   }
   // A port in use: a clear error, no address printed.
   ViewProcess first(SmallViewArgs(dir), dir + "/first.txt");
-  const RunResult taken = RunPrt("view --mesh " + Q(mesh) + " --samples 64 --lmax 1 --port " + std::to_string(first.port()));
+  const RunResult taken = RunCommand("timeout -s KILL 120 " + Q(PrtBinary()) + " view --mesh " + Q(mesh) +
+                                     " --samples 64 --lmax 1 --port " + std::to_string(first.port()));
   CHECK(taken.exit_code == 1);
   CHECK(taken.out.empty());
   CHECK(taken.err.find("--port " + std::to_string(first.port()) + ": cannot listen there") != std::string::npos);

@@ -61,7 +61,7 @@ function fmt(v) { return v.map((x) => Number(x.toPrecision(12))).join(','); }
 
 function query() {
   const { axis, angle } = axisAngle();
-  const d = view.state.defaults;
+  const s = view.state, d = s.defaults;
   let viewName = $('view').value;
   if (viewName === 'transport') viewName = 'transport:' + Math.max(0, Math.floor(Number($('coef').value) || 0));
   const params = [
@@ -69,7 +69,8 @@ function query() {
     ['basis', $('basis').value], ['mode', $('mode').value], ['env', $('env').value], ['view', viewName],
     ['exposure', $('exposure').value], ['tonemap', $('tonemap').value],
     ['eye', fmt(view.camera.eye)], ['target', fmt(view.camera.target)], ['up', fmt(view.camera.up)],
-    ['fov', String(view.camera.fov)], ['size', d.width + 'x' + d.height]];
+    ['fov', String(view.camera.fov)], ['size', d.width + 'x' + d.height],
+    ['terms', String(Math.min(s.limits.light_terms, Math.max(0, Math.floor(Number($('terms').value) || 0))))]];
   return params.map(([k, v]) => k + '=' + encodeURIComponent(v)).join('&');
 }
 
@@ -79,7 +80,7 @@ function status(text) { $('status').textContent = text; }
 // light unturned: the figure belongs to the setting, not to the frame).
 async function updateError() {
   const key = $('mode').value + ' ' + $('env').value;
-  const setting = key + ' ' + $('basis').value + ' ' + $('lmax').value;
+  const setting = key + ' ' + $('basis').value + ' ' + $('lmax').value + ' ' + $('terms').value;
   if (setting === view.errorSetting) return;
   view.errorSetting = setting;
   const state = await (await fetch('/state')).json();
@@ -219,6 +220,8 @@ function setupControls() {
   $('lmax').max = String(s.limits.lmax);
   $('lmax').value = initial.get('lmax');
   $('coef').max = String(s.limits.coefficients - 1);
+  $('terms').max = String(s.limits.light_terms);
+  $('terms').value = initial.get('terms');
   const v = initial.get('view');
   $('view').value = v.startsWith('transport:') ? 'transport' : v;
   if (v.startsWith('transport:')) $('coef').value = v.slice(10);
@@ -230,7 +233,7 @@ function setupControls() {
   view.q = quatAbout(view.axis, Number(initial.get('angle')));
   $('frame').width = d.width;
   $('frame').height = d.height;
-  for (const id of ['lmax', 'view', 'coef', 'exposure', 'tonemap', 'env']) $(id).addEventListener('input', changed);
+  for (const id of ['lmax', 'terms', 'view', 'coef', 'exposure', 'tonemap', 'env']) $(id).addEventListener('input', changed);
   for (const id of ['basis', 'mode']) $(id).addEventListener('change', ensureTransport);
   $('angle').addEventListener('input', () => {
     view.q = quatAbout(view.axis, Number($('angle').value));
