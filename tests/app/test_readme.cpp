@@ -95,6 +95,13 @@ TEST_SUITE("readme") {
       const std::string state = test::Request(view.port(), "/state").body;
       CHECK(state.find("\"limits\":{\"lmax\":4,\"bases\":[\"sh\",\"wavelet\"]") != std::string::npos);
       CHECK(state.find("mode=shadowed&") != std::string::npos);
+      // Its render command line gives every vertex the directions the page's vertices took
+      // (without --samples, the sample rule's: the hidden vertices' rule would take fewer).
+      const std::string line = test::Request(view.port(), "/command").body;
+      const std::size_t samples = line.find(" --samples "), hidden = line.find(" --hidden-samples ");
+      REQUIRE(samples != std::string::npos);
+      REQUIRE(hidden != std::string::npos);
+      CHECK(std::stoi(line.substr(samples + 11)) == std::stoi(line.substr(hidden + 18)));
       const test::HttpReply frame = test::Request(view.port(), "/frame");
       CHECK(frame.status == 200);
       CHECK(frame.body.size() == 640u * 480u * 3u);

@@ -360,10 +360,12 @@ TEST_CASE("prt view: more stalled clients than a small pool has threads stall no
   CHECK(Request(port, "/state").status == 200);
   CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 3.0);
   // The server closes each stalled connection once its read timeout (5 s) has passed: a recv
-  // that returns 0 (closed), well before the 20 s this waits.
+  // that returns 0 (closed), well before the 20 s this waits for all of them together.
+  const auto deadline = start + std::chrono::seconds(20);
   for (const int fd : stalled) {
     pollfd p{fd, POLLIN, 0};
-    const bool closed = ::poll(&p, 1, 20000) == 1 && [&] {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    const bool closed = ::poll(&p, 1, static_cast<int>(std::max<long>(0, left.count()))) == 1 && [&] {
       char c = 0;
       return ::recv(fd, &c, 1, 0) <= 0;
     }();
