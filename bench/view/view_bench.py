@@ -37,11 +37,11 @@ def say(key, value):
     print("%s=%s" % (key, value), flush=True)
 
 
-def page_fps(page, seconds):
+def page_fps(page, seconds, counter="prtView.framesDrawn"):
     """Frames drawn on the page per second over `seconds`, counted by the page itself."""
-    f0, t0 = page.evaluate("[prtView.framesDrawn, performance.now()]")
+    f0, t0 = page.evaluate("[%s, performance.now()]" % counter)
     time.sleep(seconds)
-    f1, t1 = page.evaluate("[prtView.framesDrawn, performance.now()]")
+    f1, t1 = page.evaluate("[%s, performance.now()]" % counter)
     return (f1 - f0) * 1000.0 / (t1 - t0)
 
 
@@ -128,12 +128,7 @@ def main():
                 " return e ? gl.getParameter(e.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER); })()"))
             say("webgl_mesh", page.evaluate("meshInfo.vertices + ' vertices, ' + meshInfo.triangles + ' triangles'"))
             time.sleep(1.0)
-            runs = []
-            for _ in range(a.runs):
-                f0, t0 = page.evaluate("[bench.frames, performance.now()]")
-                time.sleep(a.seconds)
-                f1, t1 = page.evaluate("[bench.frames, performance.now()]")
-                runs.append((f1 - f0) * 1000.0 / (t1 - t0))
+            runs = [page_fps(page, a.seconds, "bench.frames") for _ in range(a.runs)]
             say("webgl_stand_in_fps_runs", ",".join("%.1f" % r for r in runs))
             say("webgl_stand_in_fps", "%.1f" % statistics.median(runs))
     finally:

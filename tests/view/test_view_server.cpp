@@ -294,45 +294,35 @@ TEST_CASE("prt view: a client that stalls or vanishes mid-frame stalls no other,
   args[7] = "1024x768";  // --size: a frame that takes a while to send
   ViewProcess view(args, dir + "/stderr.txt");
   const int port = view.port();
-  const auto connect_to = [port] {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in addr{};
-    addr.sin_family = AF_INET;
-    addr.sin_port = htons(static_cast<std::uint16_t>(port));
-    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    REQUIRE(::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
-    return fd;
-  };
   const std::string host = "Host: 127.0.0.1:" + std::to_string(port) + "\r\n";
   // Three stalled clients: half a request line, headers without their end, and a frame asked
   // for and never read (its 2.4 MB fill the socket's buffers).
-  const int half = connect_to();
+  const int half = Connect(port);
   REQUIRE(::send(half, "GET /fra", 8, MSG_NOSIGNAL) == 8);
-  const int headers = connect_to();
+  const int headers = Connect(port);
   const std::string partial = "GET /frame HTTP/1.1\r\n" + host;
   REQUIRE(::send(headers, partial.data(), partial.size(), MSG_NOSIGNAL) == ssize_t(partial.size()));
-  const int unread = connect_to();
+  const int unread = Connect(port);
   const std::string whole = "GET /frame?angle=10 HTTP/1.1\r\n" + host + "\r\n";
   REQUIRE(::send(unread, whole.data(), whole.size(), MSG_NOSIGNAL) == ssize_t(whole.size()));
   // Clients that vanish mid-frame: the request sent, the connection closed at once.
   for (int i = 0; i < 4; ++i) {
-    const int gone = connect_to();
+    const int gone = Connect(port);
     const std::string ask =
         "GET /frame?size=64x48&angle=" + std::to_string(20 + i) + " HTTP/1.1\r\n" + host + "\r\n";
     REQUIRE(::send(gone, ask.data(), ask.size(), MSG_NOSIGNAL) == ssize_t(ask.size()));
     ::close(gone);
   }
-  // Meanwhile others are served, before any stalled client's timeout (small frames: they take
-  // milliseconds, a second under ThreadSanitizer).
-  const auto start = std::chrono::steady_clock::now();
+  // Meanwhile others are served, before any stalled client's timeout: the stalled connections
+  // are all still open once they have been.
   for (int i = 0; i < 3; ++i) {
     const HttpReply r = Request(port, "/frame?size=64x48&ssaa=1&angle=" + std::to_string(40 + i));
     CHECK(r.status == 200);
     CHECK(r.body.size() == 64u * 48u * 3u);
   }
   CHECK(Request(port, "/state").status == 200);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  CHECK(seconds < 4.0);  // the server's read and write timeouts are 5 s: nobody waited for them
+  CHECK(StillOpen(half));
+  CHECK(StillOpen(headers));
   ::close(half);
   ::close(headers);
   ::close(unread);
@@ -347,20 +337,18 @@ TEST_CASE("prt view: more stalled clients than a small pool has threads stall no
   // Twelve connections, each with half a request line, then nothing.
   std::vector<int> stalled;
   for (int i = 0; i < 12; ++i) {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in addr{};
-    addr.sin_family = AF_INET;
-    addr.sin_port = htons(static_cast<std::uint16_t>(port));
-    addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    REQUIRE(::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
+    const int fd = Connect(port);
     REQUIRE(::send(fd, "GET /sta", 8, MSG_NOSIGNAL) == 8);
     stalled.push_back(fd);
   }
   const auto start = std::chrono::steady_clock::now();
   CHECK(Request(port, "/state").status == 200);
-  CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 3.0);
+  // Served while every stalled connection is still open: not by waiting for their timeouts,
+  // and they were not refused at once either.
+  for (const int fd : stalled) CHECK(StillOpen(fd));
   // The server closes each stalled connection once its read timeout (5 s) has passed: a recv
-  // that returns 0 (closed), well before the 20 s this waits for all of them together.
+  // that returns 0 (closed), well before the 20 s this waits for all of them together (a
+  // timeout of minutes would not be).
   const auto deadline = start + std::chrono::seconds(20);
   for (const int fd : stalled) {
     pollfd p{fd, POLLIN, 0};
@@ -372,9 +360,6 @@ TEST_CASE("prt view: more stalled clients than a small pool has threads stall no
     CHECK(closed);
     ::close(fd);
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  CHECK(seconds > 3.0);   // not at once: the timeout, not a refusal
-  CHECK(seconds < 15.0);  // and not a timeout of minutes
 }
 
 TEST_CASE("prt view ends cleanly on SIGTERM and SIGINT, leaving only the cache it completed") {
@@ -418,12 +403,11 @@ TEST_CASE("prt view: --port, --bind and its other options are checked before any
   for (const std::string bad : {"--port 70000", "--port -1", "--port x", "--lmax 99", "--size 0x10",
                                  "--view transport:99", "--basis wavelet --view transport:1"}) {
     INFO(bad);
-    const auto start = std::chrono::steady_clock::now();
     const RunResult r = RunPrt("view --mesh " + Q(mesh) + " " + bad);
     CHECK(r.exit_code == 2);
     CHECK(r.err.rfind("prt: error: ", 0) == 0);
     CHECK(r.out.empty());
-    CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < 10.0);
+    CHECK(r.err.find("mesh:") == std::string::npos);  // refused before the mesh was loaded
   }
   // A port in use: a clear error, no address printed.
   ViewProcess first(SmallViewArgs(dir), dir + "/first.txt");

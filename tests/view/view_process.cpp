@@ -93,6 +93,21 @@ std::string HttpReply::Header(const std::string& name) const {
   return head.substr(start, head.find("\r\n", start) - start);
 }
 
+int Connect(int port) {
+  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in addr{};
+  addr.sin_family = AF_INET;
+  addr.sin_port = htons(static_cast<std::uint16_t>(port));
+  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  REQUIRE(::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
+  return fd;
+}
+
+bool StillOpen(int fd) {
+  pollfd p{fd, POLLIN, 0};
+  return ::poll(&p, 1, 0) == 0;
+}
+
 HttpReply SendRaw(int port, const std::string& raw) {
   HttpReply reply;
   const int fd = ::socket(AF_INET, SOCK_STREAM, 0);

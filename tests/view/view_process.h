@@ -46,6 +46,12 @@ struct HttpReply {
   std::string Header(const std::string& name) const;  ///< "" when absent
 };
 
+/// A socket connected to 127.0.0.1:port (REQUIREd to connect); the caller closes it.
+int Connect(int port);
+
+/// True while the server has not closed `fd`'s connection (nothing to read, no end of file).
+bool StillOpen(int fd);
+
 /// Sends `raw` (a whole request, as bytes) to 127.0.0.1:port and reads the reply until the
 /// server closes the connection or 30 s pass.
 HttpReply SendRaw(int port, const std::string& raw);
