@@ -6,9 +6,9 @@
 
 Each mutant of tests/mutants.txt replaces one exact piece of a source file. The script copies
 the project to build-mutants/src (never touching the checkout), builds it once, then for each
-mutant: applies it, rebuilds, runs prt_tests as a fresh clone would (PRT_SHARED_DATA=none, so
-the course data cannot be what catches it; tests that run with the data are a superset),
-stops at the first failure (its output is kept in build-mutants/log/), and restores the file. It prints CAUGHT or SURVIVED per mutant and
+mutant: applies it, rebuilds, runs the test programs of every tier (unit, threads, e2e, readme: tests/README.md)
+as a fresh clone would (PRT_SHARED_DATA=none, so the course data cannot be what catches it; tests that
+run with the data are a superset), stops at the first failure (its output is kept in build-mutants/log/), and restores the file. It prints CAUGHT or SURVIVED per mutant and
 exits 1 if any survived. A mutant whose text is no longer in its file is an error: the list
 must follow the code.
 
@@ -87,14 +87,25 @@ def main():
     r = run(["cmake", "-S", COPY, "-B", BUILD, "-DCMAKE_BUILD_TYPE=Release"])
     if r.returncode:
         sys.exit(r.stdout)
-    build = ["cmake", "--build", BUILD, "--parallel", jobs, "--target", "prt", "prt_tests"]
+    build = ["cmake", "--build", BUILD, "--parallel", jobs]
     r = run(build)
     if r.returncode:
         sys.exit(r.stdout[-3000:])
     env = dict(os.environ, PRT_SHARED_DATA="none")
     env.pop("PRT_REQUIRE_SHARED_DATA", None)
-    test = [os.path.join(BUILD, "prt_tests"), "--no-intro=true", "--abort-after=1", "--no-version=true"]
-    r = run(test, env=env)
+    programs = [os.path.join(BUILD, f"prt_{tier}_tests") for tier in ("unit", "threads", "e2e", "readme")]
+
+    def test(env):
+        """The programs in turn until one fails: the first failure's output."""
+        out = ""
+        for program in programs:
+            r = run([program, "--no-intro=true", "--abort-after=1", "--no-version=true"], env=env)
+            out += r.stdout
+            if r.returncode:
+                return subprocess.CompletedProcess(r.args, r.returncode, out)
+        return subprocess.CompletedProcess(programs, 0, out)
+
+    r = test(env)
     if r.returncode:
         sys.exit("the unmutated suite fails:\n" + r.stdout[-3000:])
     survived = []
@@ -112,7 +123,7 @@ def main():
                 print(f"NO BUILD  {name}\n{r.stdout[-2000:]}")
                 survived.append(name)
                 continue
-            r = run(test, env=env)
+            r = test(env)
             with open(os.path.join(WORK, "log", f"{number:02d}.txt"), "w") as log:
                 log.write(f"{name}\n{r.stdout}")
             caught = r.returncode != 0

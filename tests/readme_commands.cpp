@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt::test {
 namespace {

@@ -1,17 +1,8 @@
 #include "tests/test_support.h"
 
-#include <array>
-#include <thread>
-#include <csignal>
-#include <chrono>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
-#include <fcntl.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "core/atomic_file.h"
@@ -37,7 +28,8 @@ std::optional<std::string> SharedData() {
 }
 
 std::string ScratchDir(const std::string& name) {
-  const fs::path p = fs::path(PRT_TEST_TMP_DIR) / (name + "_" + std::to_string(::getpid()));
+  const char* root = std::getenv("PRT_TEST_TMP");
+  const fs::path p = fs::path(root && *root ? root : PRT_TEST_TMP_DIR) / (name + "_" + std::to_string(::getpid()));
   fs::remove_all(p);
   fs::create_directories(p);
   return p.string();
@@ -70,8 +62,6 @@ std::optional<std::string> Chromium() {
 
 doctest::skip NeedsChromium() { return doctest::skip(!Chromium().has_value()); }
 
-doctest::test_suite WholeStudy() { return doctest::test_suite("report_study"); }
-
 std::string ErrorMessage(const std::function<void()>& run) {
   try {
     run();
@@ -79,11 +69,6 @@ std::string ErrorMessage(const std::function<void()>& run) {
     return e.what();
   }
   return "";
-}
-
-std::string PrtBinary() {
-  const char* binary = std::getenv("PRT_BINARY");
-  return binary && *binary ? binary : PRT_BINARY_PATH;
 }
 
 std::string QuickScene() {
@@ -113,9 +98,7 @@ std::string WriteSmallScene(const std::string& dir, const glm::vec3& knot_kd) {
   return dir + "/small_scene.obj";
 }
 
-std::string ScaledMesh(const std::string& name) {
-  return kSanitized ? " --mesh " + Q(WriteSmallScene(ScratchDir(name))) : "";
-}
+std::string SmallSceneOption(const std::string& name) { return " --mesh " + Q(WriteSmallScene(ScratchDir(name))); }
 
 std::size_t FloorTriangles() { return Floor().triangle_count(); }
 std::size_t WallTriangles() { return Wall().triangle_count(); }
@@ -136,63 +119,6 @@ glm::ivec3 PixelAt(const Image8& image, int x, int y) {
   return {image.rgb[p], image.rgb[p + 1], image.rgb[p + 2]};
 }
 
-int StartLongRender(const std::string& out, const std::string& size, const std::vector<std::string>& extra) {
-  // Everything the child needs is made before fork: after it, the child (of a process with
-  // threads) may only make async-signal-safe calls.
-  const std::string binary = PrtBinary(), mesh = Fixture("obj/tetra_no_normals.obj");
-  std::vector<std::string> args = {binary, "render", "--mesh", mesh, "--env", "furnace", "--transport", "unshadowed",
-                                   "--frames", "9999", "--size", size, "--threads", "1", "--quiet", "--out", out};
-  args.insert(args.end(), extra.begin(), extra.end());
-  std::vector<char*> argv;
-  for (auto& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    if (null >= 0) ::dup2(null, 2);
-    ::execv(binary.c_str(), argv.data());
-    ::_exit(127);
-  }
-  return pid;
-}
-
-int SignalWhenFileAppears(int pid, const std::string& path, int sig) {
-  bool appeared = false;
-  for (int tries = 0; tries < 60000 && !appeared; ++tries) {
-    appeared = fs::exists(path);
-    int status = 0;
-    if (!appeared && ::waitpid(pid, &status, WNOHANG) == pid) return -1;  // exited (and reaped)
-    if (!appeared) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  ::kill(pid, sig);
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return appeared ? status : -1;
-}
-
-bool KillWhenFileAppears(int pid, const std::string& path) {
-  const int status = SignalWhenFileAppears(pid, path, SIGKILL);
-  return status != -1 && WIFSIGNALED(status);
-}
-
 std::string FramePath(const std::string& dir, int i, int count) { return dir + "/" + FrameName(i, count); }
-
-std::string QuickRender(const std::string& out, int frames, const std::string& size) {
-  return "render " + QuickScene() + " --size " + size + " --frames " + std::to_string(frames) + " --out " + Q(out);
-}
-
-RunResult RunPrt(const std::string& arguments) { return RunCommand(ShellQuote(PrtBinary()) + " " + arguments); }
-
-RunResult RunCommand(const std::string& command) {
-  const std::string dir = ScratchDir("run");
-  const std::string cmd = command + " >'" + dir + "/out' 2>'" + dir + "/err' </dev/null";
-  const int status = std::system(cmd.c_str());
-  RunResult r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  r.out = ReadFile(dir + "/out");
-  r.err = ReadFile(dir + "/err");
-  fs::remove_all(dir);
-  return r;
-}
 
 }  // namespace prt::test

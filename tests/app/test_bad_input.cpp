@@ -15,7 +15,7 @@
 #include <unistd.h>
 
 #include "io/png_io.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt {
 namespace {

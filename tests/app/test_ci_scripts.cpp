@@ -13,7 +13,7 @@
 #include <utility>
 
 #include "core/atomic_file.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt {
 namespace {
@@ -21,9 +21,11 @@ namespace fs = std::filesystem;
 using test::Q;
 
 /// The modules of src/ with code that runs on more than one thread, read from their sources
-/// independently of sanitize.sh's list: a thread, a parallel loop, an atomic or a mutex.
+/// independently of sanitize.sh's list: a thread, a parallel loop, an atomic, a mutex, a future,
+/// or the HTTP library, whose server runs prt's handlers on its own pool.
 std::set<std::string> ThreadedModules() {
-  const std::regex threaded(R"(std::thread|Parallel[A-Z][a-z]*\(|std::atomic|std::mutex|condition_variable)");
+  const std::regex threaded(
+      R"(std::thread|std::jthread|Parallel[A-Z][a-z]*\(|std::atomic|std::mutex|condition_variable|std::async|std::future|httplib::)");
   std::set<std::string> modules;
   for (const auto& file : fs::recursive_directory_iterator(test::SourceDir() + "/src")) {
     if (!file.is_regular_file()) continue;
@@ -44,30 +46,16 @@ std::set<std::string> LeftOut(const std::string& variable) {
   return modules;
 }
 
-/// The labels CTest knows in the build beside these tests (its registration file).
-std::set<std::string> Labels() {
-  const std::string cases = ReadFile(fs::path(PRT_TEST_TMP_DIR).parent_path().string() + "/prt_tests_cases.cmake");
-  std::set<std::string> labels;
-  const std::regex label(R"(LABELS \[==\[([^\]]*)\]==\])");
+/// The modules (suites) of the tests of `tier` that the build beside these tests registered
+/// (its prt_TIER_tests_cases.cmake: labels SUITE;TIER).
+std::set<std::string> TierModules(const std::string& tier) {
+  const std::string cases =
+      ReadFile(fs::path(PRT_TEST_TMP_DIR).parent_path().string() + "/prt_" + tier + "_tests_cases.cmake");
+  std::set<std::string> modules;
+  const std::regex label(R"(LABELS \[==\[([^;\]]*);)" + tier + R"(\]==\])");
   for (auto it = std::sregex_iterator(cases.begin(), cases.end(), label); it != std::sregex_iterator(); ++it)
-    labels.insert((*it)[1]);
-  return labels;
-}
-
-/// The labels a ctest selection (--label-regex ^(a|b)$ or --label-exclude ^a$) picks from `all`.
-std::set<std::string> Selected(const std::string& ctest_call, const std::set<std::string>& all) {
-  std::smatch m;
-  std::set<std::string> picked;
-  if (std::regex_search(ctest_call, m, std::regex(R"(--label-regex (\S+))"))) {
-    for (const auto& l : all)
-      if (std::regex_search(l, std::regex(m[1].str()))) picked.insert(l);
-  } else if (std::regex_search(ctest_call, m, std::regex(R"(--label-exclude (\S+))"))) {
-    for (const auto& l : all)
-      if (!std::regex_search(l, std::regex(m[1].str()))) picked.insert(l);
-  } else {
-    picked = all;
-  }
-  return picked;
+    modules.insert((*it)[1]);
+  return modules;
 }
 
 /// The line of `log` that starts with `prefix` and contains `part` ("" if none).
@@ -91,8 +79,11 @@ std::pair<int, std::string> RunSanitize(const std::string& dir, const std::strin
                                 << Q(log) << "\n" << ctest_tail;
   for (const char* tool : {"/cmake", "/ctest"}) fs::permissions(bin + tool, fs::perms::owner_all);
   // PRT_PHASE_LOG emptied: under .ci/run these steps are not CI's phases.
-  const auto r = test::RunCommand("cd " + Q(test::SourceDir()) + " && PATH=" + Q(bin) +
-                                  ":\"$PATH\" PRT_PHASE_LOG= bash scripts/sanitize.sh all");
+  // PRT_BUILD_DIR: a Release folder of the test's own, so that the smoke set's program is looked
+  // for there and not in the checkout's build/.
+  const std::string release = dir.substr(dir.rfind('/') + 1) + "_release";
+  const auto r = test::RunCommand("cd " + Q(test::SourceDir()) + " && PATH=" + Q(bin) + ":\"$PATH\" PRT_BUILD_DIR=" +
+                                  Q(release) + " PRT_PHASE_LOG= bash scripts/sanitize.sh all");
   return {r.exit_code, fs::exists(log) ? ReadFile(log) : ""};
 }
 
@@ -137,63 +128,62 @@ TEST_SUITE("app") {
   }
 
 
-  TEST_CASE("sanitize.sh: ASan + UBSan runs every module, TSan every module with threads, both built -O1 -g1") {
+  TEST_CASE("sanitize.sh: ASan + UBSan builds and runs the unit and threads tiers, TSan the threads tier, both -O1 -g1, each with its smoke set") {
     const std::string dir = test::ScratchDir("ci_sanitize");
     const auto [exit_code, calls] = RunSanitize(dir, "");
     REQUIRE(exit_code == 0);
     CAPTURE(calls);
 
-    // Both builds: -O1 -g1, each with its own sanitizer, the program and the tests built.
-    for (const char* option : {"-DPRT_SANITIZE=ON", "-DPRT_TSAN=ON"}) {
-      CAPTURE(option);
-      CHECK(CallWith(calls, "cmake -S", option).find("-O1 -g1") != std::string::npos);
+    // Both builds: -O1 -g1, each with its own sanitizer and only its tiers' programs (the whole
+    // folder is built: prt and those programs), the smoke set's program the Release build's.
+    const std::string asan_build = CallWith(calls, "cmake -S", "-DPRT_SANITIZE=ON");
+    const std::string tsan_build = CallWith(calls, "cmake -S", "-DPRT_TSAN=ON");
+    for (const std::string& call : {asan_build, tsan_build}) {
+      CAPTURE(call);
+      CHECK(call.find("-O1 -g1") != std::string::npos);
+      CHECK(call.find("-DPRT_SMOKE_DRIVER=" + test::SourceDir() + "/" + dir.substr(dir.rfind('/') + 1) +
+                      "_release/prt_e2e_tests") != std::string::npos);
     }
-    CHECK(CallWith(calls, "cmake --build build-asan", "--target prt prt_tests") != "");
-    CHECK(CallWith(calls, "cmake --build build-tsan", "--target prt prt_tests") != "");
+    CHECK(asan_build.find("-DPRT_TEST_TIERS=unit;threads ") != std::string::npos);
+    CHECK(tsan_build.find("-DPRT_TEST_TIERS=threads ") != std::string::npos);
+    CHECK(CallWith(calls, "cmake --build build-asan", "") != "");
+    CHECK(CallWith(calls, "cmake --build build-tsan", "") != "");
+    // The smoke set's program built (nothing to do when CI's Release build has it).
+    CHECK(CallWith(calls, "cmake --build ", "--target prt_e2e_tests") != "");
 
-    const std::set<std::string> labels = Labels();
-    REQUIRE(labels.count("core") == 1);
-    const std::string script = ReadFile(test::SourceDir() + "/scripts/sanitize.sh");
-    // ASan + UBSan: every label but those ASAN_LEFT_OUT names, each an existing label with its
-    // reason (the README's and the whole report studies'); reports fatal.
+    // Each suite: every test its folder registers (its tiers and its smoke set); reports fatal,
+    // no second of sleep at every exit under TSan.
     const std::string asan = CallWith(calls, "ctest --test-dir build-asan", "");
     REQUIRE(asan != "");
-    const std::set<std::string> asan_left_out = LeftOut("ASAN_LEFT_OUT");
-    CHECK(asan_left_out == std::set<std::string>{"readme", "report_study"});
-    std::set<std::string> asan_labels = labels;
-    for (const std::string& label : asan_left_out) {
-      CAPTURE(label);
-      CHECK(labels.count(label) == 1);
-      CHECK(script.find("# - " + label + ": ") != std::string::npos);  // its reason
-      asan_labels.erase(label);
-    }
-    CHECK(Selected(asan, labels) == asan_labels);
-    // The report suite's own tests stay: only whole studies are left out.
-    CHECK(Selected(asan, labels).count("report") == 1);
+    CHECK(asan.find("--label") == std::string::npos);
     CHECK(Value(asan, "ASAN_OPTIONS").find("abort_on_error=1") != std::string::npos);
     CHECK(Value(asan, "ASAN_OPTIONS").find("detect_leaks=1") != std::string::npos);
     CHECK(Value(asan, "UBSAN_OPTIONS").find("halt_on_error=1") != std::string::npos);
-    // TSan: every module whose sources have threaded code, each an existing label, but those
-    // sanitize.sh leaves out with a reason (TSAN_LEFT_OUT); reports fatal, no second of sleep
-    // at every exit.
     const std::string tsan = CallWith(calls, "ctest --test-dir build-tsan", "");
     REQUIRE(tsan != "");
-    const std::set<std::string> picked = Selected(tsan, labels), left_out = LeftOut("TSAN_LEFT_OUT");
-    for (const std::string& module : ThreadedModules()) {
+    CHECK(tsan.find("--label") == std::string::npos);
+    CHECK(Value(tsan, "TSAN_OPTIONS").find("halt_on_error=1") != std::string::npos);
+    CHECK(Value(tsan, "TSAN_OPTIONS").find("atexit_sleep_ms=0") != std::string::npos);
+  }
+
+  TEST_CASE("sanitize.sh: every module with threaded code, whoever starts its threads, has tests in the threads tier that TSan runs, or a reason") {
+    const std::set<std::string> threads_tier = TierModules("threads");
+    REQUIRE(threads_tier.count("core") == 1);
+    const std::string script = ReadFile(test::SourceDir() + "/scripts/sanitize.sh");
+    const std::set<std::string> left_out = LeftOut("TSAN_LEFT_OUT"), threaded = ThreadedModules();
+    // The HTTP library's pool runs prt view's handlers: its module counts though it starts no
+    // thread of its own.
+    CHECK(threaded.count("view") == 1);
+    CHECK(threaded.count("app") == 1);  // view_scene's workers
+    for (const std::string& module : threaded) {
       CAPTURE(module);
-      CHECK(labels.count(module) == 1);
       if (left_out.count(module)) {
-        CHECK(picked.count(module) == 0);
         CHECK(script.find("# - " + module + ": ") != std::string::npos);  // its reason
       } else {
-        CHECK(picked.count(module) == 1);
+        CHECK(threads_tier.count(module) == 1);
       }
     }
     CHECK(left_out.size() <= 2);  // the two measured and explained; a third needs its reason here too
-    // Whole labels only: a label that merely contains a module's name is not picked.
-    CHECK(Selected(tsan, {"coretex", "xapp", "shade"}).empty());
-    CHECK(Value(tsan, "TSAN_OPTIONS").find("halt_on_error=1") != std::string::npos);
-    CHECK(Value(tsan, "TSAN_OPTIONS").find("atexit_sleep_ms=0") != std::string::npos);
   }
 
   TEST_CASE("sanitize.sh: a failing sanitized suite fails the run, and ThreadSanitizer does not start after it") {
@@ -230,7 +220,10 @@ TEST_SUITE("app") {
       fs::copy_file(test::SourceDir() + "/scripts/" + script, tree + "/scripts/" + script);
     std::ofstream(tree + "/scripts/install-deps.sh") << "true\n";
     std::ofstream(bin + "/cmake") << "#!/bin/sh\ntrue\n";
+    // The default suite's run skips two; the readme tier's run (--label-regex) skips none.
     std::ofstream(bin + "/ctest") << "#!/bin/sh\n"
+                                     "case \"$*\" in *--label-regex*) echo '100% tests passed, 0 tests failed out of 1'; "
+                                     "exit $STAND_IN ;; esac\n"
                                      "echo '1/5 Test #12: obj: mary from the course data .......***Skipped   0.01 sec'\n"
                                      "echo '2/5 Test #40: readme: the course commands ..........***Skipped   0.01 sec'\n"
                                      "echo '100% tests passed, 0 tests failed out of 5'\n"

@@ -12,7 +12,7 @@
 #include "app/commands.h"
 #include "core/error.h"
 #include "core/atomic_file.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt {
 namespace {

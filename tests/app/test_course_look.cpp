@@ -18,7 +18,7 @@
 #include "io/png_io.h"
 #include "tests/app/viewer_files.h"
 #include "tests/env/env_test_util.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt {
 namespace {

@@ -6,7 +6,7 @@
 #include <filesystem>
 
 #include "precompute_io/cpca_matrix_file.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 using namespace prt;
 using namespace prt::test;

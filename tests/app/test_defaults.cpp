@@ -15,7 +15,7 @@
 #include "geometry/procedural.h"
 #include "io/obj_writer.h"
 #include "io/png_io.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt {
 namespace {
@@ -175,9 +175,9 @@ TEST_SUITE("app") {
     const char* sizes[2] = {"400x300", "1600x1200"};
     for (int i = 0; i < 2; ++i) {
       const std::string out = dir + "/" + sizes[i];
-      // The embedded scene, or under a sanitizer the small scene (tests/README.md).
+      // On the small scene.
       const auto r = test::RunPrt(std::string("render --view transport:0 --samples 16 --frames 1 --size ") + sizes[i] +
-                                  test::ScaledMesh("transport_view_small_scene") + " --out " + Q(out));
+                                  test::SmallSceneOption("transport_view_small_scene") + " --out " + Q(out));
       REQUIRE(r.exit_code == 0);
       const Image8 image = ReadPng(out + "/frame_0000.png");
       // The top-left corner shows background: the default --background env would be sky blue.

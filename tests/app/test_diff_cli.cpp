@@ -4,7 +4,7 @@
 #include <string>
 
 #include "io/png_io.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace {
 

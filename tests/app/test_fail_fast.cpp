@@ -13,7 +13,7 @@
 #include "core/atomic_file.h"
 #include "core/output_folder.h"
 #include "core/error.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt {
 namespace {

@@ -18,7 +18,7 @@
 #include "core/atomic_file.h"
 #include "core/output_folder.h"
 #include "tests/env/env_test_util.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt {
 namespace {

@@ -16,7 +16,7 @@
 #include "raster/image_diff.h"
 #include "raster/tonemap.h"
 #include "tests/env/env_test_util.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt {
 namespace {

@@ -12,7 +12,7 @@
 #include <glm/vec3.hpp>
 
 #include "precompute_io/transfer_matrix_file.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 using namespace prt;
 using namespace prt::test;

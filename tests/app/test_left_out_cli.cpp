@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/atomic_file.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 using namespace prt;
 using namespace prt::test;

@@ -15,7 +15,7 @@
 #include "precompute_io/light_txt.h"
 #include "sh/coeffs.h"
 #include "tests/sh/sh_test_util.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 using namespace prt;
 using namespace prt::test;
@@ -63,8 +63,7 @@ TEST_SUITE("app") {
   }
 
   TEST_CASE("prt light --lmax 200 --rotate: band 1 turns as a vector, every band keeps its energy") {
-    // Scaled under a sanitizer (tests/README.md): lmax 100, a quarter of the coefficients.
-    const int lmax = test::kSanitized ? 100 : 200;
+    const int lmax = 200;
     const std::string bands = " --lmax " + std::to_string(lmax);
     const auto plain = Light(bands);
     const auto turned = Light(bands + " --rotate 1,2,3:40");

@@ -17,7 +17,7 @@
 #include "io/obj_writer.h"
 #include "io/png_io.h"
 #include "raster/image_diff.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt {
 namespace {

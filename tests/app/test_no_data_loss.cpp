@@ -24,7 +24,7 @@
 #include "core/output_folder.h"
 #include "core/error.h"
 #include "io/png_io.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt {
 namespace {

@@ -19,7 +19,7 @@
 #include "core/atomic_file.h"
 #include "core/output_folder.h"
 #include "render/render_frames.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt {
 namespace {

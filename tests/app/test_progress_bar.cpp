@@ -9,7 +9,7 @@
 #include <string>
 
 #include "core/atomic_file.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt {
 namespace {
@@ -50,8 +50,7 @@ TEST_SUITE("app") {
   TEST_CASE("progress: on a terminal a render shows the time left and an OBJ its loading") {
     REQUIRE(std::system("command -v script >/dev/null") == 0);  // util-linux: always on Debian
     const std::string dir = test::ScratchDir("progress_bar");
-    // Scaled under a sanitizer (tests/README.md): a fifth of the frames, a quarter of the pixels.
-    const std::string long_render = test::kSanitized ? " --frames 20 --size 160x120" : " --frames 100 --size 320x240";
+    const std::string long_render = " --frames 20 --size 160x120";
     const std::string render = OnTerminal(
         "render --transport unshadowed" + long_render + " --threads 1 --cache none --out " + Q(dir + "/frames"), dir);
     CAPTURE(render);

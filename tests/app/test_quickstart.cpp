@@ -10,7 +10,7 @@
 #include <string>
 
 #include "core/atomic_file.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt {
 namespace {

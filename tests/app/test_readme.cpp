@@ -17,7 +17,7 @@
 
 #include "core/atomic_file.h"
 #include "tests/readme_commands.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 #include "tests/view/view_process.h"
 
 namespace prt {

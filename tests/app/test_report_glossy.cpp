@@ -12,7 +12,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/atomic_file.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace {
 
@@ -24,32 +24,22 @@ struct GlossyRow {
 
 }  // namespace
 
-// A test of `prt report`, in its suite (the label the sanitizer passes choose by).
+// A test of `prt report`, in its suite.
 TEST_SUITE("report") {
-  TEST_CASE("prt report --material: the glossy section's errors fall with lmax and the two paths meet" * prt::test::WholeStudy()) {
+  TEST_CASE("prt report --material: the glossy section's errors fall with lmax and the two paths meet") {
     const std::string dir = prt::test::ScratchDir("report_glossy");
     // The diffuse sweep kept short; the glossy sweep is fixed (quick: lmax 1..8, matrices 1..4).
     // No --albedo: the report scene's knot (0.80, 0.38, 0.20) is brighter than 1 - KS = 0.7, so
     // its albedo is fitted under the coat (scaled to 0.70, 0.3325, 0.175) instead of the run
     // being refused; the grey 0.7 ground already fits.
-    // Scaled under a sanitizer (tests/README.md): the small scene, its knot's albedo the fitted
-    // one, so nothing is fitted and said.
-    const std::string scene =
-        prt::test::kSanitized
-            ? " --mesh " + Q(prt::test::WriteSmallScene(prt::test::ScratchDir("report_glossy_scene"),
-                                                         glm::vec3(0.7f, 0.3325f, 0.175f)))
-            : "";
-    const auto r = prt::test::RunPrt("report --quick --max-lmax 2 --max-samples 32 --material phong:20,0.3" + scene +
-                                     " --out " + Q(dir));
+    const auto r = prt::test::RunPrt("report --quick --max-lmax 2 --max-samples 32 --material phong:20,0.3 --out " + Q(dir));
     REQUIRE(r.exit_code == 0);
     CHECK(std::filesystem::file_size(dir + "/glossy_error_vs_lmax.png") > 1000);
     const std::string md = prt::ReadFile(dir + "/report.md");
     CHECK(md.find("## Glossy materials: Phong lobes of KS 0.3") != std::string::npos);
-    if (!prt::test::kSanitized) {
-      CHECK(r.err.find("scaled down to it with their hue (e.g. 0.8,0.38,0.2 -> 0.7,0.332,0.175)") != std::string::npos);
-      CHECK(md.find("albedo fitted under the coat: ") != std::string::npos);
-      CHECK(md.find("scaled to 1 - KS = 0.7, hue kept") != std::string::npos);
-    }
+    CHECK(r.err.find("scaled down to it with their hue (e.g. 0.8,0.38,0.2 -> 0.7,0.332,0.175)") != std::string::npos);
+    CHECK(md.find("albedo fitted under the coat: ") != std::string::npos);
+    CHECK(md.find("scaled to 1 - KS = 0.7, hue kept") != std::string::npos);
 
     // (mode, path, N, lmax) -> numbers, from the CSV's glossy rows.
     std::istringstream csv(prt::ReadFile(dir + "/report.csv"));
@@ -98,25 +88,14 @@ TEST_SUITE("report") {
       const auto cpca = [&rows, c](int k) { return rows.at({"shadowed", "glossy-cpca-" + std::to_string(c) + "x" + std::to_string(k), 20, 4}); };
       CAPTURE(c);
       CHECK(cpca(1).lobe < 1.0);
-      if (prt::test::kSanitized) {
-        // The small scene's 241 vertices: 16 clusters hold its matrices to float precision
-        // (measured 1.0e-7 at 1 and 8 terms), so more terms can only not add error.
-        constexpr double kFloatLevel = 1e-6;
-        CHECK(cpca(8).lobe <= cpca(1).lobe + kFloatLevel);
-        CHECK(cpca(8).total <= cpca(1).total + kFloatLevel);
-      } else {
-        CHECK(cpca(8).lobe < cpca(1).lobe);
-        CHECK(cpca(8).total < cpca(1).total);
-      }
+      CHECK(cpca(8).lobe < cpca(1).lobe);
+      CHECK(cpca(8).total < cpca(1).total);
     }
     CHECK(md.find("Transfer matrices compressed by clustered PCA") != std::string::npos);
     // Memory: on the report scene every 16-cluster setting is under a quarter of the full
-    // matrices; on the small scene's 241 vertices the one-term one is still under all of it.
-    if (prt::test::kSanitized)
-      CHECK(rows.at({"shadowed", "glossy-cpca-16x1", 20, 4}).bytes < full_bytes);
-    else
-      for (int k : {1, 2, 4, 8})
-        CHECK(rows.at({"shadowed", "glossy-cpca-16x" + std::to_string(k), 20, 4}).bytes < 0.25 * full_bytes);
+    // matrices.
+    for (int k : {1, 2, 4, 8})
+      CHECK(rows.at({"shadowed", "glossy-cpca-16x" + std::to_string(k), 20, 4}).bytes < 0.25 * full_bytes);
     for (int n : {10, 20, 100, 1000}) {
       CAPTURE(n);
       CHECK(rows.count({"unshadowed", "glossy-vector", n, 8}) == 1);

@@ -11,7 +11,7 @@
 
 #include "core/atomic_file.h"
 #include "precompute/sample_rule.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt {
 namespace {
@@ -118,11 +118,11 @@ TEST_SUITE("app") {
   }
 }
 
-// A test of `prt report`, in its suite (the label the sanitizer passes choose by).
+// A test of `prt report`, in its suite.
 TEST_SUITE("report") {
-  TEST_CASE("sample rule: prt report tabulates the sampling error against the truncation error and the rule" * prt::test::WholeStudy()) {
+  TEST_CASE("sample rule: prt report tabulates the sampling error against the truncation error and the rule") {
     const std::string dir = test::ScratchDir("rule_report");
-    const auto r = test::RunPrt("report --quick --max-lmax 3 --max-samples 64 --quiet" + test::ScaledMesh("rule_report_scene") +
+    const auto r = test::RunPrt("report --quick --max-lmax 3 --max-samples 64 --quiet" + test::SmallSceneOption("rule_report_scene") +
                                 " --out " + Q(dir));
     REQUIRE(r.exit_code == 0);
     const std::string md = ReadFile(dir + "/report.md");

@@ -17,7 +17,7 @@
 #include "core/output_folder.h"
 #include "io/png_io.h"
 #include "raster/image_diff.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 #include "tests/video/apng_test_reader.h"
 #include "video/apng_writer.h"
 

@@ -11,7 +11,7 @@
 #include "io/png_io.h"
 #include "core/atomic_file.h"
 #include "sh/rotation.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 using namespace prt;
 using namespace prt::test;
@@ -95,8 +95,7 @@ TEST_SUITE("app") {
   TEST_CASE("wavelet cli: the run summary says the cube, the terms kept, the bytes and the truncation's cost") {
     const std::string dir = ScratchDir("wavelet_summary");
     SampleScene(dir);
-    // Scaled under a sanitizer (tests/README.md): a quarter of the directions.
-    const std::string directions = kSanitized ? " --samples 64 --hidden-samples 16" : " --samples 256 --hidden-samples 64";
+    const std::string directions = " --samples 64 --hidden-samples 16";
     const RunResult r = RunPrt("render --mesh " + Q(dir + "/scene.obj") + " --transport interreflection" + directions +
                                " --basis wavelet --cube-size 16 --wavelet-terms 64 --light-terms 128 --size 32x24 "
                                "--frames 2 --out " +
@@ -147,9 +146,8 @@ TEST_SUITE("app") {
     WriteFileAtomic(dir + "/turned.hdr", EncodeHdr(turned));
     const ImageF wrong = EquirectImage([&](const glm::dvec3& d) { return sky->Radiance(quarter * d); }, 1024, 512);
     WriteFileAtomic(dir + "/wrong.hdr", EncodeHdr(wrong));
-    // Scaled under a sanitizer (tests/README.md): a cube of 8^2 texels a face, not 16^2.
-    const std::string common = " --mesh " + Q(dir + "/scene.obj") + " --max-edge 4% --basis wavelet" +
-                               (kSanitized ? " --cube-size 8" : " --cube-size 16") + " --size 96x72 --exposure -1 --ssaa 1 ";
+    const std::string common = " --mesh " + Q(dir + "/scene.obj") + " --max-edge 4% --basis wavelet --cube-size 16"
+                               " --size 96x72 --exposure -1 --ssaa 1 ";
     REQUIRE(RunPrt("render" + common + "--env " + Q(dir + "/sky.hdr") + " --frames 4 --out " + Q(dir + "/a")).exit_code == 0);
     REQUIRE(RunPrt("render" + common + "--env " + Q(dir + "/turned.hdr") + " --frames 1 --out " + Q(dir + "/b")).exit_code == 0);
     REQUIRE(RunPrt("render" + common + "--env " + Q(dir + "/wrong.hdr") + " --frames 1 --out " + Q(dir + "/c")).exit_code == 0);

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "core/atomic_file.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 using namespace prt;
 using namespace prt::test;
@@ -41,9 +41,9 @@ bool Has(const std::string& text, const std::string& part) { return text.find(pa
 
 const std::string kGlossy = "--lmax 4 --material phong:50,0.3 --albedo 0.6,0.6,0.6";
 
-/// The glossy renders' scene: the embedded one, or under a sanitizer the small scene (the rule
-/// reads the light and the lobe, not the mesh; tests/README.md).
-std::string GlossyScene() { return ScaledMesh("window_default_small_scene"); }
+/// The glossy renders' scene: the small scene (the rule reads the light and the lobe, not the
+/// mesh).
+std::string GlossyScene() { return SmallSceneOption("window_default_small_scene"); }
 
 }  // namespace
 
@@ -137,7 +137,7 @@ TEST_SUITE("app") {
     // still has negative pixels, made by the transfer matrices' truncation. The note must not
     // advise the window the run already used (the old note did).
     const RunResult windowed = Render(dir + "/auto", "--lmax 4 --material phong:1000,0.9 --albedo 0.1,0.1,0.1 "
-                                                           "--env sky:sun=1000 --orbit 60 --window auto" + ScaledMesh("ringing_note_scene"),
+                                                           "--env sky:sun=1000 --orbit 60 --window auto" + SmallSceneOption("ringing_note_scene"),
                                       "render", "64x48");
     REQUIRE(windowed.exit_code == 0);
     const std::string note = SummaryLine(windowed.err, "ringing: ");

@@ -1,6 +1,8 @@
-// The test runner itself: tests/discover_tests.cmake registers every case of prt_tests with CTest,
-// labelled with its suite, from one XML listing; a name with a comma must still select its case
-// (doctest splits filters at commas), and a filter that selects nothing fails (tests/main.cpp).
+// The test runner itself: tests/discover_tests.cmake registers every case of a test program with
+// CTest, labelled with its suite and its tier, from one XML listing; for a sanitizer pass it
+// registers only the smoke set that tests/smoke.txt names, pointed at another prt; a name with a
+// comma must still select its case (doctest splits filters at commas), and a filter that selects
+// nothing fails (tests/main.cpp). This program is the e2e tier's.
 #include <doctest/doctest.h>
 
 #include <sstream>
@@ -9,7 +11,7 @@
 #include <unistd.h>
 
 #include "core/atomic_file.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace {
 
@@ -25,7 +27,7 @@ int CountListed(const std::string& listing) {
 }  // namespace
 
 TEST_SUITE("core") {
-  TEST_CASE("runner: every case is a CTest test under its suite; a name with commas, like this one, or <, >, &, &lt; [ ], \" and ' selects it") {
+  TEST_CASE("runner: every case is a CTest test under its suite and tier; a name with commas, like this one, or <, >, &, &lt; [ ], \" and ' selects it") {
     // The name holds every character the registration must carry through: commas (doctest's
     // filter separator), ';' (a CMake list separator), '[' ']' (which CMake lists keep
     // together), what XML escapes, and the text of an escape (&lt;, which the XML writes as
@@ -36,20 +38,20 @@ TEST_SUITE("core") {
     const std::string self = "/proc/" + std::to_string(::getpid()) + "/exe";
     const std::string dir = prt::test::ScratchDir("runner");
     const auto discover = prt::test::RunCommand(
-        prt::test::Q(PRT_CMAKE_COMMAND) + " -D TEST_EXECUTABLE=" + prt::test::Q(self) + " -D TEST_WORKING_DIR=" +
+        prt::test::Q(PRT_CMAKE_COMMAND) + " -D TEST_EXECUTABLE=" + prt::test::Q(self) + " -D TIER=e2e -D TEST_WORKING_DIR=" +
         prt::test::Q(dir) + " -D CTEST_FILE=" + prt::test::Q(dir + "/cases.cmake") +
         " -D TEST_TIMEOUT=600 -D SKIP_RETURN_CODE=77 -P " +
         prt::test::Q(prt::test::SourceDir() + "/tests/discover_tests.cmake"));
     REQUIRE(discover.exit_code == 0);
     const std::string cases = prt::ReadFile(dir + "/cases.cmake");
 
-    // One add_test per case the program lists, each with its suite as the label.
+    // One add_test per case the program lists, each with its suite and its tier as the labels.
     const auto listed = prt::test::RunCommand(self + " --list-test-cases --no-intro=true");
     REQUIRE(listed.exit_code == 0);
     std::size_t add_tests = 0;
     for (auto at = cases.find("add_test("); at != std::string::npos; at = cases.find("add_test(", at + 1)) ++add_tests;
     CHECK(add_tests == std::size_t(CountListed(listed.out)));
-    CHECK(add_tests > 400);
+    CHECK(add_tests > 100);
     std::string filter = name;
     for (std::size_t at = filter.find(','); at != std::string::npos; at = filter.find(',', at + 2)) filter.insert(at, "\\");
     CHECK(cases.find("add_test([==[" + name + "]==] [==[" + self + "]==] [==[--test-case=" + filter + "]==]") !=
@@ -57,23 +59,50 @@ TEST_SUITE("core") {
     const auto props = cases.find("set_tests_properties([==[" + name + "]==]");
     REQUIRE(props != std::string::npos);
     const std::string properties = cases.substr(props, cases.find('\n', props) - props);
-    CHECK(properties.find("LABELS [==[core]==]") != std::string::npos);
+    CHECK(properties.find("LABELS [==[core;e2e]==]") != std::string::npos);
     CHECK(properties.find("SKIP_RETURN_CODE 77") != std::string::npos);  // the runner's "skipped"
+    CHECK(properties.find("ENVIRONMENT") == std::string::npos);  // only the smoke set's are pointed elsewhere
     // Another suite's case gets its own label, not the first one seen.
-    CHECK(cases.find("LABELS [==[readme]==]") != std::string::npos);
+    CHECK(cases.find("LABELS [==[app;e2e]==]") != std::string::npos);
 
     // Without the course data the same cases are registered: those that need it are listed,
     // so that CTest reports them as skipped rather than leaving them out.
     const auto without_data = prt::test::RunCommand(
         "PRT_SHARED_DATA=none PRT_REQUIRE_SHARED_DATA=0 " + prt::test::Q(PRT_CMAKE_COMMAND) + " -D TEST_EXECUTABLE=" + prt::test::Q(self) +
-        " -D TEST_WORKING_DIR=" + prt::test::Q(dir) + " -D CTEST_FILE=" + prt::test::Q(dir + "/no_data.cmake") +
+        " -D TIER=e2e -D TEST_WORKING_DIR=" + prt::test::Q(dir) + " -D CTEST_FILE=" + prt::test::Q(dir + "/no_data.cmake") +
         " -D TEST_TIMEOUT=600 -D SKIP_RETURN_CODE=77 -P " +
         prt::test::Q(prt::test::SourceDir() + "/tests/discover_tests.cmake"));
     REQUIRE(without_data.exit_code == 0);
     const std::string no_data = prt::ReadFile(dir + "/no_data.cmake");
     CHECK(no_data == cases);
-    CHECK(no_data.find("add_test([==[readme: the course commands run against the course's framework]==]") !=
-          std::string::npos);
+    CHECK(no_data.find("add_test([==[course files: mary's undefined material is said once, and her files load in the "
+                       "viewer]==]") != std::string::npos);
+
+    // A sanitizer pass's smoke set: only the cases the list names for that pass, this one
+    // among them (its name's characters read from the list as from the listing), each with the
+    // smoke label and the variables that point it at another prt; a name the program lacks fails.
+    const auto smoke = [&](const std::string& list, const std::string& out) {
+      prt::WriteFileAtomic(dir + "/smoke.txt", list);
+      return prt::test::RunCommand(
+          prt::test::Q(PRT_CMAKE_COMMAND) + " -D TEST_EXECUTABLE=" + prt::test::Q(self) + " -D TIER=e2e -D TEST_WORKING_DIR=" +
+          prt::test::Q(dir) + " -D CTEST_FILE=" + prt::test::Q(dir + "/" + out) + " -D TEST_TIMEOUT=600 -D SKIP_RETURN_CODE=77" +
+          " -D SMOKE_LIST=" + prt::test::Q(dir + "/smoke.txt") + " -D SMOKE_PASS=asan" +
+          " '-D SMOKE_ENVIRONMENT=PRT_BINARY=/x/prt;PRT_TEST_TMP=/x/tmp' -P " +
+          prt::test::Q(prt::test::SourceDir() + "/tests/discover_tests.cmake"));
+    };
+    const std::string other = "runner: the small scene of the tests is small";
+    REQUIRE(smoke("# a comment\nasan: " + name + "\ntsan: " + other + "\n", "smoke.cmake").exit_code == 0);
+    const std::string smoke_cases = prt::ReadFile(dir + "/smoke.cmake");
+    std::size_t smoke_tests = 0;
+    for (auto at = smoke_cases.find("add_test("); at != std::string::npos; at = smoke_cases.find("add_test(", at + 1))
+      ++smoke_tests;
+    CHECK(smoke_tests == 1);  // the tsan line is another pass's
+    CHECK(smoke_cases.find("add_test([==[" + name + "]==]") != std::string::npos);
+    CHECK(smoke_cases.find("LABELS [==[core;e2e;smoke]==]") != std::string::npos);
+    CHECK(smoke_cases.find("ENVIRONMENT [==[PRT_BINARY=/x/prt;PRT_TEST_TMP=/x/tmp]==]") != std::string::npos);
+    const auto stale = smoke("asan: no test has this name\n", "stale.cmake");
+    CHECK(stale.exit_code != 0);
+    CHECK(stale.err.find("'no test has this name'") != std::string::npos);
 
     // The registered filter selects exactly this case.
     const auto selected = prt::test::RunCommand(self + " " + prt::test::Q("--test-case=" + filter) +
@@ -87,10 +116,8 @@ TEST_SUITE("core") {
     CHECK(none.err.find("no test case matches the filters") != std::string::npos);
   }
 
-  TEST_CASE("runner: the scaled tests' small scene is used under a sanitizer only, and is small") {
-    const std::string option = prt::test::ScaledMesh("runner_scaled");
-    CHECK(option.empty() == !prt::test::kSanitized);
-    // The scene itself: the knot and the ground, 241 vertices, as --mesh loads it.
+  TEST_CASE("runner: the small scene of the tests is small") {
+    // The scene: the knot and the ground, 241 vertices, as --mesh loads it.
     const std::string dir = prt::test::ScratchDir("runner_small_scene");
     const auto r = prt::test::RunPrt("precompute --quiet --transport unshadowed --mesh " +
                                      prt::test::Q(prt::test::WriteSmallScene(dir)) + " --out " + prt::test::Q(dir + "/out"));

@@ -200,20 +200,6 @@ TEST_CASE("cpca: the error never grows with more terms, and the weights project 
   }
 }
 
-TEST_CASE("cpca: the same model for 1 and 2 threads") {
-  const Planted p = Plant(6, 3, 200, 25, 1.0, 21);  // 1200 rows: several chunks of rows
-  CpcaOptions o;
-  o.clusters = 9;
-  o.terms = 2;
-  o.candidates = 3;
-  const auto run = [&] { return CompressCpca(p.rows.data(), p.truth.size(), p.dim, o); };
-  const CpcaModel a = test::WithThreads(1, run), b = test::WithThreads(2, run);
-  CHECK(a.cluster == b.cluster);
-  CHECK(a.weights == b.weights);
-  CHECK(a.means == b.means);
-  CHECK(a.principal == b.principal);
-}
-
 TEST_CASE("cpca: principal helpers: Jacobi eigenpairs and Gram-Schmidt with a dependent row") {
   // Tolerance: double rounding of a 3 x 3 Jacobi diagonalisation.
   constexpr double kTol = 1e-12;

@@ -86,17 +86,3 @@ TEST_CASE("cpca shading: lossless compression shades as the full matrices") {
     CHECK(peak > 0.0);  // not vacuous
   }
 }
-
-TEST_CASE("cpca shading: the same radiance for 1 and 2 threads") {
-  const Mesh mesh = test::SphereOverPlane();
-  const Transport t = Matrices(false);
-  CpcaOptions o;
-  o.clusters = 6;
-  o.terms = 3;
-  const ShRgb light = test::BandLimitedLight(2);
-  const auto run = [&] {
-    const CpcaTransfer cpca = CompressTransferMatrices(t, o);
-    return GlossyFromCpca(mesh, cpca, t.material, light, glm::dvec3(3.0, 4.0, 2.0));
-  };
-  CHECK(test::WithThreads(1, run) == test::WithThreads(2, run));
-}

@@ -137,17 +137,4 @@ TEST_CASE("the lobe transfer table agrees with the direct rule at random normals
   }
 }
 
-TEST_CASE("lobe transfer at high lmax on a fresh thread: its low bands agree with a low-lmax call") {
-  // The quadrature keeps its rules per thread; asking for a new (larger) rule must not disturb
-  // the one in use. Bands 0..1 do not depend on lmax apart from the arc rule's size.
-  // Tolerance: two converged quadratures with different arc rules, 1e-9.
-  const Lobe lobe{LobeKind::kPhong, 100};
-  const glm::dvec3 n(0, 0, 1), r = MirrorView(n, ViewAt(60.0));
-  std::vector<double> high(CoeffCount(12)), low(CoeffCount(1));
-  std::thread([&] { LobeTransfer(lobe, n, r, 12, high.data()); }).join();
-  std::thread([&] { LobeTransfer(lobe, n, r, 1, low.data()); }).join();
-  CHECK(std::abs(low[0]) > 0.05);
-  for (std::size_t k = 0; k < low.size(); ++k) CHECK(std::abs(high[k] - low[k]) < 1e-9);
-}
-
 TEST_SUITE_END();

@@ -104,13 +104,4 @@ TEST_SUITE("precompute") {
     CHECK(e128 / e256 == doctest::Approx(4.0).epsilon(0.25));
   }
 
-  TEST_CASE("projection is bit-identical for any thread count") {
-    const ShRgb truth = TestCoefficients();
-    const auto env = test::CubemapFrom([&](const glm::dvec3& d) { return Evaluate(truth, d); }, 48);
-    const ShRgb one = test::WithThreads(1, [&] { return ProjectLight(*env, 6); });
-    const ShRgb two = test::WithThreads(2, [&] { return ProjectLight(*env, 6); });
-    const ShRgb five = test::WithThreads(5, [&] { return ProjectLight(*env, 6); });
-    CHECK(one == two);
-    CHECK(one == five);
-  }
 }

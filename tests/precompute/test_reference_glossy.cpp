@@ -230,23 +230,6 @@ TEST_SUITE("precompute") {
     }
   }
 
-  TEST_CASE("glossy reference: results do not depend on the thread count") {
-    const auto env = MakeSky(SkyParams{});
-    const Mesh mesh = SphereOverPlane(6, 12, glm::vec3(0.5f));
-    ReferenceOptions o;
-    o.mode = TransportMode::kInterreflection;
-    o.bounces = 2;
-    o.samples = 64;
-    o.table_rows = 32, o.table_cols = 64;
-    o.material = ParseMaterial("phong:20,0.4");
-    o.eye = kEye;
-    const Reference one = test::WithThreads(1, [&] { return ComputeReference(mesh, *env, o); });
-    const Reference two = test::WithThreads(2, [&] { return ComputeReference(mesh, *env, o); });
-    CHECK(one.radiance == two.radiance);
-    CHECK(one.error == two.error);
-    CHECK(one.rays == two.rays);
-  }
-
   TEST_CASE("glossy reference: the SH fixed-camera transport agrees under a band-limited light") {
     // For a light of bands <= 2, B = albedo (L.T) + L.G is exact up to the transport's own
     // sampling (no product is truncated), so the two codes differ only by Monte Carlo error.

@@ -164,17 +164,6 @@ TEST_SUITE("precompute") {
     CHECK(checked == 9);
   }
 
-  TEST_CASE("results are identical for any thread count") {
-    const Mesh scene = Concat(MakeSphere(24, 1.0f, glm::vec3(0, 1.2f, 0)), MakePlane(6.0f, 8));
-    TransportOptions o;
-    o.mode = TransportMode::kInterreflection;
-    o.samples = 128;
-    o.bounces = 2;
-    const Transport a = test::WithThreads(1, [&] { return ComputeTransport(scene, o, nullptr); });
-    const Transport b = test::WithThreads(3, [&] { return ComputeTransport(scene, o, nullptr); });
-    CHECK(a.coeffs == b.coeffs);
-  }
-
   TEST_CASE("white furnace: albedo 1, constant light, 64 bounces on a knotted mesh tend to 1") {
     const Mesh knot = WhiteKnot();
     TransportOptions o;

@@ -175,17 +175,4 @@ TEST_CASE("a glossy material leaves the diffuse transfer as it was, and the cach
   CHECK(TransportKey(mesh, matrices) == TransportKey(mesh, sharper));
 }
 
-TEST_CASE("glossy transfer does not depend on the thread count") {
-  const Mesh mesh = SphereOverPlane();
-  TransportOptions o;
-  o.mode = TransportMode::kInterreflection;
-  o.samples = 128;
-  o.material = ParseMaterial("phong:20,0.4");
-  o.eye = glm::dvec3(3, 2, 4);
-  const Transport one = test::WithThreads(1, [&] { return ComputeTransport(mesh, o, nullptr); });
-  const Transport two = test::WithThreads(2, [&] { return ComputeTransport(mesh, o, nullptr); });
-  CHECK(one.glossy == two.glossy);
-  CHECK(one.coeffs == two.coeffs);
-}
-
 TEST_SUITE_END();

@@ -249,18 +249,6 @@ TEST_SUITE("raster") {
     CHECK(frame.coverage[0] == 0.f);
   }
 
-  TEST_CASE("The image does not depend on the number of threads") {
-    const prt::Mesh knot = prt::MakeTorusKnot(2, 3, 0.2f, 128, 16);
-    std::vector<glm::vec3> colors;
-    for (const auto& n : knot.normals) colors.push_back(0.5f * n + 0.5f);
-    const Camera camera = prt::FrameBounds(glm::vec3(-1.f), glm::vec3(1.f), 1.5f);
-    const auto draw = [&] { return prt::Rasterize(camera, 150, 100, knot.positions, knot.triangles, colors); };
-    const auto one = prt::test::WithThreads(1, draw);
-    const auto three = prt::test::WithThreads(3, draw);
-    CHECK(one.image.pixels == three.image.pixels);
-    CHECK(one.coverage == three.coverage);
-  }
-
   TEST_CASE("Bad input is reported, not drawn") {
     const std::vector<glm::vec3> p = {{0, 0, -1}, {1, 0, -1}, {0, 1, -1}};
     CHECK_THROWS_AS(prt::Rasterize(AxisCamera(), 8, 8, p, {{0, 1, 3}}, p), prt::Error);

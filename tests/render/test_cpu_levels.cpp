@@ -19,7 +19,7 @@
 #include "geometry/procedural.h"
 #include "io/png_io.h"
 #include "tests/env/env_test_util.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 using namespace prt;
 namespace fs = std::filesystem;
@@ -149,9 +149,9 @@ TEST_CASE("cpu levels: frames of every golden kind are the same bytes at every l
       {"glossy", mesh + " --albedo 0.5,0.5,0.5 --material phong:20,0.4 --orbit 20 --samples 256"},
       {"textured", mesh + cube + " --texture " + test::Q(dir + "/checker.png") + " --samples 256"},
       {"interreflection", mesh + cube + " --transport interreflection --bounces 2 --samples 256"},
-      // The demo's scene (a 67,584-triangle knot on a ground plane), interreflected, few rays;
-      // scaled under a sanitizer to the small scene (tests/README.md).
-      {"demo", test::ScaledMesh("cpu_levels_small_scene") + " --transport interreflection --samples 32"},
+      // The demo's knot on its ground at a tenth of its vertices (the small scene), interreflected,
+      // few rays.
+      {"demo", test::SmallSceneOption("cpu_levels_small_scene") + " --transport interreflection --samples 32"},
   };
   for (const auto& scene : scenes) {
     CAPTURE(scene.name);

@@ -6,7 +6,7 @@
 #include <doctest/doctest.h>
 
 #include "core/atomic_file.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt::test {
 

@@ -15,7 +15,7 @@
 #include "report/report_write.h"
 #include "report/stability.h"
 #include "tests/report/gfm_html.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace {
 

@@ -13,7 +13,7 @@
 #include "render/seen_vertices.h"
 #include "report/report_noise.h"
 #include "report/report_sweep.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt {
 namespace {
@@ -38,7 +38,7 @@ TransportOptions Shadowed(int samples, int hidden_samples, const std::vector<std
 }  // namespace
 
 TEST_SUITE("report") {
-  TEST_CASE("visible noise: the default's frame 0 is within 2 levels of a converged frame, 1024 directions everywhere is not" * prt::test::WholeStudy()) {
+  TEST_CASE("visible noise: the default's frame 0 is within 2 levels of a converged frame, 1024 directions everywhere is not") {
     // The report's scene (a knot on a ground plane, 2,673 vertices) under the sky with its sun,
     // shadowed (the direct term carries the sun's shadow, where the blotches were), 320 x 240
     // with the render's camera, supersampling, tone curve and exposure.

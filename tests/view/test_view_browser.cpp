@@ -1,6 +1,6 @@
 // prt view in a real browser: tests/view/browser_check.py drives Debian's chromium, headless,
 // over the DevTools Protocol (scripts/cdp.py); this case runs it on the small scene.
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt::test {
 

@@ -14,7 +14,7 @@
 
 #include "core/atomic_file.h"
 #include "io/png_io.h"
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 #include "tests/view/view_process.h"
 
 namespace fs = std::filesystem;

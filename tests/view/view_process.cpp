@@ -15,7 +15,7 @@
 
 #include <doctest/doctest.h>
 
-#include "tests/test_support.h"
+#include "tests/test_process.h"
 
 namespace prt::test {
 
@@ -83,72 +83,6 @@ int ViewProcess::Stop(int signal) {
   ::waitpid(pid_, &status, 0);
   pid_ = -1;
   return status;
-}
-
-std::string HttpReply::Header(const std::string& name) const {
-  const std::string key = "\r\n" + name + ": ";
-  const std::size_t at = head.find(key);
-  if (at == std::string::npos) return "";
-  const std::size_t start = at + key.size();
-  return head.substr(start, head.find("\r\n", start) - start);
-}
-
-int Connect(int port) {
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_port = htons(static_cast<std::uint16_t>(port));
-  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  REQUIRE(::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
-  return fd;
-}
-
-bool StillOpen(int fd) {
-  pollfd p{fd, POLLIN, 0};
-  return ::poll(&p, 1, 0) == 0;
-}
-
-HttpReply SendRaw(int port, const std::string& raw) {
-  HttpReply reply;
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_port = htons(static_cast<std::uint16_t>(port));
-  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0) {
-    ::close(fd);
-    return reply;
-  }
-  for (std::size_t sent = 0; sent < raw.size();) {
-    const ssize_t n = ::send(fd, raw.data() + sent, raw.size() - sent, MSG_NOSIGNAL);
-    if (n <= 0) break;
-    sent += static_cast<std::size_t>(n);
-  }
-  std::string all;
-  char buffer[65536];
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-  while (std::chrono::steady_clock::now() < deadline) {
-    pollfd p{fd, POLLIN, 0};
-    if (::poll(&p, 1, 1000) <= 0) continue;
-    const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
-    if (n <= 0) break;
-    all.append(buffer, static_cast<std::size_t>(n));
-  }
-  ::close(fd);
-  const std::size_t end = all.find("\r\n\r\n");
-  if (all.rfind("HTTP/1.1 ", 0) != 0 || end == std::string::npos) return reply;
-  reply.status = std::atoi(all.c_str() + 9);
-  reply.head = all.substr(0, end);
-  reply.body = all.substr(end + 4);
-  return reply;
-}
-
-HttpReply Request(int port, const std::string& target, const std::string& method, const std::string& extra,
-                  const std::string& body) {
-  std::string raw = method + " " + target + " HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\n" + extra +
-                    "Connection: close\r\n";
-  if (!body.empty() || method != "GET") raw += "Content-Length: " + std::to_string(body.size()) + "\r\n";
-  return SendRaw(port, raw + "\r\n" + body);
 }
 
 std::vector<std::string> SmallViewArgs(const std::string& dir) {

@@ -1,11 +1,12 @@
 #pragma once
 /// \file
 /// `prt view` as the tests run it: a child process serving the small scene, its address read
-/// from its stdout, and plain HTTP/1.1 requests to it over a socket of their own (so a test can
-/// send what a browser never would: a wrong Host, a malformed line, half a request).
+/// from its stdout; the tests talk to it with tests/view/http_client.h.
 
 #include <string>
 #include <vector>
+
+#include "tests/view/http_client.h"
 
 namespace prt::test {
 
@@ -38,28 +39,6 @@ class ViewProcess {
   int port_ = 0;
   std::string address_;
 };
-
-struct HttpReply {
-  int status = 0;                ///< 0: no reply (the connection closed first)
-  std::string head;              ///< status line and headers
-  std::string body;
-  std::string Header(const std::string& name) const;  ///< "" when absent
-};
-
-/// A socket connected to 127.0.0.1:port (REQUIREd to connect); the caller closes it.
-int Connect(int port);
-
-/// True while the server has not closed `fd`'s connection (nothing to read, no end of file).
-bool StillOpen(int fd);
-
-/// Sends `raw` (a whole request, as bytes) to 127.0.0.1:port and reads the reply until the
-/// server closes the connection or 30 s pass.
-HttpReply SendRaw(int port, const std::string& raw);
-
-/// A GET (or `method`) of `target` with the Host the server expects and `extra` header lines
-/// ("Name: value\r\n" each), Connection: close.
-HttpReply Request(int port, const std::string& target, const std::string& method = "GET",
-                  const std::string& extra = "", const std::string& body = "");
 
 /// The small scene's view arguments the tests share: WriteSmallScene in `dir`, lmax 3, 256
 /// directions a vertex, 160x120 frames, one thread per process kept free.

@@ -333,24 +333,6 @@ TEST_SUITE("wavelet") {
     CHECK(std::sqrt(num / den) < kFloatSums * 10);
   }
 
-  TEST_CASE("wavelet transport: the same coefficients for any thread count") {
-    const Mesh mesh = SunScene();
-    TransportOptions sh;
-    WaveletOptions w;
-    w.face_size = 16;
-    w.budget = 100;
-    const WaveletTransport one = test::WithThreads(1, [&] { return ComputeWaveletTransport(mesh, sh, w, nullptr); });
-    const WaveletTransport two = test::WithThreads(2, [&] { return ComputeWaveletTransport(mesh, sh, w, nullptr); });
-    CHECK(one.index == two.index);
-    CHECK(one.value == two.value);
-    CHECK(one.offsets == two.offsets);
-    CHECK(one.means == two.means);
-    CHECK(one.scale == two.scale);
-    CHECK(one.base == two.base);
-    CHECK(one.Kept() == 100 * mesh.vertex_count());
-    // Per vertex: 25 base floats (lmax 4), 6 means, 94 details of 4 bytes, a step; an offset.
-    CHECK(one.Bytes() == mesh.vertex_count() * (25 * 4 + 6 * 4 + 94 * 4 + 4) + (mesh.vertex_count() + 1) * 8);
-  }
 }
 
 }  // namespace prt

@@ -1,0 +1,106 @@
+// The threads tier of src/app (tests/README.md, "Tiers"): prt view's scene (app/view_scene.h) in
+// this process. Its background computations (another transport mode, the reference's error
+// figures) run on worker threads of their own while the server's threads draw frames of the mode
+// that is ready; a frame of the mode being computed is refused (NotReady) until it is ready, then
+// drawn; and a scene that goes while a computation runs waits for it. ThreadSanitizer watches the
+// workers, the drawing threads and the pool meet.
+#include <doctest/doctest.h>
+
+#include <atomic>
+#include <chrono>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "app/view_scene.h"
+#include "tests/threads_util.h"
+
+namespace prt {
+namespace {
+
+/// The small scene under the sky, SH lmax 2 with few directions: a transport in milliseconds.
+ViewSetup SmallSetup(const std::string& name) {
+  ViewSetup setup;
+  setup.scene.mesh = test::WriteSmallScene(test::ScratchDir(name));
+  setup.scene.lmax = 2;
+  setup.scene.samples = 32;
+  setup.scene.hidden_samples = 32;
+  setup.draw.width = 48;
+  setup.draw.height = 36;
+  setup.draw.ssaa = 1;
+  setup.envs = {setup.scene.env};
+  setup.cache = "none";
+  setup.reference_samples = 16;
+  return setup;
+}
+
+/// Waits (at most a minute: a broken build must not hang the suite) until `ready()` is true.
+template <class F>
+bool WaitFor(F&& ready) {
+  for (int i = 0; i < 6000; ++i) {
+    if (ready()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST_SUITE("app") {
+  TEST_CASE("threads: prt view's scene computes a mode and a reference in the background while threads draw the mode that is ready") {
+    const test::ThreadCountScope pool(test::kManyThreads);
+    ViewScene scene(SmallSetup("threads_view_scene"));
+    const FrameRequest shadowed = scene.Defaults();
+    REQUIRE(shadowed.mode == "shadowed");
+    FrameRequest bounced = shadowed;
+    bounced.mode = "interreflection";
+    double ms = 0;
+    const Image8 first = scene.Frame(shadowed, &ms);
+
+    scene.Compute("sh", "interreflection");
+    scene.MeasureReference(shadowed);
+    constexpr int kDrawers = 3, kFrames = 6;
+    std::atomic<int> differing{0};
+    std::vector<std::thread> drawers;
+    for (int t = 0; t < kDrawers; ++t)
+      drawers.emplace_back([&] {
+        for (int i = 0; i < kFrames; ++i) {
+          double draw_ms = 0;
+          if (scene.Frame(shadowed, &draw_ms).rgb != first.rgb) ++differing;
+          scene.StateJson();
+        }
+      });
+    for (auto& t : drawers) t.join();
+    CHECK(differing == 0);  // the same request draws the same bytes, whoever draws it
+
+    // The mode computed in the background: refused until ready, then drawn.
+    const bool ready = WaitFor([&] {
+      try {
+        scene.Frame(bounced, &ms);
+        return true;
+      } catch (const NotReady&) {
+        return false;
+      }
+    });
+    CHECK(ready);
+    const bool measured = WaitFor([&] {
+      try {
+        return scene.ErrorJson(shadowed).find("\"error\":") != std::string::npos;
+      } catch (const NotReady&) {
+        return false;
+      }
+    });
+    CHECK(measured);
+  }
+
+  TEST_CASE("threads: a view scene that goes while a background computation runs waits for it") {
+    const test::ThreadCountScope pool(test::kManyThreads);
+    ViewSetup setup = SmallSetup("threads_view_scene_gone");
+    setup.scene.samples = 256;  // a computation that is still running when the scene goes
+    ViewScene scene(setup);
+    scene.Compute("sh", "interreflection");
+    scene.MeasureReference(scene.Defaults());
+  }
+}
+
+}  // namespace prt

@@ -1,0 +1,115 @@
+// The threads tier of src/view (tests/README.md, "Tiers"): prt view's server in this process,
+// before a stand-in scene that counts what it is asked. The server's threads are the HTTP
+// library's pool, not prt's: clients on threads of their own ask at once for the page, the state
+// and frames (each frame checked against the request it answers), the server is stopped while
+// they ask, and ThreadSanitizer watches the handlers meet on the backend and on the server.
+#include <doctest/doctest.h>
+
+#include <atomic>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/error.h"
+#include "tests/threads_util.h"
+#include "tests/view/http_client.h"
+#include "view/view_server.h"
+
+namespace prt {
+namespace {
+
+/// A scene of one colour per frame: the frame's bytes are its width, so a reply that answered
+/// another request shows. Counts its calls, as a real backend's state would change under them.
+class CountingBackend : public ViewBackend {
+ public:
+  CountingBackend() {
+    limits_.bases = {"sh"};
+    limits_.modes = {"shadowed"};
+    defaults_.basis = "sh";
+    defaults_.mode = "shadowed";
+    defaults_.draw.width = 16;
+    defaults_.draw.height = 8;
+    defaults_.draw.ssaa = 1;
+  }
+  const ViewLimits& Limits() const override { return limits_; }
+  const FrameRequest& Defaults() const override { return defaults_; }
+  std::string StateJson() const override {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return "{\"frames\":" + std::to_string(frames_) + "}";
+  }
+  Image8 Frame(const FrameRequest& request, double* draw_ms) override {
+    Image8 image;
+    image.width = request.draw.width;
+    image.height = request.draw.height;
+    image.rgb.assign(std::size_t(3) * image.width * image.height, std::uint8_t(request.draw.width));
+    *draw_ms = 0.0;
+    std::lock_guard<std::mutex> lock(mutex_);
+    ++frames_;
+    return image;
+  }
+  void Compute(const std::string&, const std::string&) override {}
+  void MeasureReference(const FrameRequest&) override {}
+  std::string ErrorJson(const FrameRequest&) override { throw NotReady("not measured"); }
+  std::string Command(const FrameRequest&) const override { return "prt render\n"; }
+
+  int frames() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return frames_;
+  }
+
+ private:
+  ViewLimits limits_;
+  FrameRequest defaults_;
+  mutable std::mutex mutex_;
+  int frames_ = 0;
+};
+
+}  // namespace
+
+TEST_SUITE("view") {
+  TEST_CASE("threads: clients at once get their own frames, the page and the state; the server stops while they ask") {
+    CountingBackend backend;
+    ViewServer server(backend, "127.0.0.1", 0);
+    std::thread serving([&] { server.Serve(); });
+    constexpr int kClients = 6, kRounds = 8;
+    std::atomic<int> wrong{0}, answered{0};
+    std::vector<std::thread> clients;
+    for (int c = 0; c < kClients; ++c)
+      clients.emplace_back([&, c] {
+        for (int r = 0; r < kRounds; ++r) {
+          const int width = 16 + c;  // each client its own size: its frames' bytes are its own
+          const test::HttpReply frame = test::Request(server.port(), "/frame?size=" + std::to_string(width) + "x16");
+          const test::HttpReply state = test::Request(server.port(), "/state");
+          const test::HttpReply page = test::Request(server.port(), "/");
+          answered += frame.status == 200 && state.status == 200 && page.status == 200;
+          if (frame.body != std::string(std::size_t(3) * width * 16, char(width))) ++wrong;
+        }
+      });
+    for (auto& t : clients) t.join();
+    CHECK(wrong == 0);
+    CHECK(answered == kClients * kRounds);
+    CHECK(backend.frames() == kClients * kRounds);
+
+    // Stopped while clients still ask: Serve returns, and every request either was answered
+    // whole or found no server.
+    std::atomic<bool> asking{true};
+    std::atomic<int> torn{0};
+    std::vector<std::thread> late;
+    for (int c = 0; c < 3; ++c)
+      late.emplace_back([&] {
+        while (asking) {
+          const test::HttpReply frame = test::Request(server.port(), "/frame?size=20x16");
+          if (frame.status == 200 && frame.body.size() != std::size_t(3) * 20 * 16) ++torn;
+        }
+      });
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    server.Stop();
+    serving.join();
+    asking = false;
+    for (auto& t : late) t.join();
+    CHECK(torn == 0);
+  }
+}
+
+}  // namespace prt
