@@ -22,6 +22,7 @@ what=${1:-asan}
 shift || true
 jobs=${PRT_JOBS:-$(nproc)}
 release=${PRT_BUILD_DIR:-build}
+case "$release" in /*) release_path=$release ;; *) release_path=$PWD/$release ;; esac
 
 # -O1 -g1: GCC compiles the sanitized objects in half the time of RelWithDebInfo's -O2 -g (the
 # compiler's seconds over 21 of the files: 207 s at -O2 -g, 146 at -O2 -g1, 105 at -O1 -g1, 94 at
@@ -31,7 +32,7 @@ release=${PRT_BUILD_DIR:-build}
 # them: every step that can fail returns its status explicitly.
 build() {  # build NAME FOLDER CMAKE_OPTION TIERS
   cmake -S . -B "$2" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
-    "-D$3=ON" "-DPRT_TEST_TIERS=$4" "-DPRT_SMOKE_DRIVER=$PWD/$release/prt_e2e_tests" >/dev/null || return
+    "-D$3=ON" "-DPRT_TEST_TIERS=$4" "-DPRT_SMOKE_DRIVER=$release_path/prt_e2e_tests" >/dev/null || return
   phase "build ($1)" cmake --build "$2" --parallel "$jobs"
 }
 

@@ -84,6 +84,11 @@ inline constexpr bool kSanitized = false;
 /// and bounces in seconds. Returns the OBJ's path.
 std::string WriteSmallScene(const std::string& dir, const glm::vec3& knot_kd = glm::vec3(0.80f, 0.38f, 0.20f));
 
+/// The same knot and ground at another size: a knot of `segments` x `sides` on a ground of
+/// `quads` x `quads`, as dir/knot_scene.obj and .mtl. Returns the OBJ's path.
+std::string WriteKnotScene(const std::string& dir, int segments, int sides, int quads,
+                           const glm::vec3& knot_kd = glm::vec3(0.80f, 0.38f, 0.20f));
+
 /// " --mesh PATH" of WriteSmallScene in a scratch folder of `name`: the option that puts a test's
 /// run on the small scene.
 std::string SmallSceneOption(const std::string& name);

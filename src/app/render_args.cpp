@@ -4,7 +4,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
-#include <regex>
 #include <sstream>
 
 #include <glm/geometric.hpp>
@@ -21,6 +20,7 @@
 #include "core/text.h"
 #include "raster/camera.h"
 #include "raster/rasterizer.h"
+#include "render/render_frames.h"
 #include "sh/coeffs.h"
 
 namespace prt {
@@ -210,8 +210,7 @@ void CheckCpcaTerms(Args& args, const CpcaOptions& o, int lmax) {
 
 bool IsFolderOwnName(const std::string& file, const RenderJobOptions& o) {
   const std::string name = std::filesystem::path(file).filename().string();
-  static const std::regex frame("frame_[0-9]+\\.png", std::regex::icase);
-  if (LiesIn(file, o.out) && (std::regex_match(name, frame) || name.rfind(".prt", 0) == 0)) return true;
+  if (LiesIn(file, o.out) && (IsFrameName(name, true) || name.rfind(".prt", 0) == 0)) return true;
   if (o.cache == "none") return false;
   if (!o.cache.empty()) return ResolvedPath(file) == ResolvedPath(o.cache);
   // Every basis's cache in the folder: a run of one keeps the others' (render_job.cpp).

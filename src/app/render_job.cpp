@@ -2,7 +2,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <regex>
 
 #include "app/basis_table.h"
 #include "app/pipeline.h"
@@ -23,12 +22,11 @@ namespace {
 /// Frame files in the folder that this run did not write and prt's list did not name (written
 /// by someone else, or by a prt older than the list): never removed, but worth a word.
 std::size_t ForeignFrames(OutputFolder& folder) {
-  static const std::regex pattern("frame_[0-9]+\\.png");
   std::size_t n = 0;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(folder.dir(), ec)) {
     const std::string name = entry.path().filename().string();
-    n += std::regex_match(name, pattern) && !folder.Wrote(name);
+    n += IsFrameName(name) && !folder.Wrote(name);
   }
   return n;
 }

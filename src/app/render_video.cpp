@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <filesystem>
-#include <regex>
 
 #include "app/render_args.h"
 #include "core/error.h"

@@ -1,12 +1,12 @@
 #include "core/atomic_file.h"
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <regex>
 #include <sstream>
 
 #include <fcntl.h>
@@ -29,12 +29,18 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
 
 namespace {
 
-/// What follows kTemporaryTag in a temporary name: `<pid>_<n>`; the pid into `pid`.
+bool AllDigits(const std::string& s) {
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
+/// What follows kTemporaryTag in a temporary name: `<pid>_<n>`, the pid of 1 to 9 digits, n of at
+/// least one; the pid into `pid`.
 bool IsTemporarySuffix(const std::string& suffix, long* pid) {
-  static const std::regex pattern("([0-9]{1,9})_[0-9]+");
-  std::smatch m;
-  if (!std::regex_match(suffix, m, pattern)) return false;
-  if (pid) *pid = std::stol(m[1].str());
+  const std::size_t bar = suffix.find('_');
+  if (bar == std::string::npos || bar > 9) return false;
+  const std::string digits = suffix.substr(0, bar);
+  if (!AllDigits(digits) || !AllDigits(suffix.substr(bar + 1))) return false;
+  if (pid) *pid = std::stol(digits);
   return true;
 }
 

@@ -3,6 +3,7 @@
 #include "core/constants.h"
 #include "render/frame_writer.h"
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -82,6 +83,22 @@ std::string FrameName(int i, int count) {
   char buf[48];
   std::snprintf(buf, sizeof buf, "frame_%0*d.png", digits, i);
   return buf;
+}
+
+bool IsFrameName(const std::string& name, bool any_case) {
+  const std::string prefix = "frame_", suffix = ".png";
+  if (name.size() < prefix.size() + 1 + suffix.size()) return false;
+  const auto same = [any_case](char a, char b) {
+    return a == b || (any_case && std::tolower(static_cast<unsigned char>(a)) == b);
+  };
+  for (std::size_t i = 0; i < prefix.size(); ++i)
+    if (!same(name[i], prefix[i])) return false;
+  const std::size_t digits_end = name.size() - suffix.size();
+  for (std::size_t i = 0; i < suffix.size(); ++i)
+    if (!same(name[digits_end + i], suffix[i])) return false;
+  for (std::size_t i = prefix.size(); i < digits_end; ++i)
+    if (name[i] < '0' || name[i] > '9') return false;
+  return true;
 }
 
 Camera ChooseCamera(const Mesh& mesh, const RenderOptions& o, std::string* note) {

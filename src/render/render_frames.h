@@ -103,4 +103,8 @@ double FrameAngle(const RenderOptions& options, int i);
 /// needs (at least four), so that the names sort in frame order.
 std::string FrameName(int i, int count);
 
+/// True for a name FrameName gives (frame_, digits, .png), with any number of digits; with
+/// `any_case`, its letters in either case too (FRAME_0001.PNG).
+bool IsFrameName(const std::string& name, bool any_case = false);
+
 }  // namespace prt

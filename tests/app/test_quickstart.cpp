@@ -43,8 +43,20 @@ std::string RunQuickstart(const std::string& what, std::string* out = nullptr) {
               Q(build + "/Testing/Temporary/LastTest.log") + "\n");
   StandIn(bin + "/dpkg-query", log, "echo 'install ok installed'\n");
   StandIn(build + "/prt", log);
+  // What the build registered: each case's suite and tier (tests/discover_tests.cmake).
+  std::ofstream(build + "/prt_unit_tests_cases.cmake")
+      << "set_tests_properties([==[fast one]==] PROPERTIES WORKING_DIRECTORY [==[x]==] LABELS [==[core;unit]==] TIMEOUT 600)\n";
+  std::ofstream(build + "/prt_e2e_tests_cases.cmake")
+      << "set_tests_properties([==[slow one]==] PROPERTIES WORKING_DIRECTORY [==[x]==] LABELS [==[app;e2e]==] TIMEOUT 600)\n"
+      << "set_tests_properties([==[middle one]==] PROPERTIES WORKING_DIRECTORY [==[x]==] LABELS [==[view;e2e]==] TIMEOUT 600)\n";
+  // A budget table of the test's own (tests/README.md's is the real one): e2e's 10 s is less
+  // than the 15.5 its two cases take.
+  std::ofstream(dir + "/budgets.md") << "## Tiers\n\n### Budgets\n\n| tier | program | Release | ASan + UBSan | TSan |\n"
+                                        "|---|---|---|---|---|\n| `unit` | prt_unit_tests | 5 | 50 | - |\n"
+                                        "| `e2e` | prt_e2e_tests | 10 | 20 | 5 |\n\n### Next\n\n| `e2e` | x | 99 | 99 | 99 |\n";
   // PRT_PHASE_LOG emptied: under .ci/run these steps are not CI's phases.
-  const auto r = test::RunCommand("PATH=" + Q(bin) + ":\"$PATH\" PRT_PHASE_LOG= PRT_BUILD_DIR=" + Q(build) + " bash " +
+  const auto r = test::RunCommand("PATH=" + Q(bin) + ":\"$PATH\" PRT_PHASE_LOG= PRT_BUDGET_TABLE=" + Q(dir + "/budgets.md") +
+                                  " PRT_BUILD_DIR=" + Q(build) + " bash " +
                                   Q(test::SourceDir() + "/scripts/quickstart.sh") + " " + what);
   CAPTURE(r.err);
   CHECK(r.exit_code == 0);
@@ -55,7 +67,7 @@ std::string RunQuickstart(const std::string& what, std::string* out = nullptr) {
 }  // namespace
 
 TEST_SUITE("app") {
-  TEST_CASE("quick start: demo builds only the prt program, test builds everything and names the slowest tests") {
+  TEST_CASE("quick start: demo builds only the prt program, test builds everything, runs the default suite then the readme tier, and names the slowest tests and each tier's seconds") {
     const std::string demo = RunQuickstart("demo");
     CAPTURE(demo);
     CHECK(demo.find("--target prt\n") != std::string::npos);
@@ -76,8 +88,20 @@ TEST_SUITE("app") {
     CHECK(middle < fast);
     CHECK(all.find("cmake --build") != std::string::npos);
     CHECK(all.find("--target") == std::string::npos);  // every target: the tests too
-    CHECK(all.find("ctest --test-dir") != std::string::npos);
+    // The default suite, then the README's commands: two runs of ctest.
+    const auto suite = all.find("--label-exclude ^readme$"), readme = all.find("--label-regex ^readme$");
+    CHECK(suite != std::string::npos);
+    CHECK(readme != std::string::npos);
+    CHECK(suite < readme);
     CHECK(all.find("prt demo") == std::string::npos);
+    // Each tier's seconds in the run, against its Release budget of tests/README.md.
+    const auto table = printed.find("Tiers of this run (Release pass");
+    REQUIRE(table != std::string::npos);
+    const std::string tiers = printed.substr(table, printed.find("\n\n", table) - table);
+    CAPTURE(tiers);
+    CHECK(tiers.find("\n  unit          1          0          5\n") != std::string::npos);
+    CHECK(tiers.find("\n  e2e           2         16         10  OVER") != std::string::npos);  // 12.5 + 3 > 10
+    CHECK(tiers.find("readme") == std::string::npos);  // no test of it ran
   }
 }
 

@@ -3,6 +3,8 @@
 // write() fails with EFBIG part way through), and the old bytes must still be there.
 #include <doctest/doctest.h>
 
+#include <unistd.h>
+
 #include <csignal>
 #include <filesystem>
 #include <fstream>
@@ -108,5 +110,23 @@ TEST_SUITE("core") {
                          prt::Error);
     const std::string dir = prt::test::ScratchDir("atomic3");
     CHECK_THROWS_AS(prt::ReadFile(dir), prt::Error);
+  }
+
+  TEST_CASE("IsTemporaryName: the names AtomicFile gives, with their process, and no other") {
+    const prt::AtomicFile file(prt::test::ScratchDir("atomic_names") + "/frame_0001.png");
+    const std::string name = file.temp_path().substr(file.temp_path().rfind('/') + 1);
+    long pid = 0;
+    CHECK(prt::AtomicFile::IsTemporaryName(name, &pid));
+    CHECK(pid == long(::getpid()));
+    CHECK(prt::AtomicFile::IsTemporaryName(".a.png.prt-tmp123456789_0", &pid));
+    CHECK(pid == 123456789);
+    for (const char* other : {"a.png.prt-tmp12_3",           // not hidden
+                              ".a.png.prt-tmp_3",            // no pid
+                              ".a.png.prt-tmp1234567890_3",  // a pid of ten digits
+                              ".a.png.prt-tmp12_",           // no count
+                              ".a.png.prt-tmp12_3x", ".a.png.prt-tmp1x_3", ".a.png.prt-tmp12", ".a.png", ".prt-tmp12_3"}) {
+      CAPTURE(other);
+      CHECK_FALSE(prt::AtomicFile::IsTemporaryName(other));
+    }
   }
 }

@@ -1,6 +1,6 @@
-// The transport cache must never be reused for other inputs: a stale cache is a silently wrong
-// picture. Its key covers every input of the transport, checked one input at a time, in the
-// library and through the binary (a run from the cache gives the very bytes of a run without).
+// The transport cache through the binary: a render reuses precompute's transport, and a run from
+// the cache gives the very bytes of a run without it, whatever input changed. (The key, one input
+// at a time, in the library: test_transport_cache.cpp.)
 #include <doctest/doctest.h>
 
 #include <cstdio>

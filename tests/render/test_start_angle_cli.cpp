@@ -1,5 +1,7 @@
-// --start-angle: the light's turn at frame 0, so a sequence can start where prt view left it.
-#include "core/constants.h"
+// render --start-angle: the light's turn at frame 0, so a sequence can start where prt view left
+// it. (FrameAngle in-process: test_start_angle.cpp.)
+#include <doctest/doctest.h>
+
 #include "io/png_io.h"
 #include "render/render_frames.h"
 #include "tests/test_process.h"

@@ -1,7 +1,6 @@
-// How report.md, report.csv and error_vs_time.png carry the sweep's times
-// (report/report_time_plot.h, report/report_write.h): trusted times give slopes against seconds
-// and a seconds axis; a work-order violation or a wide spread puts a warning at the top, leaves
-// the slopes out and plots rays instead. Made-up rows, so every figure is known.
+// A real quick sweep of `prt report` on the small scene: its work counted (rays, basis
+// evaluations) and every run timed with a median and a range. (How report.md, report.csv and
+// error_vs_time.png carry made-up times: test_report_timing.cpp.)
 #include <doctest/doctest.h>
 
 #include <cstdint>
@@ -12,60 +11,10 @@
 #include <vector>
 
 #include "core/atomic_file.h"
-#include "core/output_folder.h"
-#include "report/report_time_plot.h"
-#include "report/report_write.h"
+#include "report/round_robin_timing.h"
 #include "tests/test_process.h"
 
 namespace prt {
-namespace {
-
-/// Samples whose middle half spans `spread` of the median (TimingStats::Spread) and whose
-/// range spans twice that.
-TimingStats Time(double median, double spread) {
-  TimingStats t;
-  t.median = median, t.samples = 5;
-  t.lower_quartile = median * (1 - spread / 2), t.upper_quartile = median * (1 + spread / 2);
-  t.min = median * (1 - spread), t.max = median * (1 + spread);
-  return t;
-}
-
-/// Shadowed, two samplers, 16..64 directions, lmax 1..2, timed at lmax 2: time proportional to
-/// the directions, 10% spread (20% range); error falling as 1/sqrt(directions).
-ReportData Sweep() {
-  ReportData d;
-  d.scene = "synthetic", d.environment = "sky", d.vertices = 100, d.max_lmax = 2;
-  d.timed_configurations = 6;
-  for (const char* sampler : {"uniform", "fibonacci"})
-    for (int n : {16, 32, 64})
-      for (int lmax : {1, 2}) {
-        SweepRow r;
-        r.mode = "shadowed", r.sampler = sampler, r.samples = r.directions = n, r.lmax = lmax, r.timed_lmax = 2;
-        r.time = Time(1e-3 * n, 0.1);
-        r.rays = 50u * n;
-        r.basis_evaluations = 7u * n;
-        r.sampling = {0.1, 0.2, 0.5 / std::sqrt(double(n))};
-        r.total = {0.1, 0.2, 0.05 + 0.5 / std::sqrt(double(n))};
-        d.rows.push_back(r);
-      }
-  ModeBaseline b;
-  b.mode = "shadowed", b.converged_samples = 4096, b.converged_self_error = 1e-4;
-  d.baselines.push_back(b);
-  return d;
-}
-
-std::string WrittenMarkdown(const ReportData& d, const std::string& name, std::string* csv = nullptr) {
-  const std::string dir = test::ScratchDir(name);
-  {
-    OutputFolder folder(dir, OutputPlan{"report", {"report.md", "report.csv", "error_vs_time.png"}, false});
-    WriteReport(folder, d);
-    folder.Finish();
-  }
-  if (csv) *csv = ReadFile(dir + "/report.csv");
-  return ReadFile(dir + "/report.md");
-}
-
-}  // namespace
 
 TEST_SUITE("report") {
   TEST_CASE("report timing: a real quick sweep counts its work and times every run with a median and a range") {

@@ -24,7 +24,7 @@ using prt::test::Q;
 
 /// A small version of the wavelet scene (48 x 8 knot on a 12 x 12 ground, 553 vertices) under the
 /// default sky, a cube of 6 x 16^2 texels, both modes; the largest budget keeps every coefficient.
-/// About 3 s in Release on 2 cores; run once and shared by the tests below.
+/// About 3 s in Release on 2 cores; run once, for the checks of its numbers and of what is written.
 const prt::WaveletStudy& SmallStudy() {
   static const prt::WaveletStudy study = [] {
     prt::WaveletStudyConfig c;
@@ -80,7 +80,8 @@ TEST_SUITE("report") {
     for (std::size_t v = knot; v < mesh.vertex_count(); ++v) CHECK(mesh.positions[v].y == 0.0f);
   }
 
-  TEST_CASE("basis study: errors fall with lmax and budget, memory is what each basis stores") {
+  /// The study's numbers: errors fall with lmax and budget, memory is what each basis stores.
+  void CheckStudyNumbers() {
     const prt::WaveletStudy& s = SmallStudy();
     const prt::WaveletStudyConfig& c = s.config;
     REQUIRE(s.vertices == 48 * 8 + 13 * 13);
@@ -161,7 +162,8 @@ TEST_SUITE("report") {
     }
   }
 
-  TEST_CASE("basis study: report.md section, report.csv rows and the two-panel chart") {
+  /// What the report writes of it: its report.md section, report.csv rows and the two-panel chart.
+  void CheckStudyWritten() {
     const prt::WaveletStudy& s = SmallStudy();
     const std::string md = prt::WaveletMarkdown(s, true);
     CHECK(md.find("## Basis: spherical harmonics against Haar wavelets") != std::string::npos);
@@ -227,4 +229,9 @@ TEST_SUITE("report") {
     }
   }
 
+  TEST_CASE("basis study: errors fall with lmax and budget, memory is what each basis stores, and the report writes them") {
+    // One study for both: under CTest each test case is a process of its own.
+    CheckStudyNumbers();
+    CheckStudyWritten();
+  }
 }

@@ -1,5 +1,5 @@
-// prt report --basis wavelet: the basis study's numbers (report_wavelet.h), its report.md section,
-// report.csv rows and chart, and the command that writes them.
+// prt report --basis wavelet --quick as a command: the basis section, its rows and its chart, and
+// none of them without --basis wavelet. (The study's numbers and writers: test_report_wavelet.cpp.)
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -11,58 +11,12 @@
 #include <vector>
 
 #include "core/atomic_file.h"
-#include "env/procedural.h"
 #include "io/png_io.h"
-#include "wavelet/transport.h"
-#include "report/report_wavelet.h"
-#include "sh/coeffs.h"
 #include "tests/test_process.h"
 
 namespace {
 
 using prt::test::Q;
-
-/// A small version of the wavelet scene (48 x 8 knot on a 12 x 12 ground, 553 vertices) under the
-/// default sky, a cube of 6 x 16^2 texels, both modes; the largest budget keeps every coefficient.
-/// About 3 s in Release on 2 cores; run once and shared by the tests below.
-const prt::WaveletStudy& SmallStudy() {
-  static const prt::WaveletStudy study = [] {
-    prt::WaveletStudyConfig c;
-    c.sh_lmax = {1, 2, 4};
-    c.sh_samples = 512;
-    c.budgets = {16, 64, 256, 6 * 16 * 16};
-    c.face_size = 16;
-    c.bounce_lmax = 2;
-    c.reference_samples = 1024;
-    c.progress = false;
-    const auto sky = prt::MakeSky(prt::SkyParams{});
-    prt::WaveletStudy s = prt::RunWaveletStudy(prt::MakeSunScene(48, 8, 12), *sky, c);
-    s.scene = "small sun scene";
-    s.environment = "sky";
-    return s;
-  }();
-  return study;
-}
-
-/// Bytes per vertex of SmallStudy's shadowed wavelet transport at `budget`, computed again here.
-double WaveletBytes(int budget) {
-  const prt::Mesh mesh = prt::MakeSunScene(48, 8, 12);
-  prt::TransportOptions sh;
-  prt::WaveletOptions w;
-  w.face_size = 16;
-  w.budget = budget;
-  w.selection = prt::WaveletOptions{}.selection;
-  const prt::WaveletTransport t = prt::ComputeWaveletTransport(mesh, sh, w, nullptr);
-  return double(t.Bytes()) / double(mesh.vertex_count());
-}
-
-/// Count of pixels that are not pure white in columns [x0, x1).
-std::size_t Inked(const prt::Image8& im, int x0, int x1) {
-  std::size_t n = 0;
-  for (int y = 0; y < im.height; ++y)
-    for (int x = x0; x < x1; ++x) n += prt::test::PixelAt(im, x, y) != glm::ivec3(255);
-  return n;
-}
 
 }  // namespace
 

@@ -1,5 +1,10 @@
-// view/page.h: the embedded page is the repository's own, and nothing else is served by name.
-#include "view/page.h"
+// The page of prt view is embedded in the program at build time (scripts/embed-files.cmake): a
+// change to one of its files embeds it again. (What is served by name: test_page.cpp.)
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
 
 #include "tests/test_process.h"
 
