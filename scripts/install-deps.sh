@@ -4,7 +4,7 @@
 # Idempotent: a machine that has everything runs no apt command at all.
 set -euo pipefail
 
-packages=(g++ cmake make pkg-config
+packages=(g++ cmake make ninja-build pkg-config
           zlib1g-dev libglm-dev libstb-dev libtinyobjloader-dev libnanoflann-dev doctest-dev libopenexr-dev
           libcpp-httplib-dev)
 # `bash scripts/install-deps.sh test`: also what the tests run besides prt. The --video tests

@@ -18,13 +18,18 @@ case "$what" in
 esac
 
 phase "install packages" bash scripts/install-deps.sh "$what"
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+# Ninja for a new build folder: it logs each compile's time, which scripts/slowest-files.sh prints
+# (a folder configured earlier keeps its generator).
+generator=()
+[ -f "$build/CMakeCache.txt" ] || generator=(-G Ninja)
+cmake -S . -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release >/dev/null
 
 # Only what the command runs: the demo needs the program, the tests need everything.
 case "$what" in
   demo) cmake --build "$build" --parallel "$(nproc)" --target prt
         "$build/prt" demo ;;
   test) phase "build (Release)" cmake --build "$build" --parallel "$(nproc)"
+        bash scripts/slowest-files.sh "$build"
         # Two runs (tests/README.md, "Tiers"): the default suite (the unit, threads and e2e tiers),
         # then the README's commands as written (the readme tier), each followed by its slowest
         # tests and its tiers' seconds against their budgets.

@@ -13,8 +13,11 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/image.h"
 #include "core/parallel.h"
+
+namespace prt {
+struct Image8;  // core/image.h
+}
 
 namespace prt::test {
 

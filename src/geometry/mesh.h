@@ -15,9 +15,10 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "texture/texture.h"
-
 namespace prt {
+
+/// A mesh names its textures; texture/texture.h defines them (its users include it).
+class Texture;
 
 struct Mesh {
   std::vector<glm::vec3> positions;  ///< world units, Y up

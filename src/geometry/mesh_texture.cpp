@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "texture/texture.h"
+
 namespace prt {
 
 glm::vec2 TriangleUv(const Mesh& mesh, std::uint32_t t, float u, float v) {

@@ -11,6 +11,7 @@
 #include "geometry/mesh_texture.h"
 #include "precompute/hit_light.h"
 #include "precompute/transport_bounce.h"
+#include "texture/texture.h"
 
 namespace prt {
 namespace {

@@ -216,7 +216,7 @@ TEST_SUITE("app") {
     fs::create_directories(tree + "/scripts");
     fs::create_directories(bin);
     fs::create_directories(tree + "/build");  // what cmake's configure step would make
-    for (const char* script : {"quickstart.sh", "phase.sh", "skipped-tests.sh", "slowest-tests.sh"})
+    for (const char* script : {"quickstart.sh", "phase.sh", "skipped-tests.sh", "slowest-tests.sh", "slowest-files.sh"})
       fs::copy_file(test::SourceDir() + "/scripts/" + script, tree + "/scripts/" + script);
     std::ofstream(tree + "/scripts/install-deps.sh") << "true\n";
     std::ofstream(bin + "/cmake") << "#!/bin/sh\ntrue\n";
@@ -273,6 +273,28 @@ TEST_SUITE("app") {
     }
     CHECK(lacking(tree) == "tests: 2 skipped, not passed, for want of what they compare with; tests/README.md says what "
                            "each needs\n");
+  }
+
+  TEST_CASE("slowest-files.sh: each target's compiler seconds and the slowest files of the last build, from Ninja's log") {
+    const std::string dir = test::ScratchDir("ci_slowest_files");
+    // Ninja's log (start and end in ms, mtime, output, hash); a file compiled twice counts once,
+    // at its latest time; links and other steps are not compiles.
+    std::ofstream(dir + "/.ninja_log") << "# ninja log v5\n"
+                                          "0\t9000\t1\tCMakeFiles/prtcore.dir/src/a.cpp.o\tx\n"
+                                          "0\t2500\t1\tCMakeFiles/prtcore.dir/src/b.cpp.o\tx\n"
+                                          "0\t5000\t1\ttests/CMakeFiles/prt_unit_tests.dir/core/t.cpp.o\tx\n"
+                                          "0\t30000\t1\tprt_unit_tests\tx\n"
+                                          "0\t1500\t2\tCMakeFiles/prtcore.dir/src/a.cpp.o\tx\n";
+    const auto r = test::RunCommand("bash " + Q(test::SourceDir() + "/scripts/slowest-files.sh") + " " + Q(dir) + " 2");
+    CAPTURE(r.out);
+    CHECK(r.exit_code == 0);
+    CHECK(r.out.find(": 9 s over 3 files (prt_unit_tests 5 s, prtcore 4 s)") != std::string::npos);
+    CHECK(r.out.find("The 2 slowest to compile:\n     5.0 s  core/t.cpp\n     2.5 s  src/b.cpp\n") != std::string::npos);
+    // A folder of another generator: said, not an error.
+    const std::string other = test::ScratchDir("ci_slowest_files_make");
+    const auto none = test::RunCommand("bash " + Q(test::SourceDir() + "/scripts/slowest-files.sh") + " " + Q(other));
+    CHECK(none.exit_code == 0);
+    CHECK(none.out.find("no compile times") != std::string::npos);
   }
 
   TEST_CASE("install-deps: what it installs to build, and to test (ffmpeg, cmark-gfm, chromium, python3)") {

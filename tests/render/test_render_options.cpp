@@ -4,8 +4,8 @@
 // once.
 #include <doctest/doctest.h>
 
+#include <cctype>
 #include <filesystem>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -19,6 +19,27 @@ namespace prt {
 namespace {
 namespace fs = std::filesystem;
 
+/// `text` without each span from `open` to the next `close` (both removed; to the end without a
+/// close).
+std::string WithoutSpans(std::string text, char open, char close) {
+  for (std::size_t at; (at = text.find(open)) != std::string::npos;) {
+    const std::size_t end = text.find(close, at + 1);
+    text.erase(at, end == std::string::npos ? std::string::npos : end - at + 1);
+  }
+  return text;
+}
+
+bool IsIdentifierChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+/// Whether `sources` reads `.field` (a member access of exactly that name).
+bool ReadsField(const std::string& sources, const std::string& field) {
+  for (std::size_t at = sources.find("." + field); at != std::string::npos; at = sources.find("." + field, at + 1)) {
+    const std::size_t end = at + 1 + field.size();
+    if (end == sources.size() || !IsIdentifierChar(sources[end])) return true;
+  }
+  return false;
+}
+
 /// The field names of `struct NAME { ... };` in `header`, read from its declarations (several
 /// declarators on a line each count; initialisers and comments skipped).
 std::vector<std::string> FieldsOf(const std::string& header, const std::string& name) {
@@ -29,16 +50,18 @@ std::vector<std::string> FieldsOf(const std::string& header, const std::string& 
   std::vector<std::string> fields;
   std::istringstream lines(body);
   for (std::string line; std::getline(lines, line);) {
-    line = std::regex_replace(line, std::regex("//.*"), "");
-    line = std::regex_replace(line, std::regex("\\{[^}]*\\}"), "");    // brace initialisers
-    line = std::regex_replace(line, std::regex("<[^>]*>"), "");        // template arguments
+    line = line.substr(0, line.find("//"));
+    line = WithoutSpans(line, '{', '}');  // brace initialisers
+    line = WithoutSpans(line, '<', '>');  // template arguments
     if (line.find(';') == std::string::npos || line.find('(') != std::string::npos) continue;
     line = line.substr(0, line.find(';'));
     std::istringstream parts(line);
     for (std::string part; std::getline(parts, part, ',');) {
       part = part.substr(0, part.find('='));
-      std::smatch m;
-      if (std::regex_search(part, m, std::regex("([A-Za-z_][A-Za-z_0-9]*)\\s*$"))) fields.push_back(m[1]);
+      while (!part.empty() && std::isspace(static_cast<unsigned char>(part.back()))) part.pop_back();
+      std::size_t begin = part.size();
+      while (begin > 0 && IsIdentifierChar(part[begin - 1])) --begin;
+      if (begin < part.size() && !std::isdigit(static_cast<unsigned char>(part[begin]))) fields.push_back(part.substr(begin));
     }
   }
   return fields;
@@ -61,7 +84,7 @@ TEST_SUITE("render") {
     }
     for (const std::string& field : fields) {
       CAPTURE(field);
-      CHECK(std::regex_search(sources, std::regex("\\." + field + "\\b")));
+      CHECK(ReadsField(sources, field));
     }
   }
 

@@ -24,6 +24,7 @@
 #include "precompute/hit_light.h"
 #include "precompute/reference.h"
 #include "precompute/transport.h"
+#include "texture/texture.h"
 
 using namespace prt;
 

@@ -14,6 +14,7 @@
 #include "io/obj_loader.h"
 #include "io/png_io.h"
 #include "precompute/transport.h"
+#include "texture/texture.h"
 #include "tests/test_support.h"
 
 using namespace prt;
