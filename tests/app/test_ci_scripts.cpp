@@ -336,7 +336,10 @@ TEST_SUITE("app") {
         << "source scripts/phase.sh\nphase \"stand-in sanitizers\" bash -c \"exit $STAND_IN\"\n";
     for (const int status : {0, 5}) {
       CAPTURE(status);
-      const auto r = test::RunCommand("STAND_IN=" + std::to_string(status) + " bash " + Q(tree + "/.ci/run"));
+      // A run of under a second: within a budget of a minute, over one of -1 s.
+      const int budget = status == 0 ? 60 : -1;
+      const auto r = test::RunCommand("STAND_IN=" + std::to_string(status) + " PRT_CI_BUDGET=" + std::to_string(budget) +
+                                      " bash " + Q(tree + "/.ci/run"));
       CAPTURE(r.out);
       CHECK((r.exit_code == 0) == (status == 0));
       CHECK(r.out.find("stand-in build") != std::string::npos);
@@ -345,7 +348,8 @@ TEST_SUITE("app") {
       const auto last = r.out.rfind("CI: ");
       REQUIRE(last != std::string::npos);
       const std::string line = r.out.substr(last, r.out.find('\n', last) - last);
-      CHECK(line.find(status == 0 ? "s in all, passed" : "s in all, FAILED (exit 5)") != std::string::npos);
+      CHECK(line.find(status == 0 ? " s in all (budget 60 s), passed" : " s in all (budget -1 s, OVER), FAILED (exit 5)") !=
+            std::string::npos);
     }
   }
 }

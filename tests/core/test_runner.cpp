@@ -5,6 +5,7 @@
 // nothing fails (tests/main.cpp). This program is the e2e tier's.
 #include <doctest/doctest.h>
 
+#include <cctype>
 #include <sstream>
 #include <string>
 
@@ -102,7 +103,12 @@ TEST_SUITE("core") {
     CHECK(smoke_cases.find("ENVIRONMENT [==[PRT_BINARY=/x/prt;PRT_TEST_TMP=/x/tmp]==]") != std::string::npos);
     const auto stale = smoke("asan: no test has this name\n", "stale.cmake");
     CHECK(stale.exit_code != 0);
-    CHECK(stale.err.find("'no test has this name'") != std::string::npos);
+    // CMake wraps its messages' lines: compared with every run of white space made one space.
+    std::string said;
+    for (char c : stale.err)
+      if (!std::isspace(static_cast<unsigned char>(c))) said += c;
+      else if (!said.empty() && said.back() != ' ') said += ' ';
+    CHECK(said.find("names 'no test has this name' for asan") != std::string::npos);
 
     // The registered filter selects exactly this case.
     const auto selected = prt::test::RunCommand(self + " " + prt::test::Q("--test-case=" + filter) +
