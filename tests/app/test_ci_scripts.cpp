@@ -4,6 +4,7 @@
 // over stand-ins for the two scripts it calls.
 #include <doctest/doctest.h>
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -144,6 +145,12 @@ TEST_SUITE("app") {
       CHECK(call.find("-DPRT_SMOKE_DRIVER=" + test::SourceDir() + "/" + dir.substr(dir.rfind('/') + 1) +
                       "_release/prt_e2e_tests") != std::string::npos);
     }
+    // A new folder: Ninja, which logs each compile; one configured before keeps its generator.
+    for (const auto& [call, folder] : {std::pair<std::string, std::string>{asan_build, "build-asan"}, {tsan_build, "build-tsan"}}) {
+      CAPTURE(folder);
+      const bool fresh = !fs::exists(test::SourceDir() + "/" + folder + "/CMakeCache.txt");
+      CHECK((call.find(" -G Ninja ") != std::string::npos) == fresh);
+    }
     CHECK(asan_build.find("-DPRT_TEST_TIERS=unit;threads ") != std::string::npos);
     CHECK(tsan_build.find("-DPRT_TEST_TIERS=threads ") != std::string::npos);
     CHECK(CallWith(calls, "cmake --build build-asan", "") != "");
@@ -223,7 +230,7 @@ TEST_SUITE("app") {
     // The default suite's run skips two; the readme tier's run (--label-regex) skips none.
     std::ofstream(bin + "/ctest") << "#!/bin/sh\n"
                                      "case \"$*\" in *--label-regex*) echo '100% tests passed, 0 tests failed out of 1'; "
-                                     "exit $STAND_IN ;; esac\n"
+                                     "exit ${STAND_IN_README:-$STAND_IN} ;; esac\n"
                                      "echo '1/5 Test #12: obj: mary from the course data .......***Skipped   0.01 sec'\n"
                                      "echo '2/5 Test #40: readme: the course commands ..........***Skipped   0.01 sec'\n"
                                      "echo '100% tests passed, 0 tests failed out of 5'\n"
@@ -243,6 +250,10 @@ TEST_SUITE("app") {
       const std::string last = out.substr(out.rfind('\n') + 1);
       CHECK(last.rfind("tests: 2 skipped, not passed, for want of the course's files (../shared/data", 0) == 0);
     }
+    // The readme tier's run alone fails: so does the command.
+    const auto readme = test::RunCommand("cd " + Q(tree) + " && STAND_IN=0 STAND_IN_README=7 PATH=" + Q(bin) +
+                                         ":\"$PATH\" PRT_SHARED_DATA=none PRT_PHASE_LOG= bash scripts/quickstart.sh test");
+    CHECK(readme.exit_code == 7);
     // Nothing skipped: said as well.
     std::ofstream(tree + "/none.log") << "100% tests passed, 0 tests failed out of 5\n";
     const auto none = test::RunCommand("bash " + Q(tree + "/scripts/skipped-tests.sh") + " " + Q(tree + "/none.log"));
@@ -273,6 +284,92 @@ TEST_SUITE("app") {
     }
     CHECK(lacking(tree) == "tests: 2 skipped, not passed, for want of what they compare with; tests/README.md says what "
                            "each needs\n");
+  }
+
+  TEST_CASE("slowest-tests.sh: each tier's seconds against its budget in the column of the folder's pass, OVER when beyond it") {
+    // A folder of the ASan + UBSan pass (its CMakeCache says so): two unit cases, a smoke case of
+    // the e2e tier (labels suite;e2e;smoke) and a readme case, which that pass has no budget for.
+    const std::string dir = test::ScratchDir("ci_slowest_tests"), build = dir + "/build";
+    fs::create_directories(build + "/Testing/Temporary");
+    std::ofstream(build + "/CMakeCache.txt") << "PRT_SANITIZE:BOOL=ON\nPRT_TSAN:BOOL=OFF\n";
+    std::ofstream(build + "/Testing/Temporary/LastTest.log") << "1/4 Test: a\nTest time =  30.00 sec\n"
+                                                                "2/4 Test: b\nTest time =  15.00 sec\n"
+                                                                "3/4 Test: c\nTest time =   8.00 sec\n"
+                                                                "4/4 Test: d\nTest time =   2.00 sec\n";
+    std::ofstream(build + "/prt_unit_tests_cases.cmake")
+        << "set_tests_properties([==[a]==] PROPERTIES WORKING_DIRECTORY [==[x]==] LABELS [==[core;unit]==] TIMEOUT 60)\n"
+           "set_tests_properties([==[b]==] PROPERTIES WORKING_DIRECTORY [==[x]==] LABELS [==[sh;unit]==] TIMEOUT 60)\n";
+    std::ofstream(build + "/prt_smoke_cases.cmake")
+        << "set_tests_properties([==[c]==] PROPERTIES WORKING_DIRECTORY [==[x]==] LABELS [==[app;e2e;smoke]==] TIMEOUT 60 "
+           "ENVIRONMENT [==[PRT_BINARY=/x]==])\n";
+    std::ofstream(build + "/prt_readme_tests_cases.cmake")
+        << "set_tests_properties([==[d]==] PROPERTIES WORKING_DIRECTORY [==[x]==] LABELS [==[readme;readme]==] TIMEOUT 60)\n";
+    // Each pass's column its own number: the unit tier (45 s) is within ASan's 50 but over
+    // Release's 40 and TSan's 44; the e2e tier (8 s) is over ASan's 7.
+    std::ofstream(dir + "/budgets.md") << "### Budgets\n\n| tier | program | Release | ASan + UBSan | TSan |\n|---|---|---|---|---|\n"
+                                          "| `unit` | prt_unit_tests | 40 | 50 | 44 |\n| `e2e` | prt_e2e_tests | 300 | 7 | 6 |\n"
+                                          "| `readme` | prt_readme_tests | 350 | – | – |\n";
+    const auto r = test::RunCommand("PRT_BUDGET_TABLE=" + Q(dir + "/budgets.md") + " bash " +
+                                    Q(test::SourceDir() + "/scripts/slowest-tests.sh") + " " + Q(build) + " 2");
+    CAPTURE(r.out);
+    CHECK(r.exit_code == 0);
+    CHECK(r.out.find("The slowest 2 of 4 test cases") != std::string::npos);
+    CHECK(r.out.find("(ASan + UBSan pass;") != std::string::npos);
+    CHECK(r.out.find("\n  unit          2         45         50\n") != std::string::npos);
+    CHECK(r.out.find("\n  e2e           1          8          7  OVER\n") != std::string::npos);
+    CHECK(r.out.find("\n  readme        1          2       none  (no budget for this pass)\n") != std::string::npos);
+    // The same folder as TSan's: its column.
+    std::ofstream(build + "/CMakeCache.txt") << "PRT_SANITIZE:BOOL=OFF\nPRT_TSAN:BOOL=ON\n";
+    const auto tsan = test::RunCommand("PRT_BUDGET_TABLE=" + Q(dir + "/budgets.md") + " bash " +
+                                       Q(test::SourceDir() + "/scripts/slowest-tests.sh") + " " + Q(build));
+    CAPTURE(tsan.out);
+    CHECK(tsan.out.find("(TSan pass;") != std::string::npos);
+    CHECK(tsan.out.find("\n  unit          2         45         44  OVER\n") != std::string::npos);
+    // tests/README.md's own table: every tier with a budget in the Release column.
+    const std::string readme = ReadFile(test::SourceDir() + "/tests/README.md");
+    for (const char* tier : {"unit", "threads", "e2e", "readme"}) {
+      CAPTURE(tier);
+      const auto row = readme.find(std::string("\n| `") + tier + "` | `prt_" + tier + "_tests` | ", readme.find("### Budgets"));
+      REQUIRE(row != std::string::npos);
+      CHECK(std::isdigit(static_cast<unsigned char>(readme[readme.find("_tests` | ", row) + 10])));
+    }
+  }
+
+  TEST_CASE("mutants.py: a mutant is caught by whichever tier's program fails, the readme's too, or by a crash; one that no program notices survives") {
+    // A project of its own: four programs named as the tiers' are, each failing when the header
+    // it reads holds another number (the e2e program crashes instead), and four mutants.
+    const std::string tree = test::ScratchDir("ci_mutants");
+    fs::create_directories(tree + "/scripts");
+    fs::create_directories(tree + "/src");
+    fs::create_directories(tree + "/tests");
+    fs::copy_file(test::SourceDir() + "/scripts/mutants.py", tree + "/scripts/mutants.py");
+    std::ofstream(tree + "/CMakeLists.txt")
+        << "cmake_minimum_required(VERSION 3.20)\nproject(fake C)\n"
+           "foreach(tier unit threads e2e readme)\n"
+           "  add_executable(prt_${tier}_tests src/${tier}.c)\n"
+           "  target_include_directories(prt_${tier}_tests PRIVATE src)\n"
+           "endforeach()\n";
+    for (const char* tier : {"unit", "threads", "readme"})
+      std::ofstream(tree + "/src/" + tier + ".c") << "#include \"" << tier << ".h\"\nint main(void) { return VALUE == 1 ? 0 : 1; }\n";
+    std::ofstream(tree + "/src/e2e.c") << "#include <stdlib.h>\n#include \"e2e.h\"\nint main(void) { if (VALUE != 1) abort(); return 0; }\n";
+    for (const char* tier : {"unit", "threads", "e2e", "readme"}) std::ofstream(tree + "/src/" + tier + ".h") << "#define VALUE 1\n";
+    std::ofstream(tree + "/src/unused.h") << "#define UNUSED 1\n";
+    std::ofstream(tree + "/tests/mutants.txt")
+        << "=== seen by unit\nsrc/unit.h\n<<<\n#define VALUE 1\n>>>\n#define VALUE 2\n===\n\n"
+           "=== seen by readme alone\nsrc/readme.h\n<<<\n#define VALUE 1\n>>>\n#define VALUE 2\n===\n\n"
+           "=== a crash in e2e\nsrc/e2e.h\n<<<\n#define VALUE 1\n>>>\n#define VALUE 3\n===\n\n"
+           "=== seen by nobody\nsrc/unused.h\n<<<\n#define UNUSED 1\n>>>\n#define UNUSED 2\n===\n";
+    const auto r = test::RunCommand("python3 " + Q(tree + "/scripts/mutants.py"));
+    CAPTURE(r.out);
+    CAPTURE(r.err);
+    CHECK(r.exit_code == 1);  // one survived
+    CHECK(r.out.find("CAUGHT    seen by unit") != std::string::npos);
+    CHECK(r.out.find("CAUGHT    seen by readme alone") != std::string::npos);
+    CHECK(r.out.find("CAUGHT    a crash in e2e") != std::string::npos);
+    CHECK(r.out.find("SURVIVED  seen by nobody") != std::string::npos);
+    CHECK(r.out.find("3 of 4 mutants caught") != std::string::npos);
+    // The project itself is never touched: the mutants were applied to a copy.
+    CHECK(ReadFile(tree + "/src/unit.h") == "#define VALUE 1\n");
   }
 
   TEST_CASE("slowest-files.sh: each target's compiler seconds and the slowest files of the last build, from Ninja's log") {
@@ -312,7 +409,7 @@ TEST_SUITE("app") {
       return r.err.substr(0, r.err.find('\n'));
     };
     const std::string build = missing(""), test_set = missing("test");
-    for (const char* package : {"g++", "cmake", "libglm-dev", "libopenexr-dev", "libcpp-httplib-dev"}) {
+    for (const char* package : {"g++", "cmake", "ninja-build", "libglm-dev", "libopenexr-dev", "libcpp-httplib-dev"}) {
       CHECK(build.find(std::string(" ") + package) != std::string::npos);
       CHECK(test_set.find(std::string(" ") + package) != std::string::npos);
     }

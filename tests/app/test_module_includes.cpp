@@ -46,24 +46,25 @@ std::string MadeUpTree(const std::string& name, const std::string& table,
   return root;
 }
 
-/// Folder -> its dependencies as words, from the lines `"folder: deps"` of src/modules.cmake.
-std::map<std::string, std::string> TableOfModulesCmake() {
+/// Each folder and its dependencies as words, in order, from the lines `"folder: deps"` of
+/// src/modules.cmake.
+std::vector<std::pair<std::string, std::string>> TableOfModulesCmake() {
   const std::string text = ReadFile(test::SourceDir() + "/src/modules.cmake");
-  std::map<std::string, std::string> table;
+  std::vector<std::pair<std::string, std::string>> table;
   const std::regex entry("\"([a-z_0-9]+):([^\"]*)\"");
   for (auto it = std::sregex_iterator(text.begin(), text.end(), entry); it != std::sregex_iterator(); ++it) {
     std::istringstream words((*it)[2].str());
     std::string joined;
     for (std::string w; words >> w;) joined += (joined.empty() ? "" : " ") + w;
-    table[(*it)[1]] = joined;
+    table.emplace_back((*it)[1], joined);
   }
   return table;
 }
 
 /// The same from the table docs/ARCHITECTURE.md draws (the block that starts "folder  includes").
-std::map<std::string, std::string> TableOfArchitecture() {
+std::vector<std::pair<std::string, std::string>> TableOfArchitecture() {
   std::istringstream doc(ReadFile(test::SourceDir() + "/docs/ARCHITECTURE.md"));
-  std::map<std::string, std::string> table;
+  std::vector<std::pair<std::string, std::string>> table;
   bool inside = false;
   for (std::string line; std::getline(doc, line);) {
     if (!inside) {
@@ -75,7 +76,7 @@ std::map<std::string, std::string> TableOfArchitecture() {
     std::string folder, joined;
     words >> folder;
     for (std::string w; words >> w;) joined += (joined.empty() ? "" : " ") + w;
-    table[folder] = joined;
+    table.emplace_back(folder, joined);
   }
   return table;
 }
@@ -88,11 +89,12 @@ TEST_SUITE("app") {
   TEST_CASE("module includes: docs/ARCHITECTURE.md draws the table the build checks") {
     const auto cmake = TableOfModulesCmake(), doc = TableOfArchitecture();
     REQUIRE(cmake.size() >= 10);
-    CHECK(doc == cmake);
+    CHECK(doc == cmake);  // the same rows in the same order: each folder after those it includes
+    const std::map<std::string, std::string> drawn(doc.begin(), doc.end());
     for (const auto& [folder, deps] : cmake) {
       CAPTURE(folder);
-      CHECK(doc.count(folder) == 1);
-      if (doc.count(folder)) CHECK(doc.at(folder) == deps);
+      CHECK(drawn.count(folder) == 1);
+      if (drawn.count(folder)) CHECK(drawn.at(folder) == deps);
     }
   }
 

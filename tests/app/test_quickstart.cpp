@@ -87,6 +87,7 @@ TEST_SUITE("app") {
     CHECK(slow < middle);
     CHECK(middle < fast);
     CHECK(all.find("cmake --build") != std::string::npos);
+    CHECK(all.find(" -G Ninja ") != std::string::npos);  // a new build folder: Ninja
     CHECK(all.find("--target") == std::string::npos);  // every target: the tests too
     // The default suite, then the README's commands: two runs of ctest.
     const auto suite = all.find("--label-exclude ^readme$"), readme = all.find("--label-regex ^readme$");

@@ -82,12 +82,12 @@ TEST_SUITE("core") {
     // A sanitizer pass's smoke set: only the cases the list names for that pass, this one
     // among them (its name's characters read from the list as from the listing), each with the
     // smoke label and the variables that point it at another prt; a name the program lacks fails.
-    const auto smoke = [&](const std::string& list, const std::string& out) {
+    const auto smoke = [&](const std::string& list, const std::string& out, const std::string& pass = "asan") {
       prt::WriteFileAtomic(dir + "/smoke.txt", list);
       return prt::test::RunCommand(
           prt::test::Q(PRT_CMAKE_COMMAND) + " -D TEST_EXECUTABLE=" + prt::test::Q(self) + " -D TIER=e2e -D TEST_WORKING_DIR=" +
           prt::test::Q(dir) + " -D CTEST_FILE=" + prt::test::Q(dir + "/" + out) + " -D TEST_TIMEOUT=600 -D SKIP_RETURN_CODE=77" +
-          " -D SMOKE_LIST=" + prt::test::Q(dir + "/smoke.txt") + " -D SMOKE_PASS=asan" +
+          " -D SMOKE_LIST=" + prt::test::Q(dir + "/smoke.txt") + " -D SMOKE_PASS=" + pass +
           " '-D SMOKE_ENVIRONMENT=PRT_BINARY=/x/prt;PRT_TEST_TMP=/x/tmp' -P " +
           prt::test::Q(prt::test::SourceDir() + "/tests/discover_tests.cmake"));
     };
@@ -101,6 +101,11 @@ TEST_SUITE("core") {
     CHECK(smoke_cases.find("add_test([==[" + name + "]==]") != std::string::npos);
     CHECK(smoke_cases.find("LABELS [==[core;e2e;smoke]==]") != std::string::npos);
     CHECK(smoke_cases.find("ENVIRONMENT [==[PRT_BINARY=/x/prt;PRT_TEST_TMP=/x/tmp]==]") != std::string::npos);
+    // The other pass takes the other line.
+    REQUIRE(smoke("# a comment\nasan: " + name + "\ntsan: " + other + "\n", "smoke_tsan.cmake", "tsan").exit_code == 0);
+    const std::string tsan_cases = prt::ReadFile(dir + "/smoke_tsan.cmake");
+    CHECK(tsan_cases.find("add_test([==[" + other + "]==]") != std::string::npos);
+    CHECK(tsan_cases.find("add_test([==[" + name + "]==]") == std::string::npos);
     const auto stale = smoke("asan: no test has this name\n", "stale.cmake");
     CHECK(stale.exit_code != 0);
     // CMake wraps its messages' lines: compared with every run of white space made one space.
