@@ -201,6 +201,8 @@ TEST_SUITE("app") {
     const std::string dir = test::ScratchDir("kept_names");
     for (const std::string& option : {"--video " + Q(dir + "/a\nb.png"), "--vertex-radiance " + Q(dir + "/out/a\nlight.txt"),
                                       "--vertex-radiance " + Q(dir + "/out/frame_0000.png"),
+                                      // A frame's name in any case: one file on a file system that ignores case.
+                                      "--vertex-radiance " + Q(dir + "/out/FRAME_0001.PNG"),
                                       "--vertex-radiance " + Q(dir + "/out/.prt-lock")}) {
       CAPTURE(option);
       const auto r = test::RunPrt(test::QuickRender(dir + "/out", 1) + " " + option);

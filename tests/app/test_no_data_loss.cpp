@@ -115,6 +115,10 @@ TEST_SUITE("app") {
   TEST_CASE("no data lost: frames prt did not write are never removed, failed runs keep old outputs") {
     const std::string dir = test::ScratchDir("no_data_loss_fewer");
     const auto old = FillWithMarkers(dir, 10, false);
+    // Not frame names: prt's frames are frame_N.png in lower case (FrameName), so these are not
+    // counted among the frames it left untouched.
+    WriteFileAtomic(dir + "/FRAME_0011.PNG", "x");
+    WriteFileAtomic(dir + "/frame_0012.png.txt", "x");
     const std::string run = "render --env furnace --transport unshadowed --frames 3 --size 16x16 --mesh " +
                             Q(test::Fixture("obj/quad.obj")) + " --out " + Q(dir);
     // Frames 0..2 would replace files prt did not write: refused before any work, naming one.

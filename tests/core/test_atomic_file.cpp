@@ -124,7 +124,8 @@ TEST_SUITE("core") {
                               ".a.png.prt-tmp_3",            // no pid
                               ".a.png.prt-tmp1234567890_3",  // a pid of ten digits
                               ".a.png.prt-tmp12_",           // no count
-                              ".a.png.prt-tmp12_3x", ".a.png.prt-tmp1x_3", ".a.png.prt-tmp12", ".a.png", ".prt-tmp12_3"}) {
+                              ".a.png.prt-tmp12_3x", ".a.png.prt-tmp1x_3", ".a.png.prt-tmp12", ".a.png", ".prt-tmp12_3",
+                              "..prt-tmp12_3"}) {  // the last two: no file name before the tag
       CAPTURE(other);
       CHECK_FALSE(prt::AtomicFile::IsTemporaryName(other));
     }
