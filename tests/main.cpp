@@ -1,4 +1,5 @@
-// The one test executable: doctest's runner, one TEST_SUITE per module of src/, with two rules
+// The runner of every test program (one per tier, tests/CMakeLists.txt): doctest's, one
+// TEST_SUITE per module of src/, with two rules
 // about the tests that need ../shared/data (those decorated with test::NeedsSharedData()):
 //
 // - Skipped, never passed. Without the data they carry doctest's skip decorator, so a whole run
@@ -84,21 +85,24 @@ unsigned SelectedWithoutSkipping(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // The program's name in its messages: one program per tier (prt_unit_tests, ...).
+  const char* slash = std::strrchr(argv[0], '/');
+  const char* self = slash ? slash + 1 : argv[0];
   if (Required("PRT_REQUIRE_SHARED_DATA") && !prt::test::SharedData()) {
-    std::fprintf(stderr, "prt_tests: PRT_REQUIRE_SHARED_DATA is set, but the course data (%s) is missing\n",
+    std::fprintf(stderr, "%s: PRT_REQUIRE_SHARED_DATA is set, but the course data (%s) is missing\n", self,
                  PRT_SHARED_DATA_DIR);
     return 1;
   }
   if (Required("PRT_REQUIRE_FFMPEG") && !prt::test::Ffmpeg()) {
-    std::fprintf(stderr, "prt_tests: PRT_REQUIRE_FFMPEG is set, but ffmpeg and ffprobe are not on PATH\n");
+    std::fprintf(stderr, "%s: PRT_REQUIRE_FFMPEG is set, but ffmpeg and ffprobe are not on PATH\n", self);
     return 1;
   }
   if (Required("PRT_REQUIRE_CMARK_GFM") && !prt::test::CmarkGfm()) {
-    std::fprintf(stderr, "prt_tests: PRT_REQUIRE_CMARK_GFM is set, but cmark-gfm is not on PATH\n");
+    std::fprintf(stderr, "%s: PRT_REQUIRE_CMARK_GFM is set, but cmark-gfm is not on PATH\n", self);
     return 1;
   }
   if (Required("PRT_REQUIRE_CHROMIUM") && !prt::test::Chromium()) {
-    std::fprintf(stderr, "prt_tests: PRT_REQUIRE_CHROMIUM is set, but chromium or python3 is not on PATH\n");
+    std::fprintf(stderr, "%s: PRT_REQUIRE_CHROMIUM is set, but chromium or python3 is not on PATH\n", self);
     return 1;
   }
   int result = 0;
@@ -112,10 +116,10 @@ int main(int argc, char** argv) {
       // A filter that matches nothing is an error, not a pass: a test registered under a name
       // that no longer selects its case (CTest's registration is stale, or a name was cut at a
       // character the registration mishandled) would otherwise pass without running.
-      std::fprintf(stderr, "prt_tests: no test case matches the filters\n");
+      std::fprintf(stderr, "%s: no test case matches the filters\n", self);
       return 1;
     }
-    std::printf("[prt_tests] skipped: the selected test cases need the course data (%s), ffmpeg or cmark-gfm\n",
+    std::printf("[%s] skipped: the selected test cases need the course data (%s), ffmpeg, cmark-gfm or chromium\n", self,
                 PRT_SHARED_DATA_DIR);
     return kSkipExit;
   }

@@ -16,7 +16,7 @@
 
 namespace {
 
-/// The test cases that `listing` (prt_tests --list-test-cases) names, one a line.
+/// The test cases that `listing` (a test program's --list-test-cases) names, one a line.
 int CountListed(const std::string& listing) {
   std::istringstream lines(listing);
   int n = 0;

@@ -15,26 +15,16 @@
 #include "io/png_io.h"
 #include "precompute_io/transport_cache.h"
 #include "raster/image_diff.h"
+#include "tests/precompute_io/sphere_on_floor.h"
 #include "tests/test_support.h"
 
 namespace prt {
-namespace {
 
 using test::Q;
 
-/// A sphere resting on a floor: concave, so samples, seeds and bounces all change its transport.
-Mesh SphereOnFloor(float radius) {
-  Mesh m = MakeSphere(10, radius, glm::vec3(0.0f, radius, 0.0f));
-  AppendMesh(m, MakePlane(4.0f, 4));
-  SetUniformAlbedo(m, glm::vec3(0.8f));
-  return m;
-}
-
-}  // namespace
-
 TEST_SUITE("precompute_io") {
   TEST_CASE("cache key: every input of the transport changes it") {
-    const Mesh mesh = SphereOnFloor(1.0f);
+    const Mesh mesh = test::SphereOnFloor(1.0f);
     const TransportOptions base;
     std::map<std::string, std::uint64_t> keys;
     keys["base"] = TransportKey(mesh, base);

@@ -15,22 +15,12 @@
 #include "io/png_io.h"
 #include "precompute_io/transport_cache.h"
 #include "raster/image_diff.h"
+#include "tests/precompute_io/sphere_on_floor.h"
 #include "tests/test_process.h"
 
 namespace prt {
-namespace {
 
 using test::Q;
-
-/// A sphere resting on a floor: concave, so samples, seeds and bounces all change its transport.
-Mesh SphereOnFloor(float radius) {
-  Mesh m = MakeSphere(10, radius, glm::vec3(0.0f, radius, 0.0f));
-  AppendMesh(m, MakePlane(4.0f, 4));
-  SetUniformAlbedo(m, glm::vec3(0.8f));
-  return m;
-}
-
-}  // namespace
 
 TEST_SUITE("precompute_io") {
   TEST_CASE("cache: a render reuses precompute's transport, whose every vertex took what the camera's take") {
@@ -39,7 +29,7 @@ TEST_SUITE("precompute_io") {
     // exceeds everywhere: it is taken as it is, and the render then equals one whose hidden
     // vertices take --samples too.
     const std::string dir = test::ScratchDir("cache_precompute");
-    ObjPart part{"part", SphereOnFloor(1.0f), glm::vec3(0.7f, 0.5f, 0.3f)};
+    ObjPart part{"part", test::SphereOnFloor(1.0f), glm::vec3(0.7f, 0.5f, 0.3f)};
     WriteFileAtomic(dir + "/scene.obj", FormatObj({part}, "scene.mtl"));
     WriteFileAtomic(dir + "/scene.mtl", FormatMtl({part}));
     const std::string scene = " --mesh " + Q(dir + "/scene.obj") + " --env sky --transport shadowed --samples 256";
@@ -65,7 +55,7 @@ TEST_SUITE("precompute_io") {
   TEST_CASE("cache: a render from the cache is byte for byte a render without it, whatever input changed") {
     const std::string dir = test::ScratchDir("cache_inputs");
     for (const auto& [name, radius] : {std::pair{"scene.obj", 1.0f}, std::pair{"moved.obj", 1.05f}}) {
-      ObjPart part{"part", SphereOnFloor(radius), glm::vec3(0.7f, 0.5f, 0.3f)};
+      ObjPart part{"part", test::SphereOnFloor(radius), glm::vec3(0.7f, 0.5f, 0.3f)};
       WriteFileAtomic(dir + "/" + name, FormatObj({part}, "scene.mtl"));
       WriteFileAtomic(dir + "/scene.mtl", FormatMtl({part}));
     }

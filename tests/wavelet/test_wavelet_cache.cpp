@@ -16,14 +16,15 @@
 #include "geometry/procedural.h"
 #include "precompute_io/transport_cache.h"
 #include "tests/test_support.h"
+#include "tests/wavelet/synthetic_transport.h"
 #include "wavelet/transport_cache.h"
 
 namespace prt {
 namespace {
 
 /// The size of WaveletTransport when the cache's format was written: a field added since is not
-/// in the file. Add it to the format (and its version), to Synthetic() and to CheckSame(), then
-/// update this (x86-64, libstdc++).
+/// in the file. Add it to the format (and its version), to test::SyntheticWaveletTransport()
+/// (synthetic_transport.h) and to CheckSame(), then update this (x86-64, libstdc++).
 constexpr std::size_t kCachedStructSize = 352;
 
 /// The header's bytes (transport_cache.h): each of them changed must be refused.
@@ -37,37 +38,6 @@ Mesh SphereOnFloor() {
   return m;
 }
 
-/// A transport with every field away from its default, the values awkward for a careless
-/// writer (negative zero, a denormal, the int16 extremes, a count above 32 bits for rays).
-WaveletTransport Synthetic() {
-  WaveletTransport t;
-  t.face_size = 4;
-  t.vertices = 5;
-  t.base_lmax = 2;
-  for (int i = 0; i < 5 * 9; ++i) t.base.push_back(0.25f * float(i) - 3.0f);
-  t.base[7] = -0.0f;
-  t.base[8] = 1e-40f;
-  for (int i = 0; i < 30; ++i) t.means.push_back(0.01f * float(i) + 0.5f);
-  t.scale = {1e-3f, 2e-3f, 0.0f, 4e-3f, 5e-3f};
-  const std::vector<std::vector<std::uint16_t>> per_vertex = {{1, 7, 95}, {}, {0, 2, 3, 50, 94}, {6}, {10, 11}};
-  t.offsets = {0};
-  for (const auto& kept : per_vertex) {
-    t.index.insert(t.index.end(), kept.begin(), kept.end());
-    t.offsets.push_back(t.index.size());
-  }
-  for (std::size_t j = 0; j < t.index.size(); ++j) t.value.push_back(std::int16_t(int(j) * 5000 % 65535 - 32767));
-  t.value[0] = -32767, t.value[1] = 32767;
-  t.bounce.lmax = 1;
-  t.bounce.channels = 3;
-  t.bounce.vertices = 5;
-  for (int i = 0; i < 5 * 3 * 4; ++i) t.bounce.coeffs.push_back(float(i) / 7.0f);
-  t.probes = {0, 3};
-  for (int i = 0; i < 2 * 96; ++i) t.probe_coeffs.push_back(std::sin(float(i)));
-  t.kept_energy = 0.98765432101234;
-  t.rays = 123456789012ULL;
-  t.seconds = 1.25;
-  return t;
-}
 
 template <class T>
 bool SameBytes(const std::vector<T>& a, const std::vector<T>& b) {
@@ -119,13 +89,13 @@ TEST_SUITE("wavelet") {
     // and not to the cache would come back at its default from every cached run.
     CHECK_MESSAGE(sizeof(WaveletTransport) == kCachedStructSize,
                   "WaveletTransport changed: add the new field to wavelet/transport_cache.{h,cpp} (and its format "
-                  "version), to Synthetic() and CheckSame() here, then update kCachedStructSize");
+                  "version), to test::SyntheticWaveletTransport() and CheckSame(), then update kCachedStructSize");
   }
 
   TEST_CASE("wavelet cache: every field comes back bit for bit") {
     const std::string dir = test::ScratchDir("wavelet_cache_round_trip");
     // Every field set by hand, then real transports: shadowed (no bounces) and with bounces.
-    const WaveletTransport synthetic = Synthetic();
+    const WaveletTransport synthetic = test::SyntheticWaveletTransport();
     WriteWaveletCache(dir + "/synthetic.cache", synthetic, 42);
     std::string why;
     const auto back = ReadWaveletCache(dir + "/synthetic.cache", 42, why);
@@ -214,7 +184,7 @@ TEST_SUITE("wavelet") {
     const std::string dir = test::ScratchDir("wavelet_cache_refused");
     const std::string good_path = dir + "/good.cache", path = dir + "/damaged.cache";
     constexpr std::uint64_t kKey = 0x1234567890abcdefULL;
-    WriteWaveletCache(good_path, Synthetic(), kKey);
+    WriteWaveletCache(good_path, test::SyntheticWaveletTransport(), kKey);
     const std::string good = ReadFile(good_path);
     REQUIRE(good.size() > kHeaderBytes);
     CHECK(Verdict(path, good, kKey) == "reused");
@@ -273,18 +243,18 @@ TEST_SUITE("wavelet") {
   TEST_CASE("wavelet cache: what cannot be written faithfully is an error, not a file") {
     const std::string dir = test::ScratchDir("wavelet_cache_write");
     // A transport whose arrays disagree with its counts would be read back as another one.
-    WaveletTransport t = Synthetic();
+    WaveletTransport t = test::SyntheticWaveletTransport();
     t.value.pop_back();
     CHECK(test::ErrorMessage([&] { WriteWaveletCache(dir + "/a.cache", t, 1); }).find("disagree with its counts") !=
           std::string::npos);
-    t = Synthetic();
+    t = test::SyntheticWaveletTransport();
     t.base.push_back(1.0f);
     CHECK(!test::ErrorMessage([&] { WriteWaveletCache(dir + "/b.cache", t, 1); }).empty());
     CHECK(!std::filesystem::exists(dir + "/a.cache"));
     CHECK(!std::filesystem::exists(dir + "/b.cache"));
     // A folder that does not exist: the cause named.
     const std::string missing = dir + "/no/such/folder/c.cache";
-    CHECK(test::ErrorMessage([&] { WriteWaveletCache(missing, Synthetic(), 1); }).find("c.cache") != std::string::npos);
+    CHECK(test::ErrorMessage([&] { WriteWaveletCache(missing, test::SyntheticWaveletTransport(), 1); }).find("c.cache") != std::string::npos);
   }
 
   TEST_CASE("wavelet cache: a new cache replaces the old by renaming, never by writing over it") {
@@ -293,10 +263,10 @@ TEST_SUITE("wavelet") {
     // show the new bytes (and a crash midway would leave a torn cache).
     const std::string dir = test::ScratchDir("wavelet_cache_atomic");
     const std::string path = dir + "/w.cache", second = dir + "/second_name";
-    WriteWaveletCache(path, Synthetic(), 1);
+    WriteWaveletCache(path, test::SyntheticWaveletTransport(), 1);
     const std::string old = ReadFile(path);
     std::filesystem::create_hard_link(path, second);
-    WriteWaveletCache(path, Synthetic(), 2);
+    WriteWaveletCache(path, test::SyntheticWaveletTransport(), 2);
     CHECK(ReadFile(second) == old);
     CHECK(ReadFile(path) != old);
     std::string why;
