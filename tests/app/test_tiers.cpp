@@ -81,7 +81,7 @@ void Configure(const std::string& folder, const std::string& sanitizer, const st
 }  // namespace
 
 TEST_SUITE("app") {
-  TEST_CASE("tiers: every test file is in exactly one tier, and every file a tier names exists") {
+  TEST_CASE("tiers: every test file is in exactly one tier, every file a tier names exists, and no in-process file starts a process") {
     std::map<std::string, int> listed;
     for (const auto& entry : fs::recursive_directory_iterator(test::SourceDir() + "/tests")) {
       if (entry.path().filename() != "CMakeLists.txt") continue;
@@ -96,6 +96,15 @@ TEST_SUITE("app") {
           CAPTURE(file);
           CHECK(fs::exists(folder + "/" + file));
           ++listed[fs::weakly_canonical(folder + "/" + file).string()];
+          // In-process: the link keeps tests/test_process.h out; nor may a file start a process
+          // on its own.
+          if (tier == "unit" || tier == "threads") {
+            const std::string source = ReadFile(folder + "/" + file);
+            for (const char* starts : {"std::system(", "popen(", "fork(", "execv", "core/child_process.h"}) {
+              CAPTURE(starts);
+              CHECK(source.find(starts) == std::string::npos);
+            }
+          }
         }
       }
     }
