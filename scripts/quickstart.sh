@@ -19,9 +19,9 @@ esac
 
 phase "install packages" bash scripts/install-deps.sh "$what"
 # Ninja for a new build folder: it logs each compile's time, which scripts/slowest-files.sh prints
-# (a folder configured earlier keeps its generator).
+# (a folder configured earlier keeps its generator; without ninja, CMake's default).
 generator=()
-[ -f "$build/CMakeCache.txt" ] || generator=(-G Ninja)
+[ -f "$build/CMakeCache.txt" ] || ! command -v ninja >/dev/null || generator=(-G Ninja)
 cmake -S . -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release >/dev/null
 
 # Only what the command runs: the demo needs the program, the tests need everything.

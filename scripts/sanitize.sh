@@ -33,7 +33,8 @@ case "$release" in /*) release_path=$release ;; *) release_path=$PWD/$release ;;
 # them: every step that can fail returns its status explicitly.
 build() {  # build NAME FOLDER CMAKE_OPTION TIERS
   local generator=()
-  [ -f "$2/CMakeCache.txt" ] || generator=(-G Ninja)  # a new folder: Ninja, which logs each compile
+  # A new folder: Ninja, which logs each compile (without ninja, CMake's default).
+  [ -f "$2/CMakeCache.txt" ] || ! command -v ninja >/dev/null || generator=(-G Ninja)
   cmake -S . -B "$2" "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
     "-D$3=ON" "-DPRT_TEST_TIERS=$4" "-DPRT_SMOKE_DRIVER=$release_path/prt_e2e_tests" >/dev/null || return
   phase "build ($1)" cmake --build "$2" --parallel "$jobs" || return
@@ -43,7 +44,9 @@ build() {  # build NAME FOLDER CMAKE_OPTION TIERS
 # The smoke set's program: the Release build's e2e tests (a no-op when CI's Release build has it).
 smoke_driver() {
   if [ ! -f "$release/CMakeCache.txt" ]; then
-    cmake -S . -B "$release" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null || return
+    local generator=()
+    ! command -v ninja >/dev/null || generator=(-G Ninja)
+    cmake -S . -B "$release" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release >/dev/null || return
   fi
   cmake --build "$release" --parallel "$jobs" --target prt_e2e_tests >/dev/null
 }
