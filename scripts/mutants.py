@@ -95,7 +95,7 @@ def main():
     env.pop("PRT_REQUIRE_SHARED_DATA", None)
     programs = [os.path.join(BUILD, f"prt_{tier}_tests") for tier in ("unit", "threads", "e2e", "readme")]
 
-    def test(env):
+    def test():
         """The programs in turn until one fails: the first failure's output."""
         out = ""
         for program in programs:
@@ -105,7 +105,7 @@ def main():
                 return subprocess.CompletedProcess(r.args, r.returncode, out)
         return subprocess.CompletedProcess(programs, 0, out)
 
-    r = test(env)
+    r = test()
     if r.returncode:
         sys.exit("the unmutated suite fails:\n" + r.stdout[-3000:])
     survived = []
@@ -123,7 +123,7 @@ def main():
                 print(f"NO BUILD  {name}\n{r.stdout[-2000:]}")
                 survived.append(name)
                 continue
-            r = test(env)
+            r = test()
             with open(os.path.join(WORK, "log", f"{number:02d}.txt"), "w") as log:
                 log.write(f"{name}\n{r.stdout}")
             caught = r.returncode != 0

@@ -10,6 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/phase.sh
+source scripts/configure.sh
 what=${1:-demo}
 build=${PRT_BUILD_DIR:-build}
 case "$what" in
@@ -18,11 +19,7 @@ case "$what" in
 esac
 
 phase "install packages" bash scripts/install-deps.sh "$what"
-# Ninja for a new build folder: it logs each compile's time, which scripts/slowest-files.sh prints
-# (a folder configured earlier keeps its generator; without ninja, CMake's default).
-generator=()
-[ -f "$build/CMakeCache.txt" ] || ! command -v ninja >/dev/null || generator=(-G Ninja)
-cmake -S . -B "$build" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release >/dev/null
+configure "$build" -DCMAKE_BUILD_TYPE=Release
 
 # Only what the command runs: the demo needs the program, the tests need everything.
 case "$what" in

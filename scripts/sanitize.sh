@@ -7,7 +7,8 @@
 #                                                 and the e2e tier's smoke set for tsan
 #   bash scripts/sanitize.sh all                  both, one after the other
 # Each sanitized build folder compiles prt and the programs of its tiers only (PRT_TEST_TIERS),
-# with Ninja when the folder is new, and each build ends with what it cost (slowest-files.sh).
+# with Ninja when the folder is new (configure.sh), and each build ends with what it cost
+# (slowest-files.sh).
 # The smoke set (tests/smoke.txt) is run by the e2e program of the Release build ($PRT_BUILD_DIR,
 # default build/; built here first if it is missing) against the sanitized prt (tests/smoke.cmake):
 # those tests only start prt and read what it writes. Arguments after the pass go to ctest (-R
@@ -19,6 +20,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/phase.sh
+source scripts/configure.sh
 what=${1:-asan}
 shift || true
 jobs=${PRT_JOBS:-$(nproc)}
@@ -32,22 +34,15 @@ case "$release" in /*) release_path=$release ;; *) release_path=$PWD/$release ;;
 # The functions below run as `run_asan && run_tsan`, where bash's `set -e` does not apply inside
 # them: every step that can fail returns its status explicitly.
 build() {  # build NAME FOLDER CMAKE_OPTION TIERS
-  local generator=()
-  # A new folder: Ninja, which logs each compile (without ninja, CMake's default).
-  [ -f "$2/CMakeCache.txt" ] || ! command -v ninja >/dev/null || generator=(-G Ninja)
-  cmake -S . -B "$2" "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
-    "-D$3=ON" "-DPRT_TEST_TIERS=$4" "-DPRT_SMOKE_DRIVER=$release_path/prt_e2e_tests" >/dev/null || return
+  configure "$2" -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" \
+    "-D$3=ON" "-DPRT_TEST_TIERS=$4" "-DPRT_SMOKE_DRIVER=$release_path/prt_e2e_tests" || return
   phase "build ($1)" cmake --build "$2" --parallel "$jobs" || return
   bash scripts/slowest-files.sh "$2"
 }
 
 # The smoke set's program: the Release build's e2e tests (a no-op when CI's Release build has it).
 smoke_driver() {
-  if [ ! -f "$release/CMakeCache.txt" ]; then
-    local generator=()
-    ! command -v ninja >/dev/null || generator=(-G Ninja)
-    cmake -S . -B "$release" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release >/dev/null || return
-  fi
+  if [ ! -f "$release/CMakeCache.txt" ]; then configure "$release" -DCMAKE_BUILD_TYPE=Release || return; fi
   cmake --build "$release" --parallel "$jobs" --target prt_e2e_tests >/dev/null
 }
 

@@ -14,8 +14,10 @@ if [ ! -f "$log" ]; then
   echo "slowest-files: $build was not built with Ninja (no .ninja_log): no compile times"
   exit 0
 fi
+tab=$'\t'
 # The log appends every build's steps: the last line of each output is its latest compile.
-awk -F '\t' -v count="$count" -v build="$build" '
+# One line per object file: seconds, target, source (slowest first).
+files=$(awk -F '\t' '
   /^#/ { next }
   { seconds[$4] = ($2 - $1) / 1000 }
   END {
@@ -23,24 +25,16 @@ awk -F '\t' -v count="$count" -v build="$build" '
       if (out !~ /\.o$/) continue
       target = out
       if (match(out, /[A-Za-z0-9_]+\.dir\//)) target = substr(out, RSTART, RLENGTH - 5)
-      per_target[target] += seconds[out]; total += seconds[out]; files++
-      lines[files] = sprintf("%09.1f\t%s", seconds[out], out)
+      name = out; sub(/^.*\.dir\//, "", name); sub(/\.o$/, "", name)
+      printf "%.3f\t%s\t%s\n", seconds[out], target, name
     }
-    printf "The compiler in %s: %.0f s over %d files", build, total, files
-    n = 0
-    for (t in per_target) order[++n] = t
-    # by seconds, largest first
-    for (i = 1; i <= n; i++) for (j = i + 1; j <= n; j++) if (per_target[order[j]] > per_target[order[i]]) { x = order[i]; order[i] = order[j]; order[j] = x }
-    sep = " ("
-    for (i = 1; i <= n; i++) { printf "%s%s %.0f s", sep, order[i], per_target[order[i]]; sep = ", " }
-    printf ")\n"
-    m = 0
-    for (k in lines) sorted[++m] = lines[k]
-    for (i = 1; i <= m; i++) for (j = i + 1; j <= m; j++) if (sorted[j] > sorted[i]) { x = sorted[i]; sorted[i] = sorted[j]; sorted[j] = x }
-    printf "The %d slowest to compile:\n", (count < m ? count : m)
-    for (i = 1; i <= count && i <= m; i++) {
-      split(sorted[i], f, "\t"); name = f[2]; sub(/^.*\.dir\//, "", name); sub(/\.o$/, "", name)
-      printf "%8.1f s  %s\n", f[1] + 0, name
-    }
-  }
-' "$log"
+  }' "$log" | sort -t "$tab" -k1,1gr -k3,3)
+# The seconds per target, largest first, on the summary's line.
+targets=$(awk -F '\t' 'NF { s[$2] += $1 } END { for (t in s) printf "%.3f\t%s\n", s[t], t }' <<<"$files" |
+  sort -t "$tab" -k1,1gr -k2,2 | awk -F '\t' '{ printf "%s%s %.0f s", (NR > 1 ? ", " : ""), $2, $1 }')
+awk -F '\t' -v build="$build" -v targets="$targets" 'NF { total += $1; n++ }
+  END { printf "The compiler in %s: %.0f s over %d files%s\n", build, total, n, (n ? " (" targets ")" : "") }' <<<"$files"
+shown=$(grep -c . <<<"$files" || true)
+[ "$shown" -le "$count" ] || shown=$count
+echo "The $shown slowest to compile:"
+head -n "$count" <<<"$files" | awk -F '\t' 'NF { printf "%8.1f s  %s\n", $1, $3 }'

@@ -89,24 +89,13 @@ std::string WriteFloorAndWall(const std::string& dir, const glm::vec3& floor_kd,
   return dir + "/scene.obj";
 }
 
-namespace {
-std::string WriteKnotAndGround(const std::string& dir, const std::string& name, int segments, int sides, int quads,
-                               const glm::vec3& knot_kd) {
-  Mesh knot = MakeTorusKnot(2, 3, 0.16f, segments, sides);
-  StandUpright(knot, 3.4f);
-  const std::vector<ObjPart> parts = {{"ground", MakePlane(12.0f, quads), glm::vec3(0.7f)}, {"knot", knot, knot_kd}};
-  WriteFileAtomic(dir + "/" + name + ".obj", FormatObj(parts, name + ".mtl"));
-  WriteFileAtomic(dir + "/" + name + ".mtl", FormatMtl(parts));
-  return dir + "/" + name + ".obj";
-}
-}  // namespace
-
 std::string WriteSmallScene(const std::string& dir, const glm::vec3& knot_kd) {
-  return WriteKnotAndGround(dir, "small_scene", 32, 6, 6, knot_kd);
-}
-
-std::string WriteKnotScene(const std::string& dir, int segments, int sides, int quads, const glm::vec3& knot_kd) {
-  return WriteKnotAndGround(dir, "knot_scene", segments, sides, quads, knot_kd);
+  Mesh knot = MakeTorusKnot(2, 3, 0.16f, 32, 6);
+  StandUpright(knot, 3.4f);
+  const std::vector<ObjPart> parts = {{"ground", MakePlane(12.0f, 6), glm::vec3(0.7f)}, {"knot", knot, knot_kd}};
+  WriteFileAtomic(dir + "/small_scene.obj", FormatObj(parts, "small_scene.mtl"));
+  WriteFileAtomic(dir + "/small_scene.mtl", FormatMtl(parts));
+  return dir + "/small_scene.obj";
 }
 
 std::string SmallSceneOption(const std::string& name) { return " --mesh " + Q(WriteSmallScene(ScratchDir(name))); }

@@ -87,11 +87,6 @@ inline constexpr bool kSanitized = false;
 /// and bounces in seconds. Returns the OBJ's path.
 std::string WriteSmallScene(const std::string& dir, const glm::vec3& knot_kd = glm::vec3(0.80f, 0.38f, 0.20f));
 
-/// The same knot and ground at another size: a knot of `segments` x `sides` on a ground of
-/// `quads` x `quads`, as dir/knot_scene.obj and .mtl. Returns the OBJ's path.
-std::string WriteKnotScene(const std::string& dir, int segments, int sides, int quads,
-                           const glm::vec3& knot_kd = glm::vec3(0.80f, 0.38f, 0.20f));
-
 /// " --mesh PATH" of WriteSmallScene in a scratch folder of `name`: the option that puts a test's
 /// run on the small scene.
 std::string SmallSceneOption(const std::string& name);
@@ -121,14 +116,21 @@ std::vector<std::string> CsvFields(const std::string& line);
 /// Pixel (x, y) of an 8-bit image as integers.
 glm::ivec3 PixelAt(const Image8& image, int x, int y);
 
+/// The pool's thread count set for a scope (code that runs ParallelFor inside it, on threads of
+/// its own as well), all cores again after it, also when it is left by an exception.
+class ThreadCountScope {
+ public:
+  explicit ThreadCountScope(int threads) { SetThreadCount(threads); }
+  ~ThreadCountScope() { SetThreadCount(0); }
+  ThreadCountScope(const ThreadCountScope&) = delete;
+  ThreadCountScope& operator=(const ThreadCountScope&) = delete;
+};
+
 /// What `f` returns when run with `threads` worker threads; all cores again afterwards, also when
 /// it throws (the determinism tests: same result for any thread count).
 template <class F>
 auto WithThreads(int threads, F&& f) {
-  struct Restore {
-    ~Restore() { SetThreadCount(0); }
-  } restore;
-  SetThreadCount(threads);
+  const ThreadCountScope scope(threads);
   return f();
 }
 

@@ -4,9 +4,9 @@
 /// on more threads than the machine has cores, so that its chunks interleave on any machine and
 /// ThreadSanitizer sees them meet. The project promises the same bits for any --threads.
 
+#include <thread>
 #include <utility>
-
-#include "core/parallel.h"
+#include <vector>
 
 #include "tests/test_support.h"
 
@@ -23,14 +23,12 @@ auto OneAndMany(F&& run) {
   return std::make_pair(std::move(one), std::move(many));
 }
 
-/// The pool's thread count set for a scope (code that runs ParallelFor inside it, on threads of
-/// its own as well), all cores again after it.
-class ThreadCountScope {
- public:
-  explicit ThreadCountScope(int threads) { SetThreadCount(threads); }
-  ~ThreadCountScope() { SetThreadCount(0); }
-  ThreadCountScope(const ThreadCountScope&) = delete;
-  ThreadCountScope& operator=(const ThreadCountScope&) = delete;
-};
+/// Runs `work(t)` on `count` threads of its own, t = 0..count - 1, at once, and joins them.
+template <class F>
+void OnThreads(int count, F&& work) {
+  std::vector<std::thread> threads;
+  for (int t = 0; t < count; ++t) threads.emplace_back([&work, t] { work(t); });
+  for (auto& thread : threads) thread.join();
+}
 
 }  // namespace prt::test

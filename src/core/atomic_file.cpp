@@ -1,6 +1,5 @@
 #include "core/atomic_file.h"
 
-#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
@@ -14,6 +13,7 @@
 #include <unistd.h>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace prt {
 namespace fs = std::filesystem;
@@ -28,10 +28,6 @@ AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
 }
 
 namespace {
-
-bool AllDigits(const std::string& s) {
-  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
-}
 
 /// What follows kTemporaryTag in a temporary name: `<pid>_<n>`, the pid of 1 to 9 digits, n of at
 /// least one; the pid into `pid`.

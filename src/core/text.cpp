@@ -40,4 +40,8 @@ std::optional<double> ParseNumber(const std::string& text) {
   return v;
 }
 
+bool AllDigits(std::string_view text) {
+  return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
 }  // namespace prt

@@ -1,9 +1,10 @@
 #pragma once
 /// \file
-/// Numbers as text for messages, help and the run summary.
+/// Numbers as text: for messages, help and the run summary, and in the names of files.
 
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace prt {
 
@@ -17,5 +18,9 @@ std::string ShortestFloat(float v);
 /// Parses a finite number in decimal notation (an exponent is fine: 1e6), or returns nullopt
 /// (hexadecimal, blanks, inf and nan are not numbers here).
 std::optional<double> ParseNumber(const std::string& text);
+
+/// True for a non-empty run of the ASCII digits 0-9 and nothing else (a frame's number in its
+/// file name, a process id in a temporary name); no sign, no blank.
+bool AllDigits(std::string_view text);
 
 }  // namespace prt

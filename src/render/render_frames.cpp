@@ -16,6 +16,7 @@
 #include "core/log.h"
 #include "core/parallel.h"
 #include "core/progress.h"
+#include "core/text.h"
 #include "geometry/mesh_ops.h"
 #include "io/image_load.h"
 #include "io/png_io.h"
@@ -96,9 +97,7 @@ bool IsFrameName(const std::string& name, bool any_case) {
   const std::size_t digits_end = name.size() - suffix.size();
   for (std::size_t i = 0; i < suffix.size(); ++i)
     if (!same(name[digits_end + i], suffix[i])) return false;
-  for (std::size_t i = prefix.size(); i < digits_end; ++i)
-    if (name[i] < '0' || name[i] > '9') return false;
-  return true;
+  return AllDigits(std::string_view(name).substr(prefix.size(), digits_end - prefix.size()));
 }
 
 Camera ChooseCamera(const Mesh& mesh, const RenderOptions& o, std::string* note) {

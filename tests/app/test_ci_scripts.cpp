@@ -223,7 +223,7 @@ TEST_SUITE("app") {
     fs::create_directories(tree + "/scripts");
     fs::create_directories(bin);
     fs::create_directories(tree + "/build");  // what cmake's configure step would make
-    for (const char* script : {"quickstart.sh", "phase.sh", "skipped-tests.sh", "slowest-tests.sh", "slowest-files.sh"})
+    for (const char* script : {"quickstart.sh", "phase.sh", "configure.sh", "skipped-tests.sh", "slowest-tests.sh", "slowest-files.sh"})
       fs::copy_file(test::SourceDir() + "/scripts/" + script, tree + "/scripts/" + script);
     std::ofstream(tree + "/scripts/install-deps.sh") << "true\n";
     std::ofstream(bin + "/cmake") << "#!/bin/sh\ntrue\n";

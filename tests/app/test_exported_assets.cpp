@@ -16,7 +16,6 @@
 #include "io/png_io.h"
 #include "raster/tonemap.h"
 #include "tests/test_process.h"
-#include "texture/albedo_limit.h"
 
 namespace prt {
 namespace {

@@ -11,14 +11,8 @@
 #include <sstream>
 #include <string>
 
-#include <glm/common.hpp>
-#include <glm/vec3.hpp>
 
 #include "core/atomic_file.h"
-#include "env/procedural.h"
-#include "raster/plot.h"
-#include "report/report_auto_lmax.h"
-#include "report/stability.h"
 #include "tests/readme_commands.h"
 #include "tests/test_process.h"
 

@@ -61,16 +61,13 @@ TEST_SUITE("app") {
     scene.MeasureReference(shadowed);
     constexpr int kDrawers = 3, kFrames = 6;
     std::atomic<int> differing{0};
-    std::vector<std::thread> drawers;
-    for (int t = 0; t < kDrawers; ++t)
-      drawers.emplace_back([&] {
-        for (int i = 0; i < kFrames; ++i) {
-          double draw_ms = 0;
-          if (scene.Frame(shadowed, &draw_ms).rgb != first.rgb) ++differing;
-          scene.StateJson();
-        }
-      });
-    for (auto& t : drawers) t.join();
+    test::OnThreads(kDrawers, [&](int) {
+      for (int i = 0; i < kFrames; ++i) {
+        double draw_ms = 0;
+        if (scene.Frame(shadowed, &draw_ms).rgb != first.rgb) ++differing;
+        scene.StateJson();
+      }
+    });
     CHECK(differing == 0);  // the same request draws the same bytes, whoever draws it
 
     // The mode computed in the background: refused until ready, then drawn.

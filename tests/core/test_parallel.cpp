@@ -7,8 +7,26 @@
 #include <vector>
 
 #include "core/parallel.h"
+#include "tests/test_support.h"
 
 TEST_SUITE("core") {
+  TEST_CASE("WithThreads and ThreadCountScope set the pool's threads for their scope, and give all cores back after it, after a throw too") {
+    prt::SetThreadCount(0);
+    const int all = prt::ThreadCount();
+    // Counts other than all cores, so that a scope that gave nothing back would show.
+    const int some = all + 1, more = all + 2;
+    CHECK(prt::test::WithThreads(some, [] { return prt::ThreadCount(); }) == some);
+    CHECK(prt::ThreadCount() == all);
+    CHECK_THROWS_AS(prt::test::WithThreads(more, []() -> int { throw std::runtime_error("thrown inside"); }),
+                    std::runtime_error);
+    CHECK(prt::ThreadCount() == all);
+    {
+      const prt::test::ThreadCountScope scope(more);
+      CHECK(prt::ThreadCount() == more);
+    }
+    CHECK(prt::ThreadCount() == all);
+  }
+
   TEST_CASE("ParallelFor visits every index exactly once, for any thread count") {
     for (int threads : {1, 2, 7}) {
       prt::SetThreadCount(threads);

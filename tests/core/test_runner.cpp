@@ -25,6 +25,24 @@ int CountListed(const std::string& listing) {
   return n;
 }
 
+/// How many times `needle` occurs in `text`.
+std::size_t Count(const std::string& text, const std::string& needle) {
+  std::size_t n = 0;
+  for (auto at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+  return n;
+}
+
+/// discover_tests.cmake run as the build runs it, over `program` (tier e2e), writing `ctest_file`;
+/// `before` is put ahead of the command (environment variables), `defines` among its -D options.
+prt::test::RunResult Discover(const std::string& program, const std::string& working_dir, const std::string& ctest_file,
+                              const std::string& before = "", const std::string& defines = "") {
+  using prt::test::Q;
+  return prt::test::RunCommand(before + Q(PRT_CMAKE_COMMAND) + " -D TEST_EXECUTABLE=" + Q(program) +
+                               " -D TIER=e2e -D TEST_WORKING_DIR=" + Q(working_dir) + " -D CTEST_FILE=" + Q(ctest_file) +
+                               " -D TEST_TIMEOUT=600 -D SKIP_RETURN_CODE=77" + defines + " -P " +
+                               Q(prt::test::SourceDir() + "/tests/discover_tests.cmake"));
+}
+
 }  // namespace
 
 TEST_SUITE("core") {
@@ -38,19 +56,13 @@ TEST_SUITE("core") {
     REQUIRE(name.find("&lt;") != std::string::npos);
     const std::string self = "/proc/" + std::to_string(::getpid()) + "/exe";
     const std::string dir = prt::test::ScratchDir("runner");
-    const auto discover = prt::test::RunCommand(
-        prt::test::Q(PRT_CMAKE_COMMAND) + " -D TEST_EXECUTABLE=" + prt::test::Q(self) + " -D TIER=e2e -D TEST_WORKING_DIR=" +
-        prt::test::Q(dir) + " -D CTEST_FILE=" + prt::test::Q(dir + "/cases.cmake") +
-        " -D TEST_TIMEOUT=600 -D SKIP_RETURN_CODE=77 -P " +
-        prt::test::Q(prt::test::SourceDir() + "/tests/discover_tests.cmake"));
-    REQUIRE(discover.exit_code == 0);
+    REQUIRE(Discover(self, dir, dir + "/cases.cmake").exit_code == 0);
     const std::string cases = prt::ReadFile(dir + "/cases.cmake");
 
     // One add_test per case the program lists, each with its suite and its tier as the labels.
     const auto listed = prt::test::RunCommand(self + " --list-test-cases --no-intro=true");
     REQUIRE(listed.exit_code == 0);
-    std::size_t add_tests = 0;
-    for (auto at = cases.find("add_test("); at != std::string::npos; at = cases.find("add_test(", at + 1)) ++add_tests;
+    const std::size_t add_tests = Count(cases, "add_test(");
     CHECK(add_tests == std::size_t(CountListed(listed.out)));
     CHECK(add_tests > 100);
     std::string filter = name;
@@ -68,12 +80,7 @@ TEST_SUITE("core") {
 
     // Without the course data the same cases are registered: those that need it are listed,
     // so that CTest reports them as skipped rather than leaving them out.
-    const auto without_data = prt::test::RunCommand(
-        "PRT_SHARED_DATA=none PRT_REQUIRE_SHARED_DATA=0 " + prt::test::Q(PRT_CMAKE_COMMAND) + " -D TEST_EXECUTABLE=" + prt::test::Q(self) +
-        " -D TIER=e2e -D TEST_WORKING_DIR=" + prt::test::Q(dir) + " -D CTEST_FILE=" + prt::test::Q(dir + "/no_data.cmake") +
-        " -D TEST_TIMEOUT=600 -D SKIP_RETURN_CODE=77 -P " +
-        prt::test::Q(prt::test::SourceDir() + "/tests/discover_tests.cmake"));
-    REQUIRE(without_data.exit_code == 0);
+    REQUIRE(Discover(self, dir, dir + "/no_data.cmake", "PRT_SHARED_DATA=none PRT_REQUIRE_SHARED_DATA=0 ").exit_code == 0);
     const std::string no_data = prt::ReadFile(dir + "/no_data.cmake");
     CHECK(no_data == cases);
     CHECK(no_data.find("add_test([==[course files: mary's undefined material is said once, and her files load in the "
@@ -84,20 +91,14 @@ TEST_SUITE("core") {
     // smoke label and the variables that point it at another prt; a name the program lacks fails.
     const auto smoke = [&](const std::string& list, const std::string& out, const std::string& pass = "asan") {
       prt::WriteFileAtomic(dir + "/smoke.txt", list);
-      return prt::test::RunCommand(
-          prt::test::Q(PRT_CMAKE_COMMAND) + " -D TEST_EXECUTABLE=" + prt::test::Q(self) + " -D TIER=e2e -D TEST_WORKING_DIR=" +
-          prt::test::Q(dir) + " -D CTEST_FILE=" + prt::test::Q(dir + "/" + out) + " -D TEST_TIMEOUT=600 -D SKIP_RETURN_CODE=77" +
-          " -D SMOKE_LIST=" + prt::test::Q(dir + "/smoke.txt") + " -D SMOKE_PASS=" + pass +
-          " '-D SMOKE_ENVIRONMENT=PRT_BINARY=/x/prt;PRT_TEST_TMP=/x/tmp' -P " +
-          prt::test::Q(prt::test::SourceDir() + "/tests/discover_tests.cmake"));
+      return Discover(self, dir, dir + "/" + out, "",
+                      " -D SMOKE_LIST=" + prt::test::Q(dir + "/smoke.txt") + " -D SMOKE_PASS=" + pass +
+                          " '-D SMOKE_ENVIRONMENT=PRT_BINARY=/x/prt;PRT_TEST_TMP=/x/tmp'");
     };
     const std::string other = "runner: the small scene of the tests is small";
     REQUIRE(smoke("# a comment\nasan: " + name + "\ntsan: " + other + "\n", "smoke.cmake").exit_code == 0);
     const std::string smoke_cases = prt::ReadFile(dir + "/smoke.cmake");
-    std::size_t smoke_tests = 0;
-    for (auto at = smoke_cases.find("add_test("); at != std::string::npos; at = smoke_cases.find("add_test(", at + 1))
-      ++smoke_tests;
-    CHECK(smoke_tests == 1);  // the tsan line is another pass's
+    CHECK(Count(smoke_cases, "add_test(") == 1);  // the tsan line is another pass's
     CHECK(smoke_cases.find("add_test([==[" + name + "]==]") != std::string::npos);
     CHECK(smoke_cases.find("LABELS [==[core;e2e;smoke]==]") != std::string::npos);
     CHECK(smoke_cases.find("ENVIRONMENT [==[PRT_BINARY=/x/prt;PRT_TEST_TMP=/x/tmp]==]") != std::string::npos);

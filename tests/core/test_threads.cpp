@@ -26,13 +26,6 @@ namespace fs = std::filesystem;
 
 constexpr int kThreads = test::kManyThreads;
 
-/// Runs `work(t)` on kThreads threads of its own, t = 0..kThreads - 1, and joins them.
-template <class F>
-void OnThreads(F&& work) {
-  std::vector<std::thread> threads;
-  for (int t = 0; t < kThreads; ++t) threads.emplace_back([&work, t] { work(t); });
-  for (auto& thread : threads) thread.join();
-}
 
 }  // namespace
 
@@ -51,7 +44,7 @@ TEST_SUITE("core") {
     });
     {
       Progress bar("counting", kThreads * kPerThread);
-      OnThreads([&](int) {
+      test::OnThreads(kThreads, [&](int) {
         for (std::size_t i = 0; i < kPerThread; ++i) bar.Advance(1);
       });
       const ProgressReading whole = LatestProgress();
@@ -69,7 +62,7 @@ TEST_SUITE("core") {
     const std::string dir = test::ScratchDir("threads_atomic_files");
     constexpr int kPerThread = 25;
     std::vector<std::set<std::string>> temps(kThreads);
-    OnThreads([&](int t) {
+    test::OnThreads(kThreads, [&](int t) {
       for (int i = 0; i < kPerThread; ++i) {
         // All threads write the same destination in turn, and files of their own.
         AtomicFile shared(dir + "/shared.txt");
@@ -91,7 +84,7 @@ TEST_SUITE("core") {
     constexpr int kPerThread = 20;
     {
       OutputFolder folder(dir, OutputPlan{"render", {}});
-      OnThreads([&](int t) {
+      test::OnThreads(kThreads, [&](int t) {
         for (int i = 0; i < kPerThread; ++i) {
           const std::string name = "f" + std::to_string(t) + "_" + std::to_string(i) + ".txt";
           WriteFileAtomic(folder.Output(name), name);
@@ -111,7 +104,7 @@ TEST_SUITE("core") {
     // Without InstallSignalCleanup (the tests' own process) the registry is kept and never used:
     // what is checked is that joining and leaving it from many threads is safe.
     const std::string dir = test::ScratchDir("threads_cleanup");
-    OnThreads([&](int t) {
+    test::OnThreads(kThreads, [&](int t) {
       for (int i = 0; i < 200; ++i) {
         CleanupOnSignal file(dir + "/" + std::to_string(t) + "_" + std::to_string(i), CleanupKind::kFile);
         CleanupOnSignal moved = std::move(file);

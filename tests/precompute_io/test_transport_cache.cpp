@@ -3,24 +3,16 @@
 // library. (Through the binary: test_transport_cache_cli.cpp.)
 #include <doctest/doctest.h>
 
-#include <cstdio>
 #include <map>
 #include <set>
 #include <string>
 
-#include "core/atomic_file.h"
-#include "geometry/mesh_ops.h"
 #include "geometry/procedural.h"
-#include "io/obj_writer.h"
-#include "io/png_io.h"
 #include "precompute_io/transport_cache.h"
-#include "raster/image_diff.h"
 #include "tests/precompute_io/sphere_on_floor.h"
 #include "tests/test_support.h"
 
 namespace prt {
-
-using test::Q;
 
 TEST_SUITE("precompute_io") {
   TEST_CASE("cache key: every input of the transport changes it") {

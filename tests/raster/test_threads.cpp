@@ -3,6 +3,8 @@
 // one thread and on more threads than cores; ThreadSanitizer watches the many-thread runs.
 #include <doctest/doctest.h>
 
+#include <tuple>
+
 #include "geometry/procedural.h"
 #include "raster/camera.h"
 #include "raster/rasterizer.h"
@@ -27,10 +29,11 @@ TEST_SUITE("raster") {
       options.tone_map = &tone;
       options.tone_mapped = &toned;
       const RasterImage& frame = rasterizer.Draw(camera, 150, 100, knot.positions, knot.triangles, colors, options);
-      return std::make_pair(frame.image.pixels, toned.rgb);
+      return std::make_tuple(frame.image.pixels, frame.coverage, toned.rgb);
     });
-    CHECK(one.first == many.first);
-    CHECK(one.second == many.second);
+    CHECK(std::get<0>(one) == std::get<0>(many));
+    CHECK(std::get<1>(one) == std::get<1>(many));  // the mesh's share of each pixel
+    CHECK(std::get<2>(one) == std::get<2>(many));
     const RasterImage plain = Rasterize(camera, 150, 100, knot.positions, knot.triangles, colors);
     const auto [toned_one, toned_many] = test::OneAndMany([&] { return ToneMap(plain.image, tone).image.rgb; });
     CHECK(toned_one == toned_many);

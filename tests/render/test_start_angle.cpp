@@ -1,9 +1,9 @@
 // --start-angle: the light's turn at frame 0, so a sequence can start where prt view left it; and
 // the frames' file names.
+#include <doctest/doctest.h>
+
 #include "core/constants.h"
-#include "io/png_io.h"
 #include "render/render_frames.h"
-#include "tests/test_support.h"
 
 namespace prt {
 

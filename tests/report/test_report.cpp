@@ -4,17 +4,11 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <filesystem>
-#include <limits>
-#include <map>
-#include <set>
-#include <sstream>
 #include <string>
 
 #include <glm/common.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/atomic_file.h"
 #include "env/procedural.h"
 #include "raster/plot.h"
 #include "report/report_auto_lmax.h"
@@ -22,8 +16,6 @@
 #include "tests/test_support.h"
 
 namespace {
-
-using prt::test::Q;
 
 /// Count of pixels that are not pure white.
 std::size_t Inked(const prt::Image8& im) {

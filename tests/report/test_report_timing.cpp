@@ -5,7 +5,6 @@
 #include <doctest/doctest.h>
 
 #include <cstdint>
-#include <map>
 #include <set>
 #include <sstream>
 #include <string>

@@ -2,10 +2,7 @@
 // none of them without --basis wavelet. (The study's numbers and writers: test_report_wavelet.cpp.)
 #include <doctest/doctest.h>
 
-#include <algorithm>
-#include <cmath>
 #include <filesystem>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>

@@ -5,11 +5,9 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <filesystem>
 
 #include <glm/geometric.hpp>
 
-#include "core/atomic_file.h"
 #include "core/constants.h"
 #include "env/load_environment.h"
 #include "env/procedural.h"
@@ -17,7 +15,6 @@
 #include "geometry/mesh_texture.h"
 #include "geometry/procedural.h"
 #include "io/obj_loader.h"
-#include "io/png_io.h"
 #include "precompute/light.h"
 #include "precompute/transport.h"
 #include "precompute_io/transport_cache.h"

@@ -21,13 +21,25 @@ std::string HttpReply::Header(const std::string& name) const {
   return head.substr(start, head.find("\r\n", start) - start);
 }
 
-int Connect(int port) {
+namespace {
+
+/// A socket connected to 127.0.0.1:port, or -1.
+int TryConnect(int port) {
   const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
   sockaddr_in addr{};
   addr.sin_family = AF_INET;
   addr.sin_port = htons(static_cast<std::uint16_t>(port));
   addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  REQUIRE(::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
+  if (fd >= 0 && ::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0) return fd;
+  if (fd >= 0) ::close(fd);
+  return -1;
+}
+
+}  // namespace
+
+int Connect(int port) {
+  const int fd = TryConnect(port);
+  REQUIRE(fd >= 0);
   return fd;
 }
 
@@ -38,15 +50,8 @@ bool StillOpen(int fd) {
 
 HttpReply SendRaw(int port, const std::string& raw) {
   HttpReply reply;
-  const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in addr{};
-  addr.sin_family = AF_INET;
-  addr.sin_port = htons(static_cast<std::uint16_t>(port));
-  addr.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  if (::connect(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) != 0) {
-    ::close(fd);
-    return reply;
-  }
+  const int fd = TryConnect(port);
+  if (fd < 0) return reply;
   for (std::size_t sent = 0; sent < raw.size();) {
     const ssize_t n = ::send(fd, raw.data() + sent, raw.size() - sent, MSG_NOSIGNAL);
     if (n <= 0) break;

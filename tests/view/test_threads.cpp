@@ -74,19 +74,16 @@ TEST_SUITE("view") {
     std::thread serving([&] { server.Serve(); });
     constexpr int kClients = 6, kRounds = 8;
     std::atomic<int> wrong{0}, answered{0};
-    std::vector<std::thread> clients;
-    for (int c = 0; c < kClients; ++c)
-      clients.emplace_back([&, c] {
-        for (int r = 0; r < kRounds; ++r) {
-          const int width = 16 + c;  // each client its own size: its frames' bytes are its own
-          const test::HttpReply frame = test::Request(server.port(), "/frame?size=" + std::to_string(width) + "x16");
-          const test::HttpReply state = test::Request(server.port(), "/state");
-          const test::HttpReply page = test::Request(server.port(), "/");
-          answered += frame.status == 200 && state.status == 200 && page.status == 200;
-          if (frame.body != std::string(std::size_t(3) * width * 16, char(width))) ++wrong;
-        }
-      });
-    for (auto& t : clients) t.join();
+    test::OnThreads(kClients, [&](int c) {
+      for (int r = 0; r < kRounds; ++r) {
+        const int width = 16 + c;  // each client its own size: its frames' bytes are its own
+        const test::HttpReply frame = test::Request(server.port(), "/frame?size=" + std::to_string(width) + "x16");
+        const test::HttpReply state = test::Request(server.port(), "/state");
+        const test::HttpReply page = test::Request(server.port(), "/");
+        answered += frame.status == 200 && state.status == 200 && page.status == 200;
+        if (frame.body != std::string(std::size_t(3) * width * 16, char(width))) ++wrong;
+      }
+    });
     CHECK(wrong == 0);
     CHECK(answered == kClients * kRounds);
     CHECK(backend.frames() == kClients * kRounds);

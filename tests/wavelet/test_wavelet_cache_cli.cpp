@@ -4,16 +4,10 @@
 // test_wavelet_cache.cpp.)
 #include <doctest/doctest.h>
 
-#include <cmath>
-#include <cstring>
 #include <filesystem>
-#include <map>
-#include <set>
 #include <string>
 
 #include "core/atomic_file.h"
-#include "geometry/mesh_ops.h"
-#include "geometry/procedural.h"
 #include "precompute_io/transport_cache.h"
 #include "tests/test_process.h"
 #include "tests/wavelet/synthetic_transport.h"
