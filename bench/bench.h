@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "app/args.h"
+#include "options/args.h"
 #include "geometry/mesh.h"
 #include "material/material.h"
 #include "raster/rasterizer.h"

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "app/commands.h"
+#include "bench/cmd_bench.h"
 #include "bench/bench.h"
 #include "core/memory.h"
 

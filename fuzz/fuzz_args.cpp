@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "app/args.h"
+#include "options/args.h"
 #include "app/commands.h"
 #include "app/render_args.h"
 #include "app/scene_options.h"

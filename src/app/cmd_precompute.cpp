@@ -1,16 +1,18 @@
 #include <algorithm>
 
-#include "app/basis_table.h"
 #include "app/commands.h"
 #include "app/pipeline.h"
 #include "app/render_args.h"
 #include "core/atomic_file.h"
 #include "core/color.h"
+#include "basis/cache_plan.h"
 #include "core/log.h"
 #include "precompute_io/cpca_matrix_file.h"
 #include "precompute_io/light_txt.h"
 #include "precompute_io/transfer_matrix_file.h"
 #include "precompute_io/transport_txt.h"
+// The course's files are SH coefficients: precompute takes the SH transport itself.
+#include "sh_basis/scene_transport.h"
 
 namespace prt {
 namespace {
@@ -54,9 +56,9 @@ CommandSpec PrecomputeSpec() {
   names.erase(std::find(names.begin(), names.end(), "--hidden-samples"));
   // The course's files are SH: --basis is taken only to refuse the other bases with a reason,
   // whose own options are not offered here.
-  for (const Basis& basis : Bases())
-    if (!basis.course_files)
-      for (const std::string& own : basis.options) names.erase(std::find(names.begin(), names.end(), own));
+  for (const Basis* basis : Bases())
+    if (!basis->Traits().course_files)
+      for (const OptionSpec& own : basis->OwnOptions()) names.erase(std::find(names.begin(), names.end(), own.name));
   OptionGroup scene = SceneOptionGroup(SceneOptions{}, names);
   for (auto& o : scene.options)
     if (o.name == "--max-edge")
@@ -99,10 +101,10 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
   if (cpca && !options.material.glossy)
     args.Fail("--cpca: compresses a glossy material's transfer matrices (expected --material phong:N,KS, or no --cpca)");
   if (!out) args.Fail("--out DIR is required");
-  if (!options.basis->course_files)
-    args.Fail("--basis " + std::string(options.basis->name) +
+  if (!options.basis->Traits().course_files)
+    args.Fail("--basis " + options.basis->Name() +
               ": precompute writes the course's SH files (light.txt, transport.txt) only; render, demo and report "
-              "take --basis " + options.basis->name);
+              "take --basis " + options.basis->Name());
   if (options.max_edge > 0.0)
     args.Fail("--max-edge: not with precompute (the course's transport.txt has three rows per face of the OBJ "
               "file, and split triangles are other faces; render and reference take it)");
@@ -117,17 +119,17 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
   if (glossy) plan.names.push_back("transfer_matrices.bin");
   if (cpca) plan.names.push_back("transfer_matrices_cpca.bin");
   OutputFolder folder(*out, plan);
-  const CachePlan cache = PlanCache(cache_option, &folder);
+  const CachePlan cache = PlanCache(cache_option, &folder, options.basis->CacheName(), Bases());
 
   const Mesh mesh = LoadSceneMesh(options, &folder);
   // Coloured interreflection writes one file per channel: known once the albedo is.
   if (TransportChannels(mesh, TransportModeFromName(options.transport)) == 3)
     folder.Plan({"transport_r.txt", "transport_g.txt", "transport_b.txt"});
   // The memory of the transfer matrices is checked before the light is loaded.
-  if (glossy) CheckMatrixMemory(mesh, options);
+  if (glossy) CheckMatrixMemory(mesh, TransportModeFromName(options.transport), options.lmax);
   const auto env = LoadSceneEnvironment(options, &folder);
   const ShRgb light = ComputeLight(*env, options);
-  Transport transport = ComputeSceneTransport(mesh, options, cache, {}, nullptr, glossy);
+  Transport transport = ComputeSceneTransport(*options.basis, mesh, TransportOptionsOf(options), options.samples_from_rule, cache, nullptr, glossy);
 
   WriteFileAtomic(folder.Output("light.txt"), FormatLightTxt(light));
   std::string wrote;

@@ -115,7 +115,7 @@ int RunReport(const std::vector<std::string>& tokens) {
   if (stability) plan.names.push_back("stability.csv");
   else plan.names.insert(plan.names.end(), {"report.csv", "error_vs_time.png"});
   if (!stability && scene.material.glossy) plan.names.push_back("glossy_error_vs_lmax.png");
-  const bool wavelet = !stability && scene.basis->report_study;
+  const bool wavelet = !stability && scene.basis->Traits().report_study;
   if (wavelet) plan.names.push_back("basis_error.png");
   OutputFolder folder(*out, plan);
 
@@ -183,7 +183,6 @@ int RunReport(const std::vector<std::string>& tokens) {
       ApplySceneEdits(sun_scene, scene);
     }
     WaveletStudyConfig wc = MakeWaveletStudyConfig(quick, scene.bounces, scene.seed);
-    wc.selection = WaveletOptions{}.selection;
     data.wavelet = RunWaveletStudy(scene.mesh.empty() ? sun_scene : mesh, *env, wc);
     data.wavelet->environment = scene.env;
     data.wavelet->scene = !scene.mesh.empty() ? scene.mesh

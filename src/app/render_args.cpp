@@ -11,17 +11,19 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include "app/basis_table.h"
-#include "app/option_table.h"
 #include "app/render_video.h"
+#include "bases/list.h"
 #include "core/atomic_file.h"  // WriteProblem
 #include "core/error.h"
 #include "core/output_folder.h"
 #include "core/text.h"
+#include "options/option_table.h"
 #include "raster/camera.h"
 #include "raster/rasterizer.h"
 #include "render/render_frames.h"
 #include "sh/coeffs.h"
+#include "video/apng_writer.h"
+#include "video/ffmpeg_encoder.h"
 
 namespace prt {
 namespace {
@@ -214,8 +216,8 @@ bool IsFolderOwnName(const std::string& file, const RenderJobOptions& o) {
   if (o.cache == "none") return false;
   if (!o.cache.empty()) return ResolvedPath(file) == ResolvedPath(o.cache);
   // Every basis's cache in the folder: a run of one keeps the others' (render_job.cpp).
-  for (const Basis& basis : Bases())
-    if (ResolvedPath(file) == ResolvedPath(o.out + "/" + basis.cache_name)) return true;
+  for (const Basis* basis : Bases())
+    if (ResolvedPath(file) == ResolvedPath(o.out + "/" + basis->CacheName())) return true;
   return false;
 }
 
@@ -319,9 +321,9 @@ RenderJobOptions CompleteRenderOptions(Args& args, RenderJobOptions job, const S
       if (!file->empty() && !input.empty() && std::filesystem::exists(input) && SameFile(*file, input))
         args.Fail(std::string(option) + ": '" + *file + "' is an input of this run (expected another name: the run would "
                   "replace " + input + ")");
-  if (o.view == View::kTransport && !scene.basis->coefficient_view)
-    args.Fail("--view transport: shows one SH transfer coefficient per vertex; --basis " + std::string(scene.basis->name) +
-              " has none (expected --basis " + DefaultBasis()->name + ", or another view such as light)");
+  if (o.view == View::kTransport && !scene.basis->Traits().coefficient_view)
+    args.Fail("--view transport: shows one SH transfer coefficient per vertex; --basis " + scene.basis->Name() +
+              " has none (expected --basis " + DefaultBasis()->Name() + ", or another view such as light)");
   if (o.view == View::kTransport && o.transport_index >= CoeffCount(scene.lmax))
     args.Fail("--view: transport:" + std::to_string(o.transport_index) + " is out of range (expected 0 to " +
               std::to_string(CoeffCount(scene.lmax) - 1) + " for lmax " + std::to_string(scene.lmax) + ")");
@@ -342,6 +344,50 @@ RenderJobOptions CompleteRenderOptions(Args& args, RenderJobOptions job, const S
       args.Fail("--up: parallel to the view direction --target - --eye (expected a direction across it)");
   }
   return job;
+}
+
+namespace {
+
+/// True if `file` names an output the run writes itself: a frame or a file of prt's own in the
+/// output folder, the transport cache, the --vertex-radiance file.
+bool IsRunOutputName(const std::string& file, const RenderJobOptions& o) {
+  return IsFolderOwnName(file, o) ||
+         (!o.vertex_radiance.empty() && ResolvedPath(file) == ResolvedPath(o.vertex_radiance));
+}
+
+}  // namespace
+
+void ReadVideoOptions(Args& args, RenderJobOptions& job, const RenderJobOptions& job_defaults) {
+  namespace fs = std::filesystem;
+  VideoOptions& o = job.video;
+  const VideoOptions& d = job_defaults.video;
+  const RenderOptions& draw = job.draw;
+  if (!args.Accepts("--video")) return;
+  const bool has_video = args.Has("--video");
+  if (args.Has("--fps") && !has_video) args.Fail("--fps: sets the rate of --video, which is not given (expected --video FILE)");
+  if (!has_video) return;
+  o.path = args.String("--video", d.path);
+  const std::string& v = o.path;
+  if (HasControlCharacter(v))
+    args.Fail("--video: the name has a control character (a newline, a tab) (expected a plain file name)");
+  const auto format = VideoFormatOf(v);
+  if (!format)
+    args.Fail("--video: '" + v + "' has no video extension (expected .png or .apng for an animated PNG, .mp4 or .webm "
+              "through ffmpeg)");
+  o.fps = args.Double("--fps", d.fps, 0.1, 240.0);
+  if (*format == VideoFormat::kApng && o.fps > kApngMaxFps)
+    args.Fail("--fps: " + Formatted("%g", o.fps) + " is too fast for an animated PNG (expected at most " +
+              Formatted("%g", kApngMaxFps) + ": browsers play frames of 10 ms or less at 10 frames per second)");
+  if (*format == VideoFormat::kMp4 && (draw.width % 2 != 0 || draw.height % 2 != 0))
+    args.Fail("--video: H.264 in '" + v + "' needs an even frame size, not " + std::to_string(draw.width) + "x" +
+              std::to_string(draw.height) + " (expected even --size values, or a .png or .webm video)");
+  if (IsRunOutputName(v, job))
+    args.Fail("--video: '" + v + "' is the name of one of the run's own outputs (a frame, the transport cache or the "
+              "--vertex-radiance file; expected another name, such as turn.png)");
+  std::error_code ec;
+  if (fs::is_directory(v, ec)) throw Error(v + ": is a folder (expected a file name for --video)");
+  if (*format != VideoFormat::kApng)
+    o.ffmpeg = FindFfmpeg(*format == VideoFormat::kMp4 ? FfmpegCodec::kH264Mp4 : FfmpegCodec::kVp9Webm, "--video " + v);
 }
 
 }  // namespace prt

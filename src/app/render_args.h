@@ -10,9 +10,9 @@
 
 #include <glm/vec3.hpp>
 
-#include "app/args.h"
 #include "app/render_video.h"
 #include "app/scene_options.h"
+#include "options/args.h"
 #include "cpca/cpca.h"
 #include "render/render_options.h"
 
@@ -64,5 +64,11 @@ RenderJobOptions ReadRenderOptions(Args& args, const RenderJobOptions& defaults)
 /// Checks what depends on both option sets (a transport coefficient the lmax does not have)
 /// and gives the embedded scene the demo's camera when no camera option was given.
 RenderJobOptions CompleteRenderOptions(Args& args, RenderJobOptions render, const SceneOptions& scene);
+
+/// Reads --video and --fps into `job.video` (after --size and --out): the extension names a
+/// format, the rate suits it, the size suits H.264, the name is not one of the run's other
+/// outputs, and ffmpeg with its encoder is installed for .mp4 and .webm. Throws UsageError
+/// (through `args`) or Error.
+void ReadVideoOptions(Args& args, RenderJobOptions& job, const RenderJobOptions& defaults);
 
 }  // namespace prt

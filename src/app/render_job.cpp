@@ -3,11 +3,12 @@
 #include <filesystem>
 #include <memory>
 
-#include "app/basis_table.h"
 #include "app/pipeline.h"
 #include "app/render_args.h"
 #include "app/render_video.h"
 #include "app/seen_ringing.h"
+#include "bases/list.h"
+#include "basis/cache_plan.h"
 #include "core/atomic_file.h"
 #include "core/log.h"
 #include "core/text.h"
@@ -102,10 +103,10 @@ std::string RingingNote(std::size_t pixels, const ShRgb& light, const SceneOptio
 void RenderJob(const SceneOptions& scene, const RenderJobOptions& job) {
   const RenderOptions& render = job.draw;  // all that the frame loop reads
   OutputFolder folder(job.out, RenderPlan(job));
-  const CachePlan cache = PlanCache(job.cache, &folder, scene.basis->cache_name);
+  const CachePlan cache = PlanCache(job.cache, &folder, scene.basis->CacheName(), Bases());
   // The other bases' caches stay in the folder: a run of one basis does not remove another's.
-  for (const Basis& other : Bases())
-    if (&other != scene.basis) folder.OutputInPlace(other.cache_name);
+  for (const Basis* other : Bases())
+    if (other != scene.basis) folder.OutputInPlace(other->CacheName());
 
   // Mesh and camera first: a camera that cannot see is refused before any light is loaded.
   const Mesh mesh = LoadSceneMesh(scene, &folder);
@@ -116,7 +117,8 @@ void RenderJob(const SceneOptions& scene, const RenderJobOptions& job) {
   // (Views that show no lobe do not need them.)
   const bool matrices =
       scene.material.glossy && render.orbit != 0.0 && (render.view == View::kRadiance || render.view == View::kGlossy);
-  if (matrices) CheckMatrixMemory(mesh, scene);
+  TransportOptions topts = TransportOptionsOf(scene);
+  scene.basis->CheckMemory(mesh, topts, matrices);
 
   const auto env = LoadSceneEnvironment(scene, &folder);
   const ShRgb light = ComputeLight(*env, scene, render.view);
@@ -132,12 +134,16 @@ void RenderJob(const SceneOptions& scene, const RenderJobOptions& job) {
     Summary("vertex radiance: every vertex computed as one the camera sees (--hidden-samples " +
             std::to_string(scene.hidden_samples) + " not used): --vertex-radiance writes them all, and none may depend "
             "on the camera");
-  // The transport in its basis (app/basis_table.h), and the light each frame turns for it.
-  const BasisInputs inputs{mesh, scene, render.axis, job.cpca, *env, light, seen, camera, cache, matrices};
+  // The transport in its basis (basis/basis.h), and the light each frame turns for it.
+  topts.seen = seen;
+  const BasisInputs inputs{mesh,    topts, scene.samples_from_rule, scene.lmax_why, scene.own(), render.axis,
+                           job.cpca, *env, &camera,                  cache,          matrices};
   if (!transport)
     Summary("transport: none computed (--view light draws the light as the basis keeps it, not the mesh's transport)");
-  const PreparedBasis basis = transport ? scene.basis->prepare(inputs) : scene.basis->prepare_light(inputs);
-  FrameLight& frame_light = *basis.light;
+  const std::unique_ptr<PreparedBasis> basis = transport ? scene.basis->Prepare(inputs) : scene.basis->PrepareLight(inputs);
+  const std::unique_ptr<FrameLight> light_of_frames =
+      basis->Light(*env, light, render.axis, scene.basis->LightTerms(scene.own()));
+  FrameLight& frame_light = *light_of_frames;
   std::unique_ptr<SingleFileOutput> radiance_outside;
   if (!job.vertex_radiance.empty())
     radiance_outside = WriteVertexRadiance(mesh, frame_light, camera, job.vertex_radiance, folder);
@@ -151,7 +157,7 @@ void RenderJob(const SceneOptions& scene, const RenderJobOptions& job) {
   Summary("frames: " + std::to_string(stats.frames) + " of " + std::to_string(render.width) + "x" +
           std::to_string(render.height) + " in " + folder.dir() + "/" +
           Formatted(" [draw %.3f s, waiting for PNG encoding %.3f s]", stats.draw_seconds, stats.encode_seconds));
-  if (stats.negative_pixels > 0 && scene.basis->windowed_light)
+  if (stats.negative_pixels > 0 && scene.basis->Traits().windowed_light)
     Summary(RingingNote(stats.negative_pixels, light, scene, render.view, matrices));
   if (stats.nan_pixels > 0) Summary("warning: " + std::to_string(stats.nan_pixels) + " NaN pixels set to 0");
   if (const std::string line = video.Finish(); !line.empty()) Summary(line);

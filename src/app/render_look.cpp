@@ -53,10 +53,10 @@ RenderOptions LookRenderDefaults(Look look, RenderOptions d) {
 
 std::string CheckLook(Args& args, Look look, const SceneOptions& scene) {
   if (look != Look::kCourse) return "";
-  if (!scene.basis->coefficient_view)
+  if (!scene.basis->Traits().coefficient_view)
     args.Fail("--look course: shows what the course's viewer draws from light.txt and transport.txt, which hold SH "
-              "coefficients; --basis " + std::string(scene.basis->name) + " has none (expected --basis " +
-              DefaultBasis()->name + ", or --look default)");
+              "coefficients; --basis " + scene.basis->Name() + " has none (expected --basis " +
+              DefaultBasis()->Name() + ", or --look default)");
   if (scene.lmax != kCourseLmax)
     Warn("--look course with lmax " + std::to_string(scene.lmax) + ": the course's WebGL viewer reads exactly 9 "
          "numbers a row (lmax 2) and draws garbage, without an error, from precompute's files at any other lmax; "

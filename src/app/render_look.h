@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "app/args.h"
+#include "options/args.h"
 #include "app/scene_options.h"
 #include "render/render_options.h"
 

@@ -1,7 +1,6 @@
 #pragma once
 /// \file
-/// `--video FILE` and `--fps F` of render and demo: the options, checked before any work, and
-/// the video of a run, written beside the PNG frames (video/video_writer.h) and put in place
+/// The video of a run (`--video FILE` and `--fps F` of render and demo, read by render_args.h), written beside the PNG frames (video/video_writer.h) and put in place
 /// only when the run succeeds, like every output (docs/CLI.md, "Outputs").
 ///
 /// A video inside the output folder is one of the folder's outputs: staged with the frames and
@@ -11,14 +10,11 @@
 #include <memory>
 #include <string>
 
-#include "app/args.h"
 #include "core/output_folder.h"
 #include "render/render_options.h"
 #include "video/video_writer.h"
 
 namespace prt {
-
-struct RenderJobOptions;
 
 /// The video of a run: where (empty: none), at what rate, and the ffmpeg program for .mp4 and
 /// .webm (found when the options are read).
@@ -27,12 +23,6 @@ struct VideoOptions {
   double fps = 30.0;
   std::string ffmpeg;
 };
-
-/// Reads --video and --fps into `job.video` (after --size and --out): the extension names a
-/// format, the rate suits it, the size suits H.264, the name is not one of the run's other
-/// outputs, and ffmpeg with its encoder is installed for .mp4 and .webm. Throws UsageError
-/// (through `args`) or Error.
-void ReadVideoOptions(Args& args, RenderJobOptions& job, const RenderJobOptions& defaults);
 
 class RenderVideo {
  public:

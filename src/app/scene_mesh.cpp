@@ -8,7 +8,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "app/option_table.h"
+#include "options/option_table.h"
 #include "app/pipeline.h"
 #include "core/error.h"
 #include "core/log.h"

@@ -22,9 +22,9 @@ namespace {
 /// --basis's help: the names of the table's rows, then what each but the default is.
 std::string BasisHelp() {
   std::string names, what;
-  for (const Basis& b : Bases()) {
-    names += (names.empty() ? "" : " | ") + std::string(b.name);
-    if (*b.help) what += std::string(" ") + b.help;
+  for (const Basis* b : Bases()) {
+    names += (names.empty() ? "" : " | ") + b->Name();
+    if (!b->Help().empty()) what += " " + b->Help();
   }
   return names + ": the basis of the transport." + what;
 }
@@ -98,15 +98,9 @@ std::map<std::string, OptionSpec> SceneSpecs(const SceneOptions& d) {
        "split triangles until no edge is longer than L world units (`2%`: 2 % of the bounding-box diagonal), so "
        "per-vertex transport can show shadows inside large triangles",
        d.max_edge > 0 ? Formatted("%g", double(d.max_edge)) + (d.max_edge_relative ? "%" : "") : "none"});
-  add({"--basis", "B", BasisHelp(), d.basis->name});
-  add({"--cube-size", "F", "wavelet basis: the cube's face size, a power of two from 8 to 64 (6 F^2 texels)",
-       std::to_string(d.wavelet.face_size)});
-  add({"--wavelet-terms", "N",
-       "wavelet basis: coefficients kept per vertex, the 6 faces' means among them, 6..6 F^2 (4 bytes a detail)",
-       std::to_string(d.wavelet.budget)});
-  add({"--light-terms", "K",
-       "wavelet basis: light coefficients kept per frame, the K most important (0: all), 0..6 F^2",
-       d.wavelet.light_terms ? std::to_string(d.wavelet.light_terms) : "0 (all)"});
+  add({"--basis", "B", BasisHelp(), d.basis->Name()});
+  for (const Basis* b : Bases())
+    for (OptionSpec o : b->OwnOptions()) add(std::move(o));
   return s;
 }
 
@@ -197,11 +191,16 @@ void WarnIfLobeTooSharp(const SceneOptions& o) {
 }  // namespace
 
 const std::vector<std::string>& AllSceneOptionNames() {
-  static const std::vector<std::string> names = {
+  static std::vector<std::string> names = {
       "--mesh",    "--env",          "--lmax",   "--tolerance", "--transport",      "--samples",
       "--hidden-samples", "--sampler", "--bounces",      "--direction-sets",        "--albedo",         "--texture", "--material", "--seed",
-      "--threads", "--games202-faces", "--window", "--max-edge", "--basis", "--cube-size", "--wavelet-terms",
-      "--light-terms"};
+      "--threads", "--games202-faces", "--window", "--max-edge", "--basis"};
+  static const bool own = [] {  // then every basis's own options, in list order
+    for (const Basis* b : Bases())
+      for (const OptionSpec& o : b->OwnOptions()) names.push_back(o.name);
+    return true;
+  }();
+  (void)own;
   return names;
 }
 
@@ -289,28 +288,13 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
       o.max_edge_relative = relative;
     }
   }
-  if (has("--basis")) o.basis = FindBasis(args.Choice("--basis", d.basis->name, BasisNames()));
-  if (has("--cube-size")) {
-    o.wavelet.face_size = args.Int("--cube-size", d.wavelet.face_size, 8, kMaxWaveletFace);
-    if (o.wavelet.face_size & (o.wavelet.face_size - 1))
-      args.Fail("--cube-size: " + std::to_string(o.wavelet.face_size) +
-                " is not a power of two (expected 8, 16, 32 or 64)");
-  }
-  const int texels = 6 * o.wavelet.face_size * o.wavelet.face_size;
-  if (has("--wavelet-terms")) o.wavelet.budget = args.Int("--wavelet-terms", d.wavelet.budget, 6, texels);
-  if (has("--light-terms")) o.wavelet.light_terms = args.Int("--light-terms", d.wavelet.light_terms, 0, texels);
-  o.wavelet.budget = std::min(o.wavelet.budget, texels);
-  if (!o.basis->glossy && o.material.glossy)
-    args.Fail("--basis " + std::string(o.basis->name) + ": glossy materials are not built in the " + o.basis->name +
-              " basis (--material " + o.material.Name() + "); use --basis " + DefaultBasis()->name +
+  if (has("--basis")) o.basis = FindBasis(args.Choice("--basis", d.basis->Name(), BasisNames()));
+  o.basis_options = BasisOptionSet::Read(args);
+  if (!o.basis->Traits().glossy && o.material.glossy)
+    args.Fail("--basis " + o.basis->Name() + ": glossy materials are not built in the " + o.basis->Name() +
+              " basis (--material " + o.material.Name() + "); use --basis " + DefaultBasis()->Name() +
               ", or --material diffuse");
-  // A basis's own options are refused with another basis.
-  for (const Basis& basis : Bases())
-    if (&basis != o.basis)
-      for (const std::string& name : basis.options)
-        if (has(name.c_str()) && args.Has(name) &&
-            std::find(o.basis->options.begin(), o.basis->options.end(), name) == o.basis->options.end())
-          args.Fail(name + ": applies to --basis " + basis.name + " only");
+  BasisOptionSet::RefuseOthers(args, *o.basis);
   SetQuiet(args.Flag("--quiet"));
   SetThreadCount(o.threads);
   CheckInputs(args, o);
@@ -320,23 +304,28 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
     o.lmax = choice.lmax;
     Summary(choice.why);
   }
-  // A basis may take its own lmax when none is given (the wavelets' bounces: app/basis_table.cpp).
-  if (o.basis->lmax >= 0 && !args.Has("--lmax") && !o.lmax_auto) {
-    o.lmax = o.basis->lmax;
-    o.lmax_why = o.basis->lmax_why;
+  // A basis may take its own lmax when none is given (the wavelets' bounces: wavelet/wavelet_basis.cpp).
+  if (o.basis->Lmax() >= 0 && !args.Has("--lmax") && !o.lmax_auto) {
+    o.lmax = o.basis->Lmax();
+    o.lmax_why = o.basis->LmaxWhy();
   }
   ResolveSamples(args, o);
   if (has("--lmax")) WarnIfLobeTooSharp(o);  // commands without bands (reference) have nothing to warn of
   return o;
 }
 
-std::string SamplesOrigin(const SceneOptions& o, bool every_vertex) {
-  if (!o.samples_from_rule || o.transport == "unshadowed") return "";
-  const Sampler sampler = SamplerFromName(o.sampler);
-  return " (the sample rule's default at lmax " + std::to_string(o.lmax) + ": " +
-         (every_vertex ? SampleRuleTextEveryVertex(sampler) : SampleRuleText(sampler)) +
-         "; it aims at frame 0 within 2 levels of a converged frame at every pixel, as measured at lmax 2 and 4; "
-         "--samples N and --hidden-samples N override)";
+TransportOptions TransportOptionsOf(const SceneOptions& options) {
+  TransportOptions t;
+  t.material = options.material;
+  t.mode = TransportModeFromName(options.transport);
+  t.lmax = options.lmax;
+  t.samples = options.samples;
+  t.hidden_samples = options.hidden_samples;
+  t.sampler = SamplerFromName(options.sampler);
+  t.bounces = options.bounces;
+  t.seed = options.seed;
+  t.direction_sets = options.direction_sets;
+  return t;
 }
 
 double MaxEdgeLength(const SceneOptions& options, double diagonal) {

@@ -12,12 +12,12 @@
 
 #include <glm/vec3.hpp>
 
-#include "app/args.h"
-#include "app/basis_table.h"
+#include "bases/list.h"
 #include "env/cube_faces.h"
 #include "material/material.h"
 #include "sh/coeffs.h"
-#include "wavelet/options.h"
+#include "options/args.h"
+#include "precompute/transport.h"
 
 namespace prt {
 
@@ -57,10 +57,13 @@ struct SceneOptions {
   /// a fraction of the bounding-box diagonal when max_edge_relative.
   double max_edge = 0.0;
   bool max_edge_relative = false;
-  /// --basis: the row of app/basis_table.h whose folder stores the transport.
+  /// --basis: the basis of the list (basis/basis.h) whose folder stores the transport.
   const Basis* basis = DefaultBasis();
-  /// The wavelet basis's own options (--cube-size, --wavelet-terms, --light-terms).
-  WaveletOptions wavelet;
+  /// Every basis's own options (each basis declares and reads them: basis/basis.h).
+  BasisOptionSet basis_options;
+
+  /// The chosen basis's own options.
+  const BasisSettings& own() const { return basis_options.Of(*basis); }
 };
 
 /// Every scene option in help order: what `render` takes.
@@ -80,10 +83,8 @@ OptionGroup SceneOptionGroup(const SceneOptions& defaults, const std::vector<std
 /// a warning naming both counts, said once here, before any work.
 SceneOptions ReadSceneOptions(Args& args, const SceneOptions& defaults = {});
 
-/// How the transport's direction count was chosen, for the transport's run-summary line: " (the
-/// sample rule's default at lmax L: ...; --samples N overrides)" when it came from the rule, ""
-/// when --samples gave it or the transport is unshadowed.
-std::string SamplesOrigin(const SceneOptions& options, bool every_vertex = false);
+/// The transport options the scene options ask for (no eye, every vertex seen).
+TransportOptions TransportOptionsOf(const SceneOptions& options);
 
 /// The `--max-edge` length for a mesh whose bounding-box diagonal is `diagonal` (0: none).
 double MaxEdgeLength(const SceneOptions& options, double diagonal);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "basis/cache_plan.h"
 #include "core/constants.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -64,7 +65,7 @@ struct ViewScene::Prepared {
   std::mutex mutex;
   bool done = false;
   std::string error;
-  PreparedBasis basis;
+  std::unique_ptr<PreparedBasis> basis;
   SceneOptions scene;
 };
 
@@ -77,13 +78,17 @@ ViewScene::ViewScene(ViewSetup setup) : setup_(std::move(setup)) {
     envs_.push_back(LoadSceneEnvironment(s));
   }
   limits_.lmax = setup_.scene.lmax;
-  limits_.bases.push_back(setup_.scene.basis->name);
-  for (const Basis& b : Bases())
-    if (&b != setup_.scene.basis && (b.glossy || !setup_.scene.material.glossy)) limits_.bases.push_back(b.name);
+  limits_.bases.push_back(setup_.scene.basis->Name());
+  for (const Basis* b : Bases())
+    if (b != setup_.scene.basis && (b->Traits().glossy || !setup_.scene.material.glossy)) limits_.bases.push_back(b->Name());
   limits_.modes = kModes;
   limits_.environments = static_cast<int>(envs_.size());
   limits_.coefficients = CoeffCount(setup_.scene.lmax);
-  limits_.light_terms = 6 * setup_.scene.wavelet.face_size * setup_.scene.wavelet.face_size;
+  for (const Basis* b : Bases())  // the light terms of the bases that keep fewer than all
+    if (const int most = b->MaxLightTerms(setup_.scene.basis_options.Of(*b)); most > 0) {
+      limits_.light_terms = std::max(limits_.light_terms, most);
+      defaults_.light_terms = b->LightTerms(setup_.scene.basis_options.Of(*b));
+    }
   limits_.camera_moves = !setup_.scene.material.glossy;
 
   defaults_.draw = setup_.draw;
@@ -92,9 +97,8 @@ ViewScene::ViewScene(ViewSetup setup) : setup_(std::move(setup)) {
   defaults_.draw.up = glm::dvec3(camera_.up);
   defaults_.draw.fov = camera_.fov_deg;
   defaults_.lmax = setup_.scene.lmax;
-  defaults_.basis = setup_.scene.basis->name;
+  defaults_.basis = setup_.scene.basis->Name();
   defaults_.mode = setup_.scene.transport;
-  defaults_.light_terms = setup_.scene.wavelet.light_terms;
 
   auto first = std::make_shared<Prepared>();
   prepared_[Key(defaults_.basis, defaults_.mode)] = first;
@@ -123,7 +127,7 @@ SceneOptions ViewScene::SceneOf(const std::string& basis, const std::string& mod
   SceneOptions s = setup_.scene;
   s.basis = FindBasis(basis);
   s.transport = mode;
-  if (s.basis != setup_.scene.basis && s.basis->lmax >= 0) s.lmax = s.basis->lmax;
+  if (s.basis != setup_.scene.basis && s.basis->Lmax() >= 0) s.lmax = s.basis->Lmax();
   return s;
 }
 
@@ -131,14 +135,14 @@ void ViewScene::Prepare(const std::shared_ptr<Prepared>& slot, const std::string
   const SceneOptions scene = SceneOf(basis, mode);
   const bool first = basis == defaults_.basis && mode == defaults_.mode;
   try {
-    const CachePlan cache = first ? PlanCache(setup_.cache, nullptr, "")
-                                  : CachePlan{"", false};
-    const ShRgb light = ComputeLight(*envs_[0], scene);
-    const std::vector<std::uint8_t> seen;  // every vertex: the camera moves
+    const CachePlan cache = first ? PlanCache(setup_.cache, nullptr, "", Bases()) : CachePlan{"", false, {}};
+    ComputeLight(*envs_[0], scene);  // said on the run summary, as render says it; each frame makes its own
+    const TransportOptions transport = TransportOptionsOf(scene);  // every vertex seen: the camera moves
     const CpcaOptions cpca{};
     const glm::dvec3 axis = defaults_.draw.axis;
-    const BasisInputs inputs{mesh_, scene, axis, cpca, *envs_[0], light, seen, camera_, cache, false};
-    PreparedBasis prepared = scene.basis->prepare(inputs);
+    const BasisInputs inputs{mesh_, transport, scene.samples_from_rule, scene.lmax_why, scene.own(), axis,
+                             cpca,  *envs_[0], &camera_,                 cache,          false};
+    std::unique_ptr<PreparedBasis> prepared = scene.basis->Prepare(inputs);
     std::lock_guard<std::mutex> lock(slot->mutex);
     slot->basis = std::move(prepared);
     slot->scene = scene;
@@ -168,7 +172,7 @@ void ViewScene::Compute(const std::string& basis, const std::string& mode) {
 const ShRgb& ViewScene::Light(int env, int lmax, View view, const SceneOptions& scene) {
   // The window the frames of `view` need, at lmax: as render computes it for --lmax lmax.
   const std::string key =
-      std::string(scene.basis->name) + " " + std::to_string(env) + " " + std::to_string(lmax) + " " + ViewName(view);
+      scene.basis->Name() + " " + std::to_string(env) + " " + std::to_string(lmax) + " " + ViewName(view);
   auto it = lights_.find(key);
   if (it == lights_.end()) {
     SceneOptions s = scene;
@@ -186,14 +190,14 @@ Image8 ViewScene::Frame(const FrameRequest& request, double* draw_ms) {
     if (!slot->done) throw NotReady(Key(request.basis, request.mode) + ": still computing");
     if (!slot->error.empty()) throw Error(slot->error);
   }
-  if (request.draw.view == View::kTransport && !slot->scene.basis->coefficient_view)
+  if (request.draw.view == View::kTransport && !slot->scene.basis->Traits().coefficient_view)
     throw Error("view=transport: the " + request.basis + " basis keeps no SH transfer coefficients (expected basis=" +
-                DefaultBasis()->name + ")");
+                DefaultBasis()->Name() + ")");
   const auto start = std::chrono::steady_clock::now();
   std::lock_guard<std::mutex> lock(draw_mutex_);
-  const bool sh = slot->scene.basis->windowed_light;
+  const bool bands = slot->scene.basis->Traits().light_bands;
   const int computed = slot->scene.lmax;
-  const int lmax = sh ? std::min(request.lmax, computed) : computed;
+  const int lmax = bands ? std::min(request.lmax, computed) : computed;
   const std::string key = Key(request.basis, request.mode) + " " + std::to_string(request.env) + " " +
                           std::to_string(lmax) + " " + ViewName(request.draw.view) + " " + Vec(request.draw.axis) +
                           " " + std::to_string(request.light_terms);
@@ -201,7 +205,7 @@ Image8 ViewScene::Frame(const FrameRequest& request, double* draw_ms) {
     // Bands above lmax zeroed: the frame of a transport computed at lmax.
     ShRgb light = Light(request.env, lmax, request.draw.view, slot->scene);
     light.resize(CoeffCount(computed), glm::dvec3(0.0));
-    light_ = slot->basis.relight(*envs_[request.env], light, request.draw.axis, request.light_terms);
+    light_ = slot->basis->Light(*envs_[request.env], light, request.draw.axis, request.light_terms);
     light_key_ = key;
   }
   const Camera camera = ChooseCamera(mesh_, request.draw);
@@ -262,16 +266,16 @@ std::string ViewScene::ErrorJson(const FrameRequest& r) {
     if (!slot->error.empty()) throw Error(slot->error);
   }
   std::lock_guard<std::mutex> lock(draw_mutex_);
-  const bool sh = slot->scene.basis->windowed_light;
+  const bool bands = slot->scene.basis->Traits().light_bands;
   const int computed = slot->scene.lmax;
-  const int lmax = sh ? std::min(r.lmax, computed) : computed;
+  const int lmax = bands ? std::min(r.lmax, computed) : computed;
   const std::string key =
       Key(r.basis, r.mode) + " " + std::to_string(r.env) + " " + std::to_string(lmax) + " " + std::to_string(r.light_terms);
   if (const auto it = errors_.find(key); it != errors_.end()) return it->second;
   // This setting's radiance per vertex, the light unturned, against the reference's.
   ShRgb light = Light(r.env, lmax, View::kRadiance, slot->scene);
   light.resize(CoeffCount(computed), glm::dvec3(0.0));
-  const std::unique_ptr<FrameLight> frame_light = slot->basis.relight(*envs_[r.env], light, defaults_.draw.axis, r.light_terms);
+  const std::unique_ptr<FrameLight> frame_light = slot->basis->Light(*envs_[r.env], light, defaults_.draw.axis, r.light_terms);
   frame_light->Turn(0.0);
   const glm::dvec3 eye(camera_.eye);
   const std::vector<glm::vec3> shaded = frame_light->Shade(mesh_, true, &eye);
@@ -294,15 +298,14 @@ std::string ViewScene::Command(const FrameRequest& r) const {
   std::string line = "prt render";
   for (const std::string& t : setup_.kept_tokens) line += " " + ShellWord(t);
   const SceneOptions scene = SceneOf(r.basis, r.mode);
-  const bool sh = scene.basis->windowed_light;
   const RenderOptions& d = r.draw;
   // The transport view shows coefficient K whatever the light's lmax: render computes its band.
-  int lmax = sh ? r.lmax : scene.lmax;
+  int lmax = scene.basis->Traits().light_bands ? r.lmax : scene.lmax;
   if (d.view == View::kTransport) lmax = std::max(lmax, static_cast<int>(std::sqrt(double(d.transport_index))));
   line += " --basis " + r.basis + " --transport " + r.mode + " --lmax " + std::to_string(lmax) +
           " --env " + ShellWord(setup_.envs[r.env]);
-  if (!sh) line += " --light-terms " + std::to_string(r.light_terms);
-  if (sh && r.mode != "unshadowed")
+  line += scene.basis->CommandLine(scene.own(), r.light_terms);
+  if (scene.basis->Traits().takes_samples && r.mode != "unshadowed")
     line += " --samples " + std::to_string(scene.samples) + " --hidden-samples " + std::to_string(scene.samples);
   line += " --axis " + Vec(d.axis) + Formatted(" --start-angle %.9g", d.start_degrees) + " --view " +
           (d.view == View::kTransport ? "transport:" + std::to_string(d.transport_index) : std::string(ViewName(d.view)));

@@ -1,23 +1,27 @@
 #include "precompute/samplers.h"
-#include "core/constants.h"
 
 #include <cmath>
 
+#include "core/constants.h"
+#include "core/name_table.h"
+
 namespace prt {
+namespace {
 
-Sampler SamplerFromName(const std::string& name) {
-  if (name == "stratified") return Sampler::kStratified;
-  if (name == "uniform") return Sampler::kUniform;
-  return Sampler::kFibonacci;
-}
+constexpr auto kSamplers = MakeNameTable<Sampler>({
+    {Sampler::kFibonacci, "fibonacci"},
+    {Sampler::kStratified, "stratified"},
+    {Sampler::kUniform, "uniform"},
+});
+static_assert(kSamplers.Distinct());
 
-const char* SamplerName(Sampler s) {
-  switch (s) {
-    case Sampler::kStratified: return "stratified";
-    case Sampler::kUniform: return "uniform";
-    default: return "fibonacci";
-  }
-}
+}  // namespace
+
+Sampler SamplerFromName(const std::string& name) { return kSamplers.Parse(name, "sampler"); }
+
+const char* SamplerName(Sampler s) { return kSamplers.Name(s); }
+
+std::vector<std::string> SamplerNames() { return kSamplers.Names(); }
 
 glm::dmat3 RandomRotation(Pcg32& rng) {
   // A uniform unit quaternion from three uniforms (Shoemake, Graphics Gems III).

@@ -28,9 +28,12 @@ namespace prt {
 
 enum class Sampler { kFibonacci, kStratified, kUniform };
 
-/// "fibonacci" -> kFibonacci, ...; the caller has validated the name.
+/// "fibonacci" -> kFibonacci, ... (the `--sampler` words); throws Error for any other name.
 Sampler SamplerFromName(const std::string& name);
+/// The `--sampler` word of `s`.
 const char* SamplerName(Sampler s);
+/// Every sampler's word, in the enum's order.
+std::vector<std::string> SamplerNames();
 
 /// A direction set of `n` unit vectors (stratified: floor(sqrt(n))^2 of them) drawn with `rng`.
 std::vector<glm::dvec3> SampleSphere(Sampler sampler, int n, Pcg32& rng);

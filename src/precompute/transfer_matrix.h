@@ -38,7 +38,7 @@
 #include "geometry/bvh.h"
 #include "geometry/mesh.h"
 #include "precompute/direction_pool.h"
-#include "precompute/transport.h"
+#include "precompute/transport_types.h"
 #include "sh/coeffs.h"
 
 namespace prt {

@@ -128,20 +128,6 @@ Transport ComputeInterreflection(const Mesh& mesh, const TransportOptions& optio
 
 }  // namespace
 
-TransportMode TransportModeFromName(const std::string& name) {
-  if (name == "unshadowed") return TransportMode::kUnshadowed;
-  if (name == "interreflection") return TransportMode::kInterreflection;
-  return TransportMode::kShadowed;
-}
-
-const char* TransportModeName(TransportMode mode) {
-  switch (mode) {
-    case TransportMode::kUnshadowed: return "unshadowed";
-    case TransportMode::kInterreflection: return "interreflection";
-    default: return "shadowed";
-  }
-}
-
 std::vector<double> EstimateUnshadowed(const std::vector<glm::dvec3>& dirs, const glm::dvec3& normal, int lmax) {
   std::vector<double> t(CoeffCount(lmax), 0.0), y(CoeffCount(lmax));
   const double weight = 4.0 * kPi / double(dirs.size()) / kPi;

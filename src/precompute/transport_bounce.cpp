@@ -11,18 +11,9 @@
 #include "geometry/mesh_texture.h"
 #include "precompute/hit_light.h"
 #include "precompute/transport_bounce.h"
-#include "texture/texture.h"
 
 namespace prt {
 namespace {
-
-bool GreyAlbedo(const Mesh& mesh) {
-  for (const auto& texture : mesh.textures)
-    if (!texture->grey()) return false;
-  for (const auto& a : mesh.albedo)
-    if (a.x != a.y || a.y != a.z) return false;
-  return true;
-}
 
 /// Sum of the band-0 coefficient over vertices and channels: the bounce's energy.
 double Energy(const std::vector<double>& t, int count) {
@@ -56,10 +47,6 @@ void AddHitLight(const Mesh& mesh, std::uint32_t triangle, float u, float v, con
   const double* t2 = transfer.data() + tri[2] * stride + c * count;
   const double f = scale * rho;
   for (int k = 0; k < count; ++k) out[k] += f * (b[0] * t0[k] + b[1] * t1[k] + b[2] * t2[k]);
-}
-
-int TransportChannels(const Mesh& mesh, TransportMode mode) {
-  return mode == TransportMode::kInterreflection && !GreyAlbedo(mesh) ? 3 : 1;
 }
 
 BounceResult AddBounces(const Mesh& mesh, const DirectionPlan& plan, const DirectResult& direct,

@@ -9,8 +9,8 @@
 
 #include "geometry/mesh.h"
 #include "precompute/direction_pool.h"
-#include "precompute/transport.h"
 #include "precompute/transport_direct.h"
+#include "precompute/transport_types.h"
 
 namespace prt {
 

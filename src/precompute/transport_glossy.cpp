@@ -17,7 +17,6 @@
 #include "sh/basis.h"
 
 namespace prt {
-int LobeSamplesOf(int samples) { return std::max(64, samples / 4); }
 
 std::vector<double> ComputeGlossy(const Mesh& mesh, const Bvh* bvh, const TransportOptions& o,
                                   const std::vector<double>* hit_transfer, int channels, TransportReport& report) {

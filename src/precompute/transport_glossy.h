@@ -8,7 +8,7 @@
 
 #include "geometry/bvh.h"
 #include "geometry/mesh.h"
-#include "precompute/transport.h"
+#include "precompute/transport_types.h"
 
 namespace prt {
 

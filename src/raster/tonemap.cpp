@@ -7,6 +7,7 @@
 #include <cstring>
 #include <vector>
 
+#include "core/name_table.h"
 #include "core/parallel.h"
 #include "core/simd.h"
 
@@ -53,22 +54,20 @@ const SrgbTable& Table() {
 
 constexpr float kLargest = 1e15f;  // keeps the rational curves finite for huge or infinite input
 
+constexpr auto kCurves = MakeNameTable<ToneCurve>({
+    {ToneCurve::kSrgb, "srgb"},
+    {ToneCurve::kReinhard, "reinhard"},
+    {ToneCurve::kAces, "aces"},
+});
+static_assert(kCurves.Distinct());
+
 }  // namespace
 
-std::optional<ToneCurve> ParseToneCurve(const std::string& name) {
-  if (name == "srgb") return ToneCurve::kSrgb;
-  if (name == "reinhard") return ToneCurve::kReinhard;
-  if (name == "aces") return ToneCurve::kAces;
-  return std::nullopt;
-}
+std::optional<ToneCurve> ParseToneCurve(const std::string& name) { return kCurves.Find(name); }
 
-const char* ToneCurveName(ToneCurve curve) {
-  switch (curve) {
-    case ToneCurve::kReinhard: return "reinhard";
-    case ToneCurve::kAces: return "aces";
-    default: return "srgb";
-  }
-}
+const char* ToneCurveName(ToneCurve curve) { return kCurves.Name(curve); }
+
+std::vector<std::string> ToneCurveNames() { return kCurves.Names(); }
 
 float ApplyToneCurve(ToneCurve curve, float x) {
   x = std::min(x, kLargest);

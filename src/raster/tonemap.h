@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/image.h"
 
@@ -35,6 +36,8 @@ enum class ToneCurve {
 std::optional<ToneCurve> ParseToneCurve(const std::string& name);
 /// The `--tonemap` name of a curve.
 const char* ToneCurveName(ToneCurve curve);
+/// Every curve's `--tonemap` name, in the enum's order.
+std::vector<std::string> ToneCurveNames();
 
 /// How to map radiance to display values.
 struct ToneMapOptions {

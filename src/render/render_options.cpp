@@ -1,34 +1,23 @@
 #include "render/render_options.h"
 
-#include <utility>
+#include "core/name_table.h"
 
 namespace prt {
 namespace {
 
-constexpr std::pair<View, const char*> kViews[] = {
+constexpr auto kViews = MakeNameTable<View>({
     {View::kRadiance, "radiance"}, {View::kIrradiance, "irradiance"}, {View::kAlbedo, "albedo"},
     {View::kTransport, "transport"}, {View::kLight, "light"}, {View::kGlossy, "glossy"},
-};
+});
+static_assert(kViews.Distinct());
 
 }  // namespace
 
-const char* ViewName(View view) {
-  for (const auto& [v, name] : kViews)
-    if (v == view) return name;
-  return "radiance";
-}
+const char* ViewName(View view) { return kViews.Name(view); }
 
-std::optional<View> ViewFromName(const std::string& name) {
-  for (const auto& [v, word] : kViews)
-    if (name == word) return v;
-  return std::nullopt;
-}
+std::optional<View> ViewFromName(const std::string& name) { return kViews.Find(name); }
 
-std::vector<std::string> ViewNames() {
-  std::vector<std::string> names;
-  for (const auto& view : kViews) names.emplace_back(view.second);
-  return names;
-}
+std::vector<std::string> ViewNames() { return kViews.Names(); }
 
 RenderOptions WithDemoCamera(RenderOptions o) {
   o.eye = glm::dvec3(6.0, 3.2, 9.0);

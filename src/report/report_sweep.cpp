@@ -67,32 +67,6 @@ int LightSupersample(int size) { return std::max(2, (kFineFaceSize + size - 1) /
 
 }  // namespace
 
-Mesh MakeReportScene() {
-  KnotOverGround s;  // the demo's scene, coarser
-  s.segments = 128, s.sides = 16, s.ground_quads = 24;
-  return MakeKnotOverGround(s);
-}
-
-Transport TimedTransport(const Mesh& mesh, const TransportOptions& o, double& seconds, int& directions,
-                         double* bvh_seconds) {
-  Transport t;
-  double total = 0.0;
-  seconds = std::numeric_limits<double>::infinity();
-  for (int repeat = 0; repeat < kMaxTimedRepeats && total < kMinTimedSeconds; ++repeat) {
-    TransportReport r;
-    const auto t0 = Clock::now();
-    t = ComputeTransport(mesh, o, &r);
-    const double run = SecondsSince(t0);
-    total += run;
-    if (run < seconds) {
-      seconds = run;
-      if (bvh_seconds) *bvh_seconds = r.bvh_seconds;
-    }
-    directions = r.directions_per_vertex;
-  }
-  return t;
-}
-
 bool TimesTrusted(const ReportData& d) {
   return d.order_violations.empty() && LargestSpread(d).first <= kTrustedSpread;
 }

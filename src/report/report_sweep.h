@@ -34,6 +34,8 @@
 #include "precompute/transport.h"
 #include "render/render_options.h"
 #include "report/report_glossy.h"
+#include "report/report_scene.h"
+#include "report/timed_transport.h"
 #include "report/report_noise.h"
 #include "report/round_robin_timing.h"
 #include "report/report_wavelet.h"
@@ -51,10 +53,6 @@ struct ReportConfig {
   std::vector<int> face_sizes = {8, 16, 32, 64, 128, 256, 512};
   int image_width = 320, image_height = 240;
 };
-
-/// The small default scene of the report: a (2, 3) torus knot of 128 x 16 segments standing on
-/// a 24 x 24 ground plane (about 2,700 vertices): the demo scene's shapes, fast enough to sweep.
-Mesh MakeReportScene();
 
 struct SweepRow {
   std::string mode, sampler;  ///< sampler "closed-form" for unshadowed
@@ -125,20 +123,6 @@ inline constexpr double kTrustedSpread = 0.4;
 bool TimesTrusted(const ReportData& data);
 /// The largest spread among the sampled rows and light rows, and whose it is.
 std::pair<double, std::string> LargestSpread(const ReportData& data);
-
-/// The glossy and wavelet studies' times (not the sweep's): a run shorter than this is repeated
-/// until the repeats together last this long, and its time is the fastest repeat, so the
-/// timer's resolution plays no part.
-inline constexpr double kMinTimedSeconds = 0.05;
-/// At most this many repeats, so a trivially fast run (unshadowed) cannot loop for long.
-inline constexpr int kMaxTimedRepeats = 50;
-
-/// The transport of `options`, timed: a run shorter than 0.05 s is repeated until the repeats
-/// together last that long, and `seconds` is the fastest repeat (the clock's resolution and
-/// scheduling noise then stay far below the times reported). `directions` gets the directions
-/// per vertex used, `bvh_seconds` (if given) the BVH build of the fastest run.
-Transport TimedTransport(const Mesh& mesh, const TransportOptions& options, double& seconds, int& directions,
-                         double* bvh_seconds = nullptr);
 
 /// Runs the whole sweep (minutes for the defaults; progress on the run summary).
 ReportData RunReportSweep(const Mesh& mesh, const Environment& env, const std::string& env_spec,

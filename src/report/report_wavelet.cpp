@@ -15,7 +15,7 @@
 #include "precompute/shade.h"
 #include "wavelet/shade.h"
 #include "wavelet/transport.h"
-#include "report/report_sweep.h"
+#include "report/timed_transport.h"
 #include "wavelet/light_cube.h"
 #include "wavelet/texel_sh.h"
 

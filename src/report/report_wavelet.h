@@ -36,7 +36,7 @@
 #include "precompute/error_metrics.h"
 #include "precompute/transport.h"
 #include "wavelet/transport.h"
-#include "report/stability.h"
+#include "report/stability_case.h"
 #include "wavelet/selection.h"
 
 namespace prt {

@@ -28,17 +28,9 @@
 #include <string>
 #include <vector>
 
-namespace prt {
+#include "report/stability_case.h"
 
-struct StabilityCase {
-  std::string name;     ///< short identifier
-  std::string checks;   ///< what is checked, one sentence
-  double figure = 0;    ///< the measured number
-  double limit = 0;     ///< pass if figure <= limit (or >= for `at_least`)
-  bool at_least = false;
-  bool pass = false;
-  std::string note;     ///< extra measured context
-};
+namespace prt {
 
 /// What the wavelet cases run on: MakeSunScene's knot (segments x sides) and ground (quads a
 /// side). The defaults are the measured scene, the one `prt report --stability` runs and whose

@@ -18,7 +18,7 @@
 #include "precompute/light.h"
 #include "precompute/shade.h"
 #include "precompute/transport.h"
-#include "report/report_sweep.h"
+#include "report/report_scene.h"
 #include "sh/dering.h"
 #include "sh/window.h"
 

@@ -18,7 +18,7 @@
 
 #include <vector>
 
-#include "report/stability.h"
+#include "report/stability_case.h"
 
 namespace prt {
 

@@ -1,19 +1,27 @@
 #include "sh/window.h"
 
 #include <cmath>
+#include <optional>
 
 #include "core/constants.h"
 #include "core/error.h"
+#include "core/name_table.h"
 
 namespace prt {
+namespace {
 
-const char* WindowName(Window w) {
-  switch (w) {
-    case Window::kHann: return "hann";
-    case Window::kLanczos: return "lanczos";
-    default: return "none";
-  }
-}
+constexpr auto kWindows = MakeNameTable<Window>({
+    {Window::kNone, "none"},
+    {Window::kHann, "hann"},
+    {Window::kLanczos, "lanczos"},
+});
+static_assert(kWindows.Distinct());
+
+}  // namespace
+
+const char* WindowName(Window w) { return kWindows.Name(w); }
+
+std::vector<std::string> WindowNames() { return kWindows.Names(); }
 
 double WindowWeight(Window w, int l, int lmax) {
   const double x = kPi * l / (lmax + 1.0);
@@ -25,9 +33,8 @@ double WindowWeight(Window w, int l, int lmax) {
 }
 
 Window WindowFromName(const std::string& name) {
-  for (Window w : {Window::kNone, Window::kHann, Window::kLanczos})
-    if (name == WindowName(w)) return w;
-  throw Error("window '" + name + "' is not one of none, hann, lanczos");
+  if (const std::optional<Window> w = kWindows.Find(name)) return *w;
+  throw Error("window '" + name + "' is not one of " + kWindows.Joined(", ", ", "));
 }
 
 void ApplyWeights(const std::vector<double>& weights, ShRgb& coeffs) {

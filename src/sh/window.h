@@ -26,6 +26,8 @@ enum class Window { kNone, kHann, kLanczos };
 
 /// "none", "hann" or "lanczos".
 const char* WindowName(Window w);
+/// Every window's name, in the enum's order (`--window` takes these and "auto", sh/dering.h).
+std::vector<std::string> WindowNames();
 
 /// The weight w_l of band l for a truncation at lmax.
 double WindowWeight(Window w, int l, int lmax);

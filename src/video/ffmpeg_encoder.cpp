@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "core/error.h"
+#include "core/name_table.h"
 #include "core/text.h"
 
 namespace prt {
@@ -20,9 +21,15 @@ std::string LogPath() {
   return std::string(tmp && *tmp ? tmp : "/tmp") + "/prt-ffmpeg.log";
 }
 
+constexpr auto kEncoders = MakeNameTable<FfmpegCodec>({
+    {FfmpegCodec::kH264Mp4, "libx264"},
+    {FfmpegCodec::kVp9Webm, "libvpx-vp9"},
+});
+static_assert(kEncoders.Distinct());
+
 }  // namespace
 
-const char* FfmpegEncoderName(FfmpegCodec codec) { return codec == FfmpegCodec::kH264Mp4 ? "libx264" : "libvpx-vp9"; }
+const char* FfmpegEncoderName(FfmpegCodec codec) { return kEncoders.Name(codec); }
 
 std::string FindFfmpeg(FfmpegCodec codec, const std::string& what) {
   const auto program = FindProgram("ffmpeg");
@@ -48,12 +55,11 @@ std::vector<std::string> FfmpegArguments(const std::string& program, FfmpegCodec
                                 "-vf", "scale=out_color_matrix=bt709:out_range=tv,format=yuv420p",
                                 "-colorspace", "bt709", "-color_primaries", "bt709", "-color_trc", "bt709",
                                 "-color_range", "tv", "-threads", kEncoderThreads};
+  a.insert(a.end(), {"-c:v", FfmpegEncoderName(codec)});
   if (codec == FfmpegCodec::kH264Mp4) {
-    for (const char* s : {"-c:v", "libx264", "-preset", "medium", "-crf", "18", "-movflags", "+faststart", "-f", "mp4"})
-      a.emplace_back(s);
+    for (const char* s : {"-preset", "medium", "-crf", "18", "-movflags", "+faststart", "-f", "mp4"}) a.emplace_back(s);
   } else {
-    for (const char* s : {"-c:v", "libvpx-vp9", "-crf", "30", "-b:v", "0", "-deadline", "good", "-cpu-used", "2",
-                          "-row-mt", "1", "-f", "webm"})
+    for (const char* s : {"-crf", "30", "-b:v", "0", "-deadline", "good", "-cpu-used", "2", "-row-mt", "1", "-f", "webm"})
       a.emplace_back(s);
   }
   // The same bytes from the same frames: no encoder version string, no random container IDs

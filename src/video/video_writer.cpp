@@ -4,10 +4,31 @@
 #include <cctype>
 
 #include "core/error.h"
+#include "core/name_table.h"
 #include "video/apng_writer.h"
 #include "video/ffmpeg_encoder.h"
 
 namespace prt {
+namespace {
+
+/// The extensions of each format, in any case (VideoFormatOf lowers them first).
+constexpr auto kExtensions = MakeNameTable<VideoFormat>({
+    {VideoFormat::kApng, "png"},
+    {VideoFormat::kApng, "apng"},
+    {VideoFormat::kMp4, "mp4"},
+    {VideoFormat::kWebm, "webm"},
+});
+static_assert(kExtensions.Distinct());
+
+/// How the run summary names each format.
+constexpr auto kFormatNames = MakeNameTable<VideoFormat>({
+    {VideoFormat::kApng, "animated PNG"},
+    {VideoFormat::kMp4, "H.264 MP4 (ffmpeg)"},
+    {VideoFormat::kWebm, "VP9 WebM (ffmpeg)"},
+});
+static_assert(kFormatNames.Distinct());
+
+}  // namespace
 
 std::optional<VideoFormat> VideoFormatOf(const std::string& path) {
   const auto dot = path.rfind('.');
@@ -15,20 +36,10 @@ std::optional<VideoFormat> VideoFormatOf(const std::string& path) {
   if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return std::nullopt;
   std::string ext = path.substr(dot + 1);
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (ext == "png" || ext == "apng") return VideoFormat::kApng;
-  if (ext == "mp4") return VideoFormat::kMp4;
-  if (ext == "webm") return VideoFormat::kWebm;
-  return std::nullopt;
+  return kExtensions.Find(ext);
 }
 
-const char* VideoFormatName(VideoFormat format) {
-  switch (format) {
-    case VideoFormat::kApng: return "animated PNG";
-    case VideoFormat::kMp4: return "H.264 MP4 (ffmpeg)";
-    case VideoFormat::kWebm: return "VP9 WebM (ffmpeg)";
-  }
-  return "";
-}
+const char* VideoFormatName(VideoFormat format) { return kFormatNames.Name(format); }
 
 VideoWriter::VideoWriter(const VideoSpec& spec, const std::string& path, std::string name)
     : spec_(spec), name_(std::move(name)) {

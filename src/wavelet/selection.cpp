@@ -3,19 +3,31 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "core/error.h"
+#include "core/name_table.h"
 #include "wavelet/haar.h"
 
 namespace prt {
+namespace {
+
+constexpr auto kSelections = MakeNameTable<Selection>({
+    {Selection::kMagnitude, "magnitude"},
+    {Selection::kArea, "area"},
+});
+static_assert(kSelections.Distinct());
+
+}  // namespace
 
 Selection SelectionFromName(const std::string& name) {
-  if (name == "magnitude") return Selection::kMagnitude;
-  if (name == "area") return Selection::kArea;
-  throw Error("wavelet selection '" + name + "': expected magnitude or area");
+  if (const std::optional<Selection> s = kSelections.Find(name)) return *s;
+  throw Error("wavelet selection '" + name + "': expected " + kSelections.Joined(", ", " or "));
 }
 
-const char* SelectionName(Selection selection) { return selection == Selection::kArea ? "area" : "magnitude"; }
+const char* SelectionName(Selection selection) { return kSelections.Name(selection); }
+
+std::vector<std::string> SelectionNames() { return kSelections.Names(); }
 
 std::vector<double> SelectionWeights(int face_size, Selection selection) {
   const std::size_t per_face = static_cast<std::size_t>(face_size) * face_size;

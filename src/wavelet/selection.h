@@ -27,8 +27,12 @@ namespace prt {
 
 enum class Selection { kMagnitude, kArea };
 
+/// "magnitude" or "area" as a Selection; throws Error for any other name.
 Selection SelectionFromName(const std::string& name);
+/// The name of `selection`.
 const char* SelectionName(Selection selection);
+/// Every selection's name, in the enum's order.
+std::vector<std::string> SelectionNames();
 
 /// The weight of each coefficient of a cube of faces `face_size` x `face_size` (6 face_size^2,
 /// in the texel order of wavelet/cube_grid.h) under `selection`: 1, or its support's area;

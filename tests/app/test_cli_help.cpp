@@ -8,8 +8,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "app/args.h"
+#include "options/args.h"
 #include "app/commands.h"
+#include "cli/command_table.h"
 #include "core/error.h"
 #include "core/atomic_file.h"
 #include "tests/test_process.h"

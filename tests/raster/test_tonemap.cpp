@@ -1,10 +1,13 @@
 #include <doctest/doctest.h>
 
 #include <cmath>
-#include <vector>
 #include <limits>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "raster/tonemap.h"
+#include "tests/name_checks.h"
 
 namespace {
 
@@ -142,5 +145,12 @@ TEST_SUITE("raster") {
     CHECK(prt::ParseToneCurve("aces") == prt::ToneCurve::kAces);
     CHECK_FALSE(prt::ParseToneCurve("filmic").has_value());
     CHECK(std::string(prt::ToneCurveName(prt::ToneCurve::kReinhard)) == "reinhard");
+  }
+
+  TEST_CASE("--tonemap: each name names its own curve, and no other name is one") {
+    const std::vector<std::pair<prt::ToneCurve, std::string>> words = {
+        {prt::ToneCurve::kSrgb, "srgb"}, {prt::ToneCurve::kReinhard, "reinhard"}, {prt::ToneCurve::kAces, "aces"}};
+    CHECK(prt::test::NameProblems<prt::ToneCurve>(words, prt::ToneCurveName, prt::ParseToneCurve,
+                                                  prt::ToneCurveNames()) == "");
   }
 }

@@ -9,10 +9,12 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/atomic_file.h"
 #include "render/render_options.h"
+#include "tests/name_checks.h"
 #include "tests/test_support.h"
 
 namespace prt {
@@ -110,6 +112,13 @@ TEST_SUITE("render") {
     CHECK_FALSE(ViewFromName("Radiance").has_value());
     CHECK_FALSE(ViewFromName("transport:3").has_value());  // the index is the command line's to split
     CHECK_FALSE(ViewFromName("").has_value());
+  }
+
+  TEST_CASE("render options: ViewNames lists every --view word in the table's order, and no other word is a view") {
+    const std::vector<std::pair<View, std::string>> words = {
+        {View::kRadiance, "radiance"},   {View::kIrradiance, "irradiance"}, {View::kAlbedo, "albedo"},
+        {View::kTransport, "transport"}, {View::kLight, "light"},           {View::kGlossy, "glossy"}};
+    CHECK(test::NameProblems<View>(words, ViewName, ViewFromName, ViewNames()) == "");
   }
 }
 

@@ -7,10 +7,14 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/constants.h"
+#include "core/error.h"
 #include "sh/coeffs.h"
 #include "sh/window.h"
+#include "tests/name_checks.h"
 
 using namespace prt;
 
@@ -82,5 +86,13 @@ TEST_SUITE("sh") {
           for (int ch = 0; ch < 3; ++ch) CHECK(std::abs(c[k][ch] - w * in[k][ch]) < kRounding * std::abs(in[k][ch]) + kRounding);
         }
     }
+  }
+
+  TEST_CASE("--window: each name names its own window, and no other name is one") {
+    const std::vector<std::pair<Window, std::string>> words = {
+        {Window::kNone, "none"}, {Window::kHann, "hann"}, {Window::kLanczos, "lanczos"}};
+    CHECK(test::NameProblems<Window>(words, WindowName, test::Refusing<Window>(WindowFromName), WindowNames()) == "");
+    // "auto" is the command line's (sh/dering.h), chosen before a Window is asked for.
+    CHECK_THROWS_WITH_AS(WindowFromName("auto"), "window 'auto' is not one of none, hann, lanczos", Error);
   }
 }

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "app/commands.h"
+#include "cli/command_table.h"
 #include "core/error.h"
 #include "core/output_folder.h"  // FolderBusy
 #include "core/signal_cleanup.h"

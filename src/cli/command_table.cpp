@@ -1,4 +1,7 @@
+#include "cli/command_table.h"
+
 #include "app/commands.h"
+#include "bench/cmd_bench.h"
 
 namespace prt {
 

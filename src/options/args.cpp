@@ -1,4 +1,4 @@
-#include "app/args.h"
+#include "options/args.h"
 
 #include <cmath>
 #include <cstdio>

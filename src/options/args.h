@@ -16,7 +16,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "app/option_table.h"
+#include "options/option_table.h"
 #include "core/text.h"  // ParseNumber
 
 namespace prt {

@@ -1,4 +1,4 @@
-// CompressSceneMatrices (pipeline.h): a glossy --orbit's transfer matrices compressed by
+// CompressSceneMatrices (scene_transport.h): a glossy --orbit's transfer matrices compressed by
 // clustered PCA (cpca/cpca_transfer.h), said on the run summary with the memory and the error.
 //
 // The defaults of --cpca (render/render_options.h: 256 clusters, 4 terms), measured on the demo
@@ -11,7 +11,7 @@
 #include <algorithm>
 #include <chrono>
 
-#include "app/pipeline.h"
+#include "sh_basis/scene_transport.h"
 #include "core/log.h"
 #include "core/memory.h"
 #include "core/text.h"

@@ -1,6 +1,7 @@
 #include <cstdio>
 
-#include "app/commands.h"
+#include "cli/command_table.h"
+#include "options/args.h"
 
 namespace prt {
 
