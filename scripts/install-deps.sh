@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(g++ cmake make ninja-build pkg-config
           zlib1g-dev libglm-dev libstb-dev libtinyobjloader-dev libnanoflann-dev doctest-dev libopenexr-dev
-          libcpp-httplib-dev)
+          libcpp-httplib-dev nlohmann-json3-dev)
 # `bash scripts/install-deps.sh test`: also what the tests run besides prt. The --video tests
 # encode .mp4 and .webm and decode every video with Debian's ffmpeg (prt itself needs it only for
 # those two formats, and says so when it is missing). The report tests render the Markdown tables

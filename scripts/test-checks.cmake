@@ -117,6 +117,10 @@ function(objects name)  # compiles WORK/NAME's sources into WORK/NAME/build, lis
     else()  # a target of the top folder, as Ninja writes it
       set(object "${root}/build/CMakeFiles/prtcore.dir/./${source}.o")
     endif()
+    string(APPEND listed "${object}\n")
+    if(EXISTS "${object}")  # copied with the tree it was made from
+      continue()
+    endif()
     get_filename_component(folder "${object}" DIRECTORY)
     file(MAKE_DIRECTORY "${folder}")
     execute_process(COMMAND "${CXX}" -std=c++17 -O1 -I "${root}/src" -c "${root}/${source}" -o "${object}"
@@ -124,25 +128,27 @@ function(objects name)  # compiles WORK/NAME's sources into WORK/NAME/build, lis
     if(NOT status EQUAL 0)
       message(FATAL_ERROR "test-checks: ${CXX} could not compile ${source}: ${err}")
     endif()
-    string(APPEND listed "${object}\n")
   endforeach()
   file(WRITE "${root}/objects.txt" "${listed}")
 endfunction()
 function(links name)
   # low's function and top's use of it, declared by hand (allowed); a template with a weak copy
-  # in the objects of both folders; what the standard library defines (not ours to judge)
+  # in the objects of both folders; what the standard library defines (not ours to judge); a use
+  # inside one folder (top's own function in another file of top)
   tree(${name} "${table}")
   put(${name} src/low/low.h "#pragma once\n#include <string>\ntemplate <typename T> int Size(const T& t) { return static_cast<int>(t.size()); }")
   put(${name} src/low/low.cpp "#include \"low/low.h\"\nnamespace prt { int Low(const std::string& s) { return Size(s); } }")
   put(${name} src/top/top.cpp "#include <string>\n#include \"low/low.h\"\nnamespace prt {\nint Low(const std::string& s);\nint Top() { return Low(\"a\") + Size(std::string(\"b\")); }\n}")
+  put(${name} src/top/more.cpp "namespace prt {\nint Top();\nint More() { return Top(); }\n}")
   put(${name} bench/bench.cpp "namespace prt {\nint Top();\nint Bench() { return Top(); }\n}")
 endfunction()
 links(links-clean)
 objects(links-clean)
 check(links-clean links passes)
 
-# low calls top's function, declared by hand; top calls bench's.
-links(links-up)
+# low calls top's function, declared by hand; top calls bench's (the clean tree and its objects,
+# and three files more).
+file(COPY "${WORK}/links-clean/" DESTINATION "${WORK}/links-up")
 put(links-up src/low/up.cpp "namespace prt {\nint Top();\nint Up() { return Top(); }\n}")
 put(links-up src/top/run.cpp "#include <string>\n#include <vector>\nnamespace prt {\nint RunBench(const std::vector<std::string>& tokens);\nint Run() { return RunBench({}); }\n}")
 put(links-up bench/cmd_bench.cpp "#include <string>\n#include <vector>\nnamespace prt {\nint RunBench(const std::vector<std::string>& tokens) { return static_cast<int>(tokens.size()); }\n}")

@@ -7,6 +7,7 @@ find_package(nanoflann CONFIG REQUIRED)           # libnanoflann-dev
 find_package(doctest CONFIG REQUIRED)             # doctest-dev
 find_package(OpenEXR CONFIG REQUIRED)             # libopenexr-dev
 find_package(ZLIB REQUIRED)                       # zlib1g-dev (PNG deflate)
+find_package(nlohmann_json CONFIG REQUIRED)       # nlohmann-json3-dev (prt view's JSON)
 find_package(PkgConfig REQUIRED)
 pkg_check_modules(PRT_HTTPLIB REQUIRED IMPORTED_TARGET cpp-httplib)  # libcpp-httplib-dev (prt view)
 
@@ -37,6 +38,10 @@ target_link_libraries(prt::doctest INTERFACE doctest::doctest)
 
 prt_system_target(prt::openexr)
 target_link_libraries(prt::openexr INTERFACE OpenEXR::OpenEXR)
+
+# Header only: the JSON that prt view's scene answers the page with (src/app/view_scene.cpp).
+prt_system_target(prt::json)
+target_link_libraries(prt::json INTERFACE nlohmann_json::nlohmann_json)
 
 # Debian builds cpp-httplib as a library (with TLS, zlib and brotli, which prt does not use):
 # its pkg-config flags make the header declare the classes as the library was built.

@@ -1,12 +1,14 @@
-// prt report: error against run time (report_sweep.h, report_write.h), with --basis wavelet SH
-// against Haar wavelets (report_wavelet.h), or with --stability the stiff and extreme cases
-// (stability.h).
+// prt report: error against run time (report_sweep.h, report_write.h), with --basis NAME the
+// basis's own study where it has one (basis/study.h; the wavelets': SH against Haar wavelets), or
+// with --stability the stiff and extreme cases (stability.h).
 #include <algorithm>
 #include <cstdio>
 #include <set>
 
 #include "app/commands.h"
 #include "app/pipeline.h"
+#include "bases/list.h"
+#include "basis/study.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -15,7 +17,6 @@
 #include "report/report_glossy.h"
 #include "report/report_image.h"
 #include "report/report_sweep.h"
-#include "report/report_wavelet.h"
 #include "report/report_write.h"
 #include "report/stability.h"
 #include "texture/albedo_limit.h"
@@ -70,12 +71,16 @@ CommandSpec ReportSpec() {
                                                          "--seed", "--threads", "--games202-faces", "--max-edge",
                                                          "--basis"});
   scene.options[0].default_text = "a small torus knot on a 12 x 12 plane, about 2,700 vertices";
+  // --basis: the list's names, then what each basis's own study adds (basis/study.h).
+  std::string names, studies, described;
+  for (const std::string& name : BasisNames()) names += (names.empty() ? "" : " | ") + name;
+  for (const Basis* basis : Bases())
+    if (const BasisStudy* study = basis->Study()) {
+      studies += (studies.empty() ? "" : "; ") + study->ReportOptionHelp();
+      described += " " + study->ReportHelp();
+    }
   for (OptionSpec& o : scene.options)
-    if (o.name == "--basis")
-      o.help = "sh | wavelet: wavelet adds a section comparing SH at lmax 2, 4, 8, 16 with Haar wavelets at 64 .. "
-               "2048 terms (--quick: lmax 2, 4, 8 and 64, 256, 512, 1024 terms), each one's error against prt reference "
-               "beside its memory and precompute time (DIR/basis_error.png too); not with --stability (its wavelet "
-               "cases run either way)";
+    if (o.name == "--basis") o.help = names + (studies.empty() ? "" : ": " + studies);
   return {"prt report [scene options] --out DIR [--quick] [--stability]",
           "Error against run time: sweeps sampler (uniform, stratified, fibonacci) x directions per vertex (16 .. "
           "16384, doubling) x lmax (1..8, or 1..--max-lmax) x transport mode (unshadowed closed form, shadowed, interreflection), "
@@ -89,11 +94,7 @@ CommandSpec ReportSpec() {
           "is fitted under the coat) a glossy section follows: Phong lobes of N = 10, 100, 1000 and N, with KS, unshadowed and "
           "shadowed: the fixed-camera vector path's error against lmax and its precompute time, the lmax each N "
           "needs beside sqrt(N), and the transfer matrices against the vector path (DIR/glossy_error_vs_lmax.png "
-          "too). With --basis wavelet a basis section follows, on the scene the wavelet basis was measured on (a knot "
-          "on a 40 x 40 ground, 5,521 vertices; on a 20 x 20 one, 1,593, with --quick; --mesh if given): SH at each "
-          "lmax and Haar wavelets at each budget, shadowed and with interreflection (shadowed only with --quick), "
-          "each one's error against prt reference beside its bytes per vertex and its precompute seconds "
-          "(DIR/basis_error.png).",
+          "too)." + described,
           {scene, report}};
 }
 
@@ -115,8 +116,8 @@ int RunReport(const std::vector<std::string>& tokens) {
   if (stability) plan.names.push_back("stability.csv");
   else plan.names.insert(plan.names.end(), {"report.csv", "error_vs_time.png"});
   if (!stability && scene.material.glossy) plan.names.push_back("glossy_error_vs_lmax.png");
-  const bool wavelet = !stability && scene.basis->Traits().report_study;
-  if (wavelet) plan.names.push_back("basis_error.png");
+  const BasisStudy* study = stability ? nullptr : scene.basis->Study();
+  if (study) plan.names.push_back("basis_error.png");
   OutputFolder folder(*out, plan);
 
   if (stability) {
@@ -175,19 +176,16 @@ int RunReport(const std::vector<std::string>& tokens) {
     data.glossy = RunGlossyStudy(mesh, *env, eye,
                                  MakeGlossyConfig(quick, scene.material.lobe.exponent, scene.material.ks, scene.seed));
   }
-  if (wavelet) {
-    // The wavelet basis's own scene, fine enough for a small sun's shadow (report_wavelet.h).
-    Mesh sun_scene;
+  if (study) {
+    // The basis's own study, on its own scene unless --mesh is given (basis/study.h).
+    Mesh own_scene;
     if (scene.mesh.empty()) {
-      sun_scene = quick ? MakeSunScene(96, 12, 20) : MakeSunScene();
-      ApplySceneEdits(sun_scene, scene);
+      own_scene = study->OwnScene(quick);
+      ApplySceneEdits(own_scene, scene);
     }
-    WaveletStudyConfig wc = MakeWaveletStudyConfig(quick, scene.bounces, scene.seed);
-    data.wavelet = RunWaveletStudy(scene.mesh.empty() ? sun_scene : mesh, *env, wc);
-    data.wavelet->environment = scene.env;
-    data.wavelet->scene = !scene.mesh.empty() ? scene.mesh
-                          : quick ? "torus knot 96x12 on a 20x20 ground (--quick's smaller basis scene)"
-                                  : "torus knot 192x20 on a 40x40 ground";
+    data.basis_study = study->Run({scene.mesh.empty() ? own_scene : mesh,
+                                   scene.mesh.empty() ? study->OwnSceneName(quick) : scene.mesh, *env, scene.env,
+                                   quick, scene.bounces, scene.seed});
   }
   // Visible noise: frame 0 as `render` draws it, per way of spending directions (report_noise.h).
   NoiseConfig noise;

@@ -44,9 +44,11 @@ std::string DefaultWindow(ShRgb& light, const SceneOptions& options, View view) 
 
 }  // namespace
 
-std::unique_ptr<Environment> LoadSceneEnvironment(const SceneOptions& options, OutputFolder* folder) {
+std::shared_ptr<const Environment> LoadSceneEnvironment(const SceneOptions& options, OutputFolder* folder) {
   const auto t0 = std::chrono::steady_clock::now();
-  auto env = LoadEnvironment(options.env, options.layout);
+  // --lmax auto loaded it already (ReadSceneOptions), unless the options now name another.
+  const bool loaded = options.loaded_env && options.loaded_env_spec == options.env && options.loaded_env_layout == options.layout;
+  const std::shared_ptr<const Environment> env = loaded ? options.loaded_env : LoadEnvironment(options.env, options.layout);
   std::error_code ec;
   if (folder && std::filesystem::exists(options.env, ec)) folder->KeepInput(options.env);  // not a built-in
   Summary("environment: " + env->Describe() + Formatted(" [%.3f s]", SecondsSince(t0)));

@@ -29,9 +29,10 @@
 
 namespace prt {
 
-/// The environment named by the options, described on the run summary. With a `folder`, the
-/// file or cubemap folder read is recorded as an input of its run (OutputFolder::KeepInput).
-std::unique_ptr<Environment> LoadSceneEnvironment(const SceneOptions& options, OutputFolder* folder = nullptr);
+/// The environment named by the options (the one --lmax auto loaded, when it did), described on
+/// the run summary. With a `folder`, the file or cubemap folder read is recorded as an input of
+/// its run (OutputFolder::KeepInput).
+std::shared_ptr<const Environment> LoadSceneEnvironment(const SceneOptions& options, OutputFolder* folder = nullptr);
 
 /// The camera of the options for `mesh` (ChooseCamera), said on the run summary in option syntax
 /// (with the up chosen when world up was parallel to the view).

@@ -20,6 +20,7 @@
 #include "options/option_table.h"
 #include "raster/camera.h"
 #include "raster/rasterizer.h"
+#include "render/frame_limits.h"
 #include "render/render_frames.h"
 #include "sh/coeffs.h"
 #include "video/apng_writer.h"
@@ -40,7 +41,7 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderJobOptions& job) {
   auto add = [&s](OptionSpec o) { s[o.name] = std::move(o); };
   add({"--frames", "N", "frames over the turns, 1..100000 (frame i shows the light turned by 360 * turns * i / N degrees)",
        std::to_string(d.frames)});
-  add({"--size", "WxH", "frame size in pixels, each 1..16384", std::to_string(d.width) + "x" + std::to_string(d.height)});
+  add({"--size", "WxH", "frame size in pixels, each " + std::to_string(kMinFrameSide) + ".." + std::to_string(kMaxFrameSide), std::to_string(d.width) + "x" + std::to_string(d.height)});
   add({"--out", "DIR",
        "output folder, created if missing; one run at a time; after a successful run it holds this run's outputs, "
        "and what earlier runs of this command wrote and this one did not is removed (other commands' outputs and "
@@ -109,16 +110,17 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderJobOptions& job) {
   return s;
 }
 
-/// WxH, each from 1 to 16384 (640x480 or 640X480).
+/// WxH, each from kMinFrameSide to kMaxFrameSide (640x480 or 640X480).
 void ReadSize(Args& args, RenderOptions& o) {
   const auto size = args.String("--size");
   if (!size) return;
   const auto x = size->find_first_of("xX");
   const auto w = ParseNumber(size->substr(0, x)), h = x == std::string::npos ? std::nullopt : ParseNumber(size->substr(x + 1));
-  if (!w || !h || std::floor(*w) != *w || std::floor(*h) != *h)
-    args.Fail("--size: '" + *size + "' is not a size (expected WxH, each from 1 to 16384)");
-  if (*w < 1 || *h < 1 || *w > 16384 || *h > 16384)
-    args.Fail("--size: '" + *size + "' is out of range (expected WxH, each from 1 to 16384)");
+  const std::string expected =
+      " (expected WxH, each from " + std::to_string(kMinFrameSide) + " to " + std::to_string(kMaxFrameSide) + ")";
+  if (!w || !h || std::floor(*w) != *w || std::floor(*h) != *h) args.Fail("--size: '" + *size + "' is not a size" + expected);
+  if (*w < kMinFrameSide || *h < kMinFrameSide || *w > kMaxFrameSide || *h > kMaxFrameSide)
+    args.Fail("--size: '" + *size + "' is out of range" + expected);
   o.width = static_cast<int>(*w), o.height = static_cast<int>(*h);
 }
 
@@ -176,7 +178,7 @@ void ReadCamera(Args& args, RenderOptions& o) {
     if (glm::length(*v) < 1e-12) args.Fail("--up: '" + *args.String("--up") + "' is zero (expected a direction, such as 0,1,0)");
     o.up = v;
   }
-  if (args.Has("--fov")) o.fov = args.Double("--fov", 35.0, 1e-3, 179.0);
+  if (args.Has("--fov")) o.fov = args.Double("--fov", 35.0, kMinFov, kMaxFov);
   if (args.Has("--eye") && args.Has("--target")) {
     const glm::dvec3 view = *o.target - *o.eye;
     if (glm::length(view) < 1e-12) args.Fail("--eye: equals --target (expected two different points)");
@@ -257,10 +259,10 @@ RenderJobOptions ReadRenderOptions(Args& args, const RenderJobOptions& job_defau
     }
   }
   if (has("--turns")) o.turns = args.Double("--turns", d.turns, -1e6, 1e6);
-  if (has("--start-angle")) o.start_degrees = args.Double("--start-angle", d.start_degrees, -1e6, 1e6);
+  if (has("--start-angle")) o.start_degrees = args.Double("--start-angle", d.start_degrees, -kMaxAngle, kMaxAngle);
   if (has("--background")) ReadBackground(args, o, d);
   if (has("--tonemap")) {
-    const std::string curve = args.Choice("--tonemap", ToneCurveName(d.tonemap), {"srgb", "reinhard", "aces"});
+    const std::string curve = args.Choice("--tonemap", ToneCurveName(d.tonemap), ToneCurveNames());
     o.tonemap = *ParseToneCurve(curve);
   }
   if (has("--exposure")) {
@@ -269,12 +271,12 @@ RenderJobOptions ReadRenderOptions(Args& args, const RenderJobOptions& job_defau
       o.exposure.reset();
     } else if (text) {
       const auto v = ParseNumber(*text);
-      if (!v || *v < -20.0 || *v > 20.0)
+      if (!v || *v < -kMaxExposure || *v > kMaxExposure)
         args.Fail("--exposure: " + NumberProblem(*text, false, "a number from -20 to 20, or auto"));
       o.exposure = *v;
     }
   }
-  if (has("--ssaa")) o.ssaa = args.Int("--ssaa", d.ssaa, 1, 8);
+  if (has("--ssaa")) o.ssaa = args.Int("--ssaa", d.ssaa, 1, kMaxSsaa);
   if (static_cast<long long>(o.width) * o.ssaa > kMaxTargetSide || static_cast<long long>(o.height) * o.ssaa > kMaxTargetSide)
     args.Fail("--ssaa: " + std::to_string(o.ssaa) + " times the frame size exceeds " + std::to_string(kMaxTargetSide) +
               " samples per side (expected a smaller --ssaa or --size)");

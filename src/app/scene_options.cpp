@@ -234,10 +234,10 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
     }
   }
   if (has("--transport"))
-    o.transport = args.Choice("--transport", d.transport, {"unshadowed", "shadowed", "interreflection"});
+    o.transport = args.Choice("--transport", d.transport, TransportModeNames());
   if (has("--samples")) o.samples = args.Int("--samples", d.samples, 1, 1 << 24);
   if (has("--hidden-samples")) o.hidden_samples = args.Int("--hidden-samples", d.hidden_samples, 1, 1 << 24);
-  if (has("--sampler")) o.sampler = args.Choice("--sampler", d.sampler, {"fibonacci", "stratified", "uniform"});
+  if (has("--sampler")) o.sampler = args.Choice("--sampler", d.sampler, SamplerNames());
   if (has("--bounces")) o.bounces = args.Int("--bounces", d.bounces, 1, 1000);
   if (has("--direction-sets")) o.direction_sets = args.Int("--direction-sets", d.direction_sets, 1, 1024);
   if (has("--albedo")) {
@@ -299,8 +299,12 @@ SceneOptions ReadSceneOptions(Args& args, const SceneOptions& d) {
   SetThreadCount(o.threads);
   CheckInputs(args, o);
   if (o.lmax_auto) {
-    // Measured on the environment itself (loaded here once more: the commands load it again).
-    const AutoLmax choice = ChooseLmax(*LoadEnvironment(o.env, o.layout), o.tolerance, kMaxLmax);
+    // Measured on the environment itself, loaded here once: the command takes it from here
+    // (LoadSceneEnvironment).
+    o.loaded_env = LoadEnvironment(o.env, o.layout);
+    o.loaded_env_spec = o.env;
+    o.loaded_env_layout = o.layout;
+    const AutoLmax choice = ChooseLmax(*o.loaded_env, o.tolerance, kMaxLmax);
     o.lmax = choice.lmax;
     Summary(choice.why);
   }

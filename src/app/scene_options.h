@@ -6,6 +6,7 @@
 /// exactly that subset, and checks every value before any file is loaded.
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +15,7 @@
 
 #include "bases/list.h"
 #include "env/cube_faces.h"
+#include "env/environment.h"
 #include "material/material.h"
 #include "sh/coeffs.h"
 #include "options/args.h"
@@ -59,6 +61,12 @@ struct SceneOptions {
   bool max_edge_relative = false;
   /// --basis: the basis of the list (basis/basis.h) whose folder stores the transport.
   const Basis* basis = DefaultBasis();
+  /// The environment --lmax auto loaded to choose lmax, from `loaded_env_spec` and
+  /// `loaded_env_layout`, which LoadSceneEnvironment hands out instead of loading it again while
+  /// `env` and `layout` still name it; null otherwise.
+  std::shared_ptr<const Environment> loaded_env;
+  std::string loaded_env_spec;
+  CubeLayout loaded_env_layout = CubeLayout::kStandard;
   /// Every basis's own options (each basis declares and reads them: basis/basis.h).
   BasisOptionSet basis_options;
 

@@ -2,72 +2,95 @@
 
 #include <chrono>
 #include <cmath>
-#include <set>
+#include <cstdint>
+#include <cstdlib>
+
+#include <nlohmann/json.hpp>
 
 #include "basis/cache_plan.h"
 #include "core/constants.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/progress.h"
+#include "core/shell_word.h"
 #include "core/text.h"
-#include "precompute/reference.h"
 #include "raster/exposure.h"
 #include "render/render_frames.h"
 
 namespace prt {
 namespace {
 
+/// JSON objects keep their keys in the order written: the page's tests find "key" before "state".
+using Json = nlohmann::ordered_json;
+
 /// The transport modes the page offers.
 const std::vector<std::string> kModes = {"unshadowed", "shadowed", "interreflection"};
 
-/// A word the shell passes through as it is, else the word in single quotes.
-std::string ShellWord(const std::string& word) {
-  const bool plain = !word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                                              "0123456789_-+=.,/:@%") == std::string::npos;
-  if (plain) return word;
-  std::string quoted = "'";
-  for (char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
+/// `v` rounded as printf's `format` rounds it, as a JSON number: the page reads the double that
+/// printf's text reads as (nlohmann may spell it longer, 79.48923979999999 for 79.4892398: its
+/// Grisu2 gives digits that read back, not always the fewest). A whole number is an integer,
+/// written as %g writes it (2, not nlohmann's 2.0; -0 as 0).
+Json Rounded(const char* format, double v) {
+  const double read = std::strtod(Formatted(format, v).c_str(), nullptr);
+  if (std::trunc(read) == read && std::fabs(read) < 9007199254740992.0)  // 2^53: whole doubles exactly
+    return static_cast<std::int64_t>(read);
+  return read;  // not finite: null
 }
 
-std::string JsonString(const std::string& text) {
-  std::string out = "\"";
-  for (unsigned char c : text) {
-    if (c == '"' || c == '\\') out += '\\', out += char(c);
-    else if (c < 0x20) out += Formatted("\\u%04x", c);
-    else out += char(c);
-  }
-  return out + "\"";
+/// A point or direction as [x,y,z], 9 digits.
+Json Point(const glm::dvec3& v) {
+  return Json::array({Rounded("%.9g", v.x), Rounded("%.9g", v.y), Rounded("%.9g", v.z)});
 }
 
-std::string JsonList(const std::vector<std::string>& words) {
-  std::string out = "[";
-  for (const std::string& w : words) out += (out.size() > 1 ? "," : "") + JsonString(w);
-  return out + "]";
-}
+/// Bytes that are not UTF-8 (a file name) become U+FFFD, as the page's JSON parser reads them.
+std::string JsonText(const Json& json) { return json.dump(-1, ' ', false, Json::error_handler_t::replace); }
 
 std::string Vec(const glm::dvec3& v) { return Formatted("%.9g,%.9g,%.9g", v.x, v.y, v.z); }
 
 std::string Key(const std::string& basis, const std::string& mode) { return basis + " " + mode; }
 
+/// What a request needs of a background job: its result, once the job has finished. Throws
+/// NotReady `never` when nobody asked for it (`job` not valid()), NotReady `running` until it has
+/// finished, and Error(`failed` + its message) when it threw.
+template <class T>
+const T& Finished(const std::shared_future<T>& job, const std::string& never, const std::string& running,
+                  const std::string& failed) {
+  if (!job.valid()) throw NotReady(never);
+  if (job.wait_for(std::chrono::seconds(0)) != std::future_status::ready) throw NotReady(running);
+  try {
+    return job.get();
+  } catch (const std::exception& e) {
+    throw Error(failed + e.what());
+  }
+}
+
+/// A job as /state shows it: {"key", "state": `running` until finished, then "ready" or
+/// "failed", "error": `failed` + its message, or ""}.
+template <class T>
+Json JobState(const std::string& key, const std::shared_future<T>& job, const char* running,
+              const std::string& failed) {
+  std::string state = running, error;
+  if (job.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+    try {
+      job.get();
+      state = "ready";
+    } catch (const std::exception& e) {
+      state = "failed";
+      error = failed + e.what();
+    }
+  }
+  return Json{{"key", key}, {"state", state}, {"error", error}};
+}
+
+/// A finished job of `value`, for what is computed before the page asks.
+template <class T>
+std::shared_future<T> Done(T value) {
+  std::promise<T> promise;
+  promise.set_value(std::move(value));
+  return promise.get_future().share();
+}
+
 }  // namespace
-
-/// A reference the page asked for: measuring (not done), measured, or failed (`error`).
-struct ViewScene::Measured {
-  std::mutex mutex;
-  bool done = false;
-  std::string error;
-  Reference reference;
-};
-
-/// One transport the page asked for: computing (prepared empty), ready, or failed (`error`).
-struct ViewScene::Prepared {
-  std::mutex mutex;
-  bool done = false;
-  std::string error;
-  std::unique_ptr<PreparedBasis> basis;
-  SceneOptions scene;
-};
 
 ViewScene::ViewScene(ViewSetup setup) : setup_(std::move(setup)) {
   mesh_ = LoadSceneMesh(setup_.scene);
@@ -100,10 +123,12 @@ ViewScene::ViewScene(ViewSetup setup) : setup_(std::move(setup)) {
   defaults_.basis = setup_.scene.basis->Name();
   defaults_.mode = setup_.scene.transport;
 
-  auto first = std::make_shared<Prepared>();
-  prepared_[Key(defaults_.basis, defaults_.mode)] = first;
-  Prepare(first, defaults_.basis, defaults_.mode);
-  if (!first->error.empty()) throw Error(first->error);
+  // The first transport, here and now: the run fails with its error.
+  try {
+    prepared_[Key(defaults_.basis, defaults_.mode)] = Done(Prepare(defaults_.basis, defaults_.mode));
+  } catch (const std::exception& e) {
+    throw Error(Key(defaults_.basis, defaults_.mode) + ": " + e.what());
+  }
   if (!defaults_.draw.exposure) {
     // As render measures it: on the first frame's mesh pixels.
     FrameRequest probe = defaults_;
@@ -119,10 +144,6 @@ ViewScene::ViewScene(ViewSetup setup) : setup_(std::move(setup)) {
   }
 }
 
-ViewScene::~ViewScene() {
-  for (std::thread& t : workers_) t.join();
-}
-
 SceneOptions ViewScene::SceneOf(const std::string& basis, const std::string& mode) const {
   SceneOptions s = setup_.scene;
   s.basis = FindBasis(basis);
@@ -131,42 +152,37 @@ SceneOptions ViewScene::SceneOf(const std::string& basis, const std::string& mod
   return s;
 }
 
-void ViewScene::Prepare(const std::shared_ptr<Prepared>& slot, const std::string& basis, const std::string& mode) {
+ViewScene::Prepared ViewScene::Prepare(const std::string& basis, const std::string& mode) const {
   const SceneOptions scene = SceneOf(basis, mode);
   const bool first = basis == defaults_.basis && mode == defaults_.mode;
-  try {
-    const CachePlan cache = first ? PlanCache(setup_.cache, nullptr, "", Bases()) : CachePlan{"", false, {}};
-    ComputeLight(*envs_[0], scene);  // said on the run summary, as render says it; each frame makes its own
-    const TransportOptions transport = TransportOptionsOf(scene);  // every vertex seen: the camera moves
-    const CpcaOptions cpca{};
-    const glm::dvec3 axis = defaults_.draw.axis;
-    const BasisInputs inputs{mesh_, transport, scene.samples_from_rule, scene.lmax_why, scene.own(), axis,
-                             cpca,  *envs_[0], &camera_,                 cache,          false};
-    std::unique_ptr<PreparedBasis> prepared = scene.basis->Prepare(inputs);
-    std::lock_guard<std::mutex> lock(slot->mutex);
-    slot->basis = std::move(prepared);
-    slot->scene = scene;
-    slot->done = true;
-  } catch (const std::exception& e) {
-    std::lock_guard<std::mutex> lock(slot->mutex);
-    slot->error = basis + " " + mode + ": " + e.what();
-    slot->done = true;
-  }
+  const CachePlan cache = first ? PlanCache(setup_.cache, nullptr, "", Bases()) : CachePlan{"", false, {}};
+  ComputeLight(*envs_[0], scene);  // said on the run summary, as render says it; each frame makes its own
+  const TransportOptions transport = TransportOptionsOf(scene);  // every vertex seen: the camera moves
+  const CpcaOptions cpca{};
+  const glm::dvec3 axis = defaults_.draw.axis;
+  const BasisInputs inputs{mesh_, transport, scene.samples_from_rule, scene.lmax_why, scene.own(), axis,
+                           cpca,  *envs_[0], &camera_,                 cache,          false};
+  return Prepared{scene.basis->Prepare(inputs), scene};
 }
 
-std::shared_ptr<ViewScene::Prepared> ViewScene::Find(const std::string& basis, const std::string& mode) const {
+std::shared_future<ViewScene::Prepared> ViewScene::Find(const std::string& basis, const std::string& mode) const {
   std::lock_guard<std::mutex> lock(mutex_);
   const auto it = prepared_.find(Key(basis, mode));
-  return it == prepared_.end() ? nullptr : it->second;
+  return it == prepared_.end() ? std::shared_future<Prepared>() : it->second;
 }
 
 void ViewScene::Compute(const std::string& basis, const std::string& mode) {
   std::lock_guard<std::mutex> lock(mutex_);
-  auto& slot = prepared_[Key(basis, mode)];
-  if (slot) return;
-  slot = std::make_shared<Prepared>();
+  std::shared_future<Prepared>& job = prepared_[Key(basis, mode)];
+  if (job.valid()) return;
   Summary("view: computing the " + basis + " transport, " + mode + ", as the page asked");
-  workers_.emplace_back([this, s = slot, basis, mode] { Prepare(s, basis, mode); });
+  job = pool_.Submit([this, basis, mode] { return Prepare(basis, mode); }).share();
+}
+
+const ViewScene::Prepared& ViewScene::Transport(const std::string& basis, const std::string& mode) const {
+  const std::string key = Key(basis, mode);
+  return Finished(Find(basis, mode), key + ": not computed (POST /compute starts it)", key + ": still computing",
+                  key + ": ");
 }
 
 const ShRgb& ViewScene::Light(int env, int lmax, View view, const SceneOptions& scene) {
@@ -183,13 +199,7 @@ const ShRgb& ViewScene::Light(int env, int lmax, View view, const SceneOptions& 
 }
 
 Image8 ViewScene::Frame(const FrameRequest& request, double* draw_ms) {
-  const std::shared_ptr<Prepared> slot = Find(request.basis, request.mode);
-  if (!slot) throw NotReady(Key(request.basis, request.mode) + ": not computed (POST /compute starts it)");
-  {
-    std::lock_guard<std::mutex> lock(slot->mutex);
-    if (!slot->done) throw NotReady(Key(request.basis, request.mode) + ": still computing");
-    if (!slot->error.empty()) throw Error(slot->error);
-  }
+  const Prepared* const slot = &Transport(request.basis, request.mode);
   if (request.draw.view == View::kTransport && !slot->scene.basis->Traits().coefficient_view)
     throw Error("view=transport: the " + request.basis + " basis keeps no SH transfer coefficients (expected basis=" +
                 DefaultBasis()->Name() + ")");
@@ -216,11 +226,9 @@ Image8 ViewScene::Frame(const FrameRequest& request, double* draw_ms) {
 }
 
 void ViewScene::MeasureReference(const FrameRequest& r) {
-  const std::string key = r.mode + " " + std::to_string(r.env);
   std::lock_guard<std::mutex> lock(mutex_);
-  auto& slot = references_[key];
-  if (slot) return;
-  slot = std::make_shared<Measured>();
+  std::shared_future<Reference>& job = references_[r.mode + " " + std::to_string(r.env)];
+  if (job.valid()) return;
   Summary("view: measuring prt reference for " + r.mode + " under " + setup_.envs[r.env] + " (" +
           std::to_string(setup_.reference_samples) + " directions a vertex), as the page asked");
   ReferenceOptions ro;
@@ -230,41 +238,25 @@ void ViewScene::MeasureReference(const FrameRequest& r) {
   ro.seed = setup_.scene.seed;
   ro.material = setup_.scene.material;
   ro.eye = glm::dvec3(camera_.eye);
-  workers_.emplace_back([this, s = slot, ro, env = r.env] {
-    try {
-      Reference reference = ComputeReference(mesh_, *envs_[env], ro);
-      std::lock_guard<std::mutex> l(s->mutex);
-      s->reference = std::move(reference);
-      s->done = true;
-    } catch (const std::exception& e) {
-      std::lock_guard<std::mutex> l(s->mutex);
-      s->error = e.what();
-      s->done = true;
-    }
-  });
+  job = pool_.Submit([this, ro, env = r.env] { return ComputeReference(mesh_, *envs_[env], ro); }).share();
+}
+
+const Reference& ViewScene::MeasuredReference(const std::string& mode, int env) const {
+  std::shared_future<Reference> job;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = references_.find(mode + " " + std::to_string(env));
+    if (it != references_.end()) job = it->second;
+  }
+  return Finished(job,
+                  "the reference of " + mode + " under environment " + std::to_string(env) +
+                      " is not measured (POST /reference starts it)",
+                  "the reference is still being measured", "reference: ");
 }
 
 std::string ViewScene::ErrorJson(const FrameRequest& r) {
-  std::shared_ptr<Measured> measured;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    const auto it = references_.find(r.mode + " " + std::to_string(r.env));
-    if (it != references_.end()) measured = it->second;
-  }
-  if (!measured) throw NotReady("the reference of " + r.mode + " under environment " + std::to_string(r.env) +
-                                " is not measured (POST /reference starts it)");
-  {
-    std::lock_guard<std::mutex> lock(measured->mutex);
-    if (!measured->done) throw NotReady("the reference is still being measured");
-    if (!measured->error.empty()) throw Error("reference: " + measured->error);
-  }
-  const std::shared_ptr<Prepared> slot = Find(r.basis, r.mode);
-  if (!slot) throw NotReady(Key(r.basis, r.mode) + ": not computed (POST /compute starts it)");
-  {
-    std::lock_guard<std::mutex> lock(slot->mutex);
-    if (!slot->done) throw NotReady(Key(r.basis, r.mode) + ": still computing");
-    if (!slot->error.empty()) throw Error(slot->error);
-  }
+  const Reference& ref = MeasuredReference(r.mode, r.env);
+  const Prepared* const slot = &Transport(r.basis, r.mode);
   std::lock_guard<std::mutex> lock(draw_mutex_);
   const bool bands = slot->scene.basis->Traits().light_bands;
   const int computed = slot->scene.lmax;
@@ -279,7 +271,6 @@ std::string ViewScene::ErrorJson(const FrameRequest& r) {
   frame_light->Turn(0.0);
   const glm::dvec3 eye(camera_.eye);
   const std::vector<glm::vec3> shaded = frame_light->Shade(mesh_, true, &eye);
-  const Reference& ref = measured->reference;
   double diff = 0.0, norm = 0.0;
   for (std::size_t v = 0; v < shaded.size(); ++v) {
     const glm::dvec3 d = glm::dvec3(shaded[v]) - ref.radiance[v];
@@ -288,8 +279,11 @@ std::string ViewScene::ErrorJson(const FrameRequest& r) {
   }
   const double error = norm > 0 ? std::sqrt(diff / norm) : 0.0;
   const double own = ref.rms_radiance > 0 ? ref.rms_error / ref.rms_radiance : 0.0;
-  const std::string json = Formatted("{\"error\":%.6g,\"reference_error\":%.6g,\"vertices\":%zu,\"samples\":%d,"
-                                     "\"lmax\":%d}", error, own, shaded.size(), setup_.reference_samples, lmax);
+  const std::string json = JsonText(Json{{"error", Rounded("%.6g", error)},
+                                          {"reference_error", Rounded("%.6g", own)},
+                                          {"vertices", shaded.size()},
+                                          {"samples", setup_.reference_samples},
+                                          {"lmax", lmax}});
   errors_[key] = json;
   return json;
 }
@@ -319,39 +313,37 @@ std::string ViewScene::Command(const FrameRequest& r) const {
 }
 
 std::string ViewScene::StateJson() const {
-  std::string transports = "[", references = "[";
+  Json transports = Json::array(), references = Json::array();
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    for (const auto& [key, slot] : prepared_) {
-      std::lock_guard<std::mutex> slot_lock(slot->mutex);
-      const std::string state = !slot->done ? "computing" : slot->error.empty() ? "ready" : "failed";
-      transports += std::string(transports.size() > 1 ? "," : "") + "{\"key\":" + JsonString(key) +
-                    ",\"state\":\"" + state + "\",\"error\":" + JsonString(slot->error) + "}";
-    }
-    for (const auto& [key, measured] : references_) {
-      std::lock_guard<std::mutex> measured_lock(measured->mutex);
-      const std::string state = !measured->done ? "measuring" : measured->error.empty() ? "ready" : "failed";
-      references += std::string(references.size() > 1 ? "," : "") + "{\"key\":" + JsonString(key) +
-                    ",\"state\":\"" + state + "\",\"error\":" + JsonString(measured->error) + "}";
-    }
+    for (const auto& [key, job] : prepared_) transports.push_back(JobState(key, job, "computing", key + ": "));
+    for (const auto& [key, job] : references_) references.push_back(JobState(key, job, "measuring", ""));
   }
-  transports += "]";
-  references += "]";
   const ProgressReading progress = LatestProgress();
   const RenderOptions& d = defaults_.draw;
-  std::vector<std::string> env_names = setup_.envs;
-  return "{\"limits\":{\"lmax\":" + std::to_string(limits_.lmax) + ",\"bases\":" + JsonList(limits_.bases) +
-         ",\"modes\":" + JsonList(limits_.modes) + ",\"environments\":" + JsonList(env_names) +
-         ",\"coefficients\":" + std::to_string(limits_.coefficients) +
-         ",\"light_terms\":" + std::to_string(limits_.light_terms) +
-         ",\"camera_moves\":" + (limits_.camera_moves ? "true" : "false") + "},\"defaults\":{\"query\":" +
-         JsonString(FrameQuery(defaults_)) + ",\"eye\":[" + Vec(*d.eye) + "],\"target\":[" + Vec(*d.target) +
-         "],\"up\":[" + Vec(*d.up) + "],\"fov\":" + Formatted("%.9g", *d.fov) +
-         ",\"exposure\":" + Formatted("%.9g", d.exposure.value_or(0.0)) + ",\"axis\":[" + Vec(d.axis) +
-         "],\"width\":" + std::to_string(d.width) + ",\"height\":" + std::to_string(d.height) +
-         "},\"transports\":" + transports + ",\"references\":" + references + ",\"progress\":{\"label\":" + JsonString(progress.label) +
-         ",\"fraction\":" + Formatted("%.4f", progress.fraction) + ",\"active\":" + (progress.active ? "true" : "false") +
-         "}}";
+  const Json limits{{"lmax", limits_.lmax},
+                    {"bases", limits_.bases},
+                    {"modes", limits_.modes},
+                    {"environments", setup_.envs},
+                    {"coefficients", limits_.coefficients},
+                    {"light_terms", limits_.light_terms},
+                    {"camera_moves", limits_.camera_moves}};
+  const Json defaults{{"query", FrameQuery(defaults_)},
+                      {"eye", Point(*d.eye)},
+                      {"target", Point(*d.target)},
+                      {"up", Point(*d.up)},
+                      {"fov", Rounded("%.9g", *d.fov)},
+                      {"exposure", Rounded("%.9g", d.exposure.value_or(0.0))},
+                      {"axis", Point(d.axis)},
+                      {"width", d.width},
+                      {"height", d.height}};
+  const Json progress_json{
+      {"label", progress.label}, {"fraction", Rounded("%.4f", progress.fraction)}, {"active", progress.active}};
+  return JsonText(Json{{"limits", limits},
+                       {"defaults", defaults},
+                       {"transports", transports},
+                       {"references", references},
+                       {"progress", progress_json}});
 }
 
 }  // namespace prt

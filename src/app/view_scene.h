@@ -19,21 +19,32 @@
 ///                                   one was computed for the command line's eye, which stays)
 ///
 /// Frames are drawn one at a time (the frame loop's buffers are shared); the page asks for the
-/// next when the last has arrived.
+/// next when the last has arrived. The background work runs on kViewWorkers threads
+/// (core/task_pool.h), each job kept as the std::shared_future of its result: not asked for
+/// (no future), still running (not ready) or done (its result, or its error rethrown).
 
+#include <future>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "app/pipeline.h"
 #include "app/scene_options.h"
+#include "core/task_pool.h"
+#include "precompute/reference.h"
 #include "raster/rasterizer.h"
 #include "view/view_server.h"
 
 namespace prt {
+
+/// The threads of `prt view`'s background work: two, so that the reference the page asks for is
+/// measured while another transport is computed (the error figures need both). Further jobs
+/// queue ("computing" in /state) rather than each taking a thread of its own: ParallelFor's
+/// threads go to one job at a time and the others run alone (core/parallel.h), so more jobs at
+/// once would mostly contend for the same cores, and a page could start threads without bound.
+inline constexpr int kViewWorkers = 2;
 
 /// What `prt view` was given.
 struct ViewSetup {
@@ -51,7 +62,8 @@ class ViewScene : public ViewBackend {
  public:
   /// Loads the mesh and environments and computes the first transport (said on the run summary).
   explicit ViewScene(ViewSetup setup);
-  ~ViewScene() override;
+  /// Waits for the background jobs that are running; those still queued are dropped.
+  ~ViewScene() override = default;
 
   const ViewLimits& Limits() const override { return limits_; }
   const FrameRequest& Defaults() const override { return defaults_; }
@@ -63,31 +75,45 @@ class ViewScene : public ViewBackend {
   std::string ErrorJson(const FrameRequest& request) override;
 
  private:
-  struct Prepared;
-  std::shared_ptr<Prepared> Find(const std::string& basis, const std::string& mode) const;
-  void Prepare(const std::shared_ptr<Prepared>& slot, const std::string& basis, const std::string& mode);
+  /// One transport the page asked for, computed.
+  struct Prepared {
+    std::unique_ptr<PreparedBasis> basis;
+    SceneOptions scene;
+  };
+  /// The job of (basis, mode)'s transport; not valid() when never asked for.
+  std::shared_future<Prepared> Find(const std::string& basis, const std::string& mode) const;
+  /// Computes (basis, mode)'s transport, on whatever thread calls it.
+  Prepared Prepare(const std::string& basis, const std::string& mode) const;
+  /// (basis, mode)'s transport once computed (kept as long as the scene: a job is never
+  /// forgotten); NotReady before, its error as Error.
+  const Prepared& Transport(const std::string& basis, const std::string& mode) const;
+  /// The reference of `mode` under environment `env` once measured (kept as long as the scene);
+  /// NotReady before, its error as Error.
+  const Reference& MeasuredReference(const std::string& mode, int env) const;
   const ShRgb& Light(int env, int lmax, View view, const SceneOptions& scene);
   SceneOptions SceneOf(const std::string& basis, const std::string& mode) const;
 
   ViewSetup setup_;
   Mesh mesh_;
   Camera camera_;
-  std::vector<std::unique_ptr<Environment>> envs_;
+  std::vector<std::shared_ptr<const Environment>> envs_;
   ViewLimits limits_;
   FrameRequest defaults_;
 
-  mutable std::mutex mutex_;  ///< guards prepared_ and the workers
-  std::map<std::string, std::shared_ptr<Prepared>> prepared_;
-  std::vector<std::thread> workers_;
-  struct Measured;
-  std::map<std::string, std::shared_ptr<Measured>> references_;  ///< by mode and env; under mutex_
-  std::map<std::string, std::string> errors_;                    ///< ErrorJson by setting; under draw_mutex_
+  mutable std::mutex mutex_;  ///< guards prepared_ and references_ (the maps; a future guards its own result)
+  std::map<std::string, std::shared_future<Prepared>> prepared_;    ///< by basis and mode
+  std::map<std::string, std::shared_future<Reference>> references_;  ///< by mode and env
+  std::map<std::string, std::string> errors_;                        ///< ErrorJson by setting; under draw_mutex_
 
   std::mutex draw_mutex_;  ///< one frame at a time: what follows is the frame loop's
   std::map<std::string, ShRgb> lights_;
   std::string light_key_;
   std::unique_ptr<FrameLight> light_;
   Rasterizer rasterizer_;
+
+  /// Last, so destroyed first: its destructor waits for the running jobs, which read the members
+  /// above and write their futures' results.
+  TaskPool pool_{kViewWorkers};
 };
 
 }  // namespace prt

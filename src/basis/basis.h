@@ -33,6 +33,7 @@
 
 namespace prt {
 
+class BasisStudy;
 struct CachePlan;
 
 /// What a basis can do, each by name: the commands ask these instead of comparing names.
@@ -47,7 +48,6 @@ struct BasisTraits {
   /// Its transport casts --samples and --hidden-samples directions a vertex (the wavelets cast
   /// rays per cube texel instead).
   bool takes_samples = false;
-  bool report_study = false;      ///< prt report --basis NAME measures it against SH (report/report_wavelet.h)
 };
 
 /// A basis's own options as read from a command line (or its defaults). Each basis derives its
@@ -132,6 +132,10 @@ class Basis {
   /// The light alone, for the light view, which draws the light as the basis keeps it and no
   /// transport (FrameLight::Kept; nothing else of its frame lights may be called).
   virtual std::unique_ptr<PreparedBasis> PrepareLight(const BasisInputs& inputs) const = 0;
+
+  /// Its own study for `prt report --basis NAME` and its cases of the stability suite
+  /// (basis/study.h; one instance that lives as long as the program), or nullptr: none.
+  virtual const BasisStudy* Study() const { return nullptr; }
 };
 
 /// `settings` as the basis's own type: a basis handed another's settings is a programming

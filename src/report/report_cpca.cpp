@@ -9,7 +9,7 @@
 #include "cpca/cpca_transfer.h"
 #include "precompute/shade.h"
 #include "precompute/transfer_matrix.h"
-#include "report/markdown_table.h"
+#include "core/markdown_table.h"
 
 namespace prt {
 namespace {

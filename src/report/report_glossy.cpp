@@ -15,7 +15,7 @@
 #include "precompute/reference.h"
 #include "precompute/shade.h"
 #include "precompute/transfer_matrix.h"
-#include "report/timed_transport.h"
+#include "basis/timed_transport.h"
 
 namespace prt {
 namespace {

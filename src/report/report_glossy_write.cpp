@@ -5,7 +5,7 @@
 
 #include "core/text.h"
 #include "raster/plot.h"
-#include "report/markdown_table.h"
+#include "core/markdown_table.h"
 #include "report/report_glossy.h"
 
 namespace prt {

@@ -10,7 +10,7 @@
 #include "precompute/sample_rule.h"
 #include "precompute/shade.h"
 #include "raster/exposure.h"
-#include "report/markdown_table.h"
+#include "core/markdown_table.h"
 #include "render/render_frames.h"
 #include "render/seen_vertices.h"
 #include "sh_basis/frame_light.h"

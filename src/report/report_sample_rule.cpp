@@ -4,7 +4,7 @@
 
 #include "core/text.h"
 #include "precompute/sample_rule.h"
-#include "report/markdown_table.h"
+#include "core/markdown_table.h"
 
 namespace prt {
 namespace {

@@ -23,11 +23,14 @@
 /// Light projection is measured separately: the sky averaged into cubemaps of growing face size,
 /// projected (timed) and compared coefficient by coefficient with its exact projection.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "basis/study.h"
+#include "basis/timed_transport.h"
 #include "env/environment.h"
 #include "geometry/mesh.h"
 #include "precompute/error_metrics.h"
@@ -35,10 +38,8 @@
 #include "render/render_options.h"
 #include "report/report_glossy.h"
 #include "report/report_scene.h"
-#include "report/timed_transport.h"
 #include "report/report_noise.h"
 #include "report/round_robin_timing.h"
-#include "report/report_wavelet.h"
 
 namespace prt {
 
@@ -107,7 +108,9 @@ struct ReportData {
   std::vector<OrderViolation> order_violations;  ///< CheckWorkOrder of the sweep and the light rows
   std::optional<GlossyStudy> glossy;  ///< with --material phong:N,KS (report_glossy.h)
   std::optional<NoiseStudy> noise;    ///< the visible-noise study (report_noise.h)
-  std::optional<WaveletStudy> wavelet;  ///< with --basis wavelet: SH against wavelets (report_wavelet.h)
+  /// With --basis NAME whose basis has a study (Basis::Study, basis/study.h): its results, which
+  /// the report writes as they are (report.csv rows, a report.md section, basis_error.png).
+  std::shared_ptr<const StudyResults> basis_study;
 };
 
 /// Spread (TimingStats::Spread: interquartile range / median) of a configuration's times above

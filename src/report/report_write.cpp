@@ -10,7 +10,7 @@
 #include "core/log.h"
 #include "io/png_io.h"
 #include "raster/plot.h"
-#include "report/markdown_table.h"
+#include "core/markdown_table.h"
 #include "report/report_noise.h"
 #include "report/report_sample_rule.h"
 #include "report/report_time_plot.h"
@@ -54,11 +54,11 @@ std::string EachLineEndingWith(const std::string& rows, const std::string& suffi
 
 std::string Csv(const ReportData& d) {
   // With the basis section, three more columns: every row before its rows is an SH one.
-  const std::string basis = d.wavelet ? ",sh,," : "";
+  const std::string basis = d.basis_study ? ",sh,," : "";
   std::string s = std::string("mode,sampler,samples,directions,lmax,seconds,sampling_rms,sampling_max,sampling_relative,"
                               "total_rms,total_max,total_relative,psnr_db,material,path,lobe_relative,vs_vector_relative,"
                               "matrix_bytes") +
-                  (d.wavelet ? ",basis,budget,bytes_per_vertex" : "") + "," + kTimingColumns + "\n";
+                  (d.basis_study ? ",basis,budget,bytes_per_vertex" : "") + "," + kTimingColumns + "\n";
   for (const auto& r : d.rows) {
     char b[400];
     std::snprintf(b, sizeof b, "%s,%s,%d,%d,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.4g,diffuse,diffuse,,,", r.mode.c_str(),
@@ -67,7 +67,7 @@ std::string Csv(const ReportData& d) {
     s += b + basis + "," + TimingFields(r) + "\n";
   }
   if (d.glossy) s += EachLineEndingWith(GlossyCsvRows(*d.glossy), basis + kNoTiming);
-  if (d.wavelet) s += EachLineEndingWith(WaveletCsvRows(*d.wavelet), kNoTiming);
+  if (d.basis_study) s += EachLineEndingWith(d.basis_study->CsvRows(), kNoTiming);
   return s;
 }
 
@@ -163,21 +163,21 @@ std::string Markdown(const ReportData& d) {
     s += MarkdownRow({std::to_string(l.face_size), std::to_string(l.supersample) + "^2", TimeWithRange(l.time),
                       F("%.3g", l.coeff_error)});
   if (d.glossy) s += GlossyMarkdown(*d.glossy);
-  if (d.wavelet) s += WaveletMarkdown(*d.wavelet, TimesTrusted(d));
+  if (d.basis_study) s += d.basis_study->Markdown(TimesTrusted(d));
   if (d.noise) s += NoiseMarkdown(*d.noise);
   const std::size_t glossy_rows =
       d.glossy ? d.glossy->vector_rows.size() + d.glossy->matrix_rows.size() + (d.glossy->cpca ? d.glossy->cpca->rows.size() : 0)
                : 0;
-  const std::size_t basis_rows = d.wavelet ? d.wavelet->rows.size() : 0;
+  const std::size_t basis_rows = d.basis_study ? d.basis_study->RowCount() : 0;
   s += "\n## All measurements\n\nSee report.csv (" + std::to_string(d.rows.size() + glossy_rows + basis_rows) +
        " rows; the glossy ones have material phong:N,KS and path glossy-vector, glossy-matrices or glossy-cpca-CxK "
        "(clustered PCA against the full matrices: sampling_relative the matrices' Frobenius error, seconds the "
        "compression, matrix_bytes the compressed bytes)" +
-       (d.wavelet ? "; the basis section's have path basis-sh or basis-wavelet and the columns basis, budget and "
-                    "bytes_per_vertex"
-                  : "") +
+       (d.basis_study ? "; the basis section's have path " + d.basis_study->CsvPaths() +
+                            " and the columns basis, budget and bytes_per_vertex"
+                      : std::string()) +
        ") and error_vs_time.png" + (d.glossy ? ", glossy_error_vs_lmax.png" : "") +
-       (d.wavelet ? ", basis_error.png" : "") + ".\n";
+       (d.basis_study ? ", basis_error.png" : "") + ".\n";
   return s;
 }
 
@@ -188,10 +188,10 @@ void WriteReport(OutputFolder& folder, const ReportData& d) {
   WriteFileAtomic(folder.Output("report.md"), Markdown(d));
   WritePng(folder.Output("error_vs_time.png"), ErrorVsTimePlot(d));
   if (d.glossy) WritePng(folder.Output("glossy_error_vs_lmax.png"), GlossyPlot(*d.glossy));
-  if (d.wavelet) WritePng(folder.Output("basis_error.png"), WaveletPlot(*d.wavelet, TimesTrusted(d)));
+  if (d.basis_study) WritePng(folder.Output("basis_error.png"), d.basis_study->Plot(TimesTrusted(d)));
   Summary("wrote " + folder.dir() + "/report.csv, report.md and error_vs_time.png" +
           (d.glossy ? std::string(" and glossy_error_vs_lmax.png") : std::string()) +
-          (d.wavelet ? std::string(" and basis_error.png") : std::string()));
+          (d.basis_study ? std::string(" and basis_error.png") : std::string()));
 }
 
 }  // namespace prt

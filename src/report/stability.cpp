@@ -6,7 +6,10 @@
 
 #include <glm/geometric.hpp>
 
+#include "bases/list.h"
+#include "basis/study.h"
 #include "core/constants.h"
+#include "core/markdown_table.h"
 #include "core/parallel.h"
 #include "core/rng.h"
 #include "core/text.h"
@@ -17,8 +20,6 @@
 #include "precompute/light.h"
 #include "precompute/samplers.h"
 #include "precompute/transport.h"
-#include "report/markdown_table.h"
-#include "report/report_wavelet.h"
 #include "report/stability_inputs.h"
 #include "sh/axis_rotation.h"
 #include "sh/basis.h"
@@ -293,7 +294,9 @@ void FixedCases(std::vector<StabilityCase>& out) {
 std::vector<StabilityCase> RunStabilityCases(const StabilityOptions& options) {
   std::vector<StabilityCase> out;
   if (options.fixed_cases) FixedCases(out);
-  WaveletAgreementCases(out, options.sun_segments, options.sun_sides, options.sun_ground);
+  // Each basis's own cases (basis/study.h), in the list's order.
+  for (const Basis* basis : Bases())
+    if (const BasisStudy* study = basis->Study()) study->StabilityCases(out, options.study_scene);
   return out;
 }
 

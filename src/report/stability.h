@@ -17,9 +17,10 @@
 ///   - awkward inputs (stability_inputs.h): extreme meshes, albedo 0.99 with 64 bounces in a
 ///     deep well, NaN/Inf/negative/1e30 texels, a Phong lobe of N = 1000 at lmax 2 (both glossy
 ///     paths);
-///   - the wavelet basis against prt reference on the scene it was measured on (a knot on a
-///     40 x 40 ground under the sky's small sun) at the default budget, shadowed and with one
-///     bounce (report_wavelet.h, WaveletAgreementCases).
+///   - each basis's own cases, whose basis has a study (Basis::Study, basis/study.h), in the
+///     list's order (bases/list.h): the wavelet basis's is against prt reference on the scene
+///     it was measured on (a knot on a 40 x 40 ground under the sky's small sun) at the default
+///     budget, shadowed and with one bounce.
 ///
 /// References
 /// [1] Atkinson, Han, "Spherical Harmonics and Approximations on the Unit Sphere", 2012, 5.2.
@@ -28,18 +29,17 @@
 #include <string>
 #include <vector>
 
-#include "report/stability_case.h"
+#include "basis/stability_case.h"
+#include "basis/study.h"
 
 namespace prt {
 
-/// What the wavelet cases run on: MakeSunScene's knot (segments x sides) and ground (quads a
-/// side). The defaults are the measured scene, the one `prt report --stability` runs and whose
-/// figures its limits were set from; the tests' runs under a sanitizer take a smaller one.
+/// What the bases' cases run on: a knot (segments x sides) on a ground (quads a side). The
+/// default (all 0) is each basis's measured scene, the one `prt report --stability` runs and
+/// whose figures its limits were set from; the tests' runs under a sanitizer take a smaller one.
 struct StabilityOptions {
-  int sun_segments = 192;
-  int sun_sides = 20;
-  int sun_ground = 40;
-  /// Whether the other cases, whose inputs are fixed, run too (false: the wavelet ones alone).
+  StudySceneSize study_scene;
+  /// Whether the other cases, whose inputs are fixed, run too (false: the bases' ones alone).
   bool fixed_cases = true;
 };
 

@@ -18,7 +18,7 @@
 
 #include <vector>
 
-#include "report/stability_case.h"
+#include "basis/stability_case.h"
 
 namespace prt {
 

@@ -10,16 +10,10 @@
 #include "core/error.h"
 #include "core/text.h"
 #include "raster/tonemap.h"
+#include "render/frame_limits.h"
 
 namespace prt {
 namespace {
-
-/// The largest frame side the page may ask for, in pixels.
-constexpr int kMaxSide = 4096;
-constexpr int kMaxSsaa = 4;
-/// The most samples a frame may take, width x height x ssaa^2: what a 4096 x 4096 frame takes
-/// without supersampling (its buffers about 0.5 GB).
-constexpr double kMaxSamples = 4096.0 * 4096.0;
 
 [[noreturn]] void Refuse(const std::string& name, const std::string& value, const std::string& expected) {
   throw Error(name + "=" + value + ": refused (expected " + expected + ")");
@@ -83,10 +77,11 @@ void ReadView(const std::string& value, const ViewLimits& limits, RenderOptions&
 
 void ReadSize(const std::string& value, RenderOptions& draw) {
   const std::size_t x = value.find('x');
-  const std::string expected = "WxH, each 16.." + std::to_string(kMaxSide);
+  const std::string expected = "WxH, each " + std::to_string(kMinFrameSide) + ".." + std::to_string(kMaxFrameSide);
   if (x == std::string::npos) Refuse("size", value, expected);
   const std::optional<double> w = ParseNumber(value.substr(0, x)), h = ParseNumber(value.substr(x + 1));
-  if (!w || !h || *w != std::floor(*w) || *h != std::floor(*h) || *w < 16 || *h < 16 || *w > kMaxSide || *h > kMaxSide)
+  if (!w || !h || *w != std::floor(*w) || *h != std::floor(*h) || *w < kMinFrameSide || *h < kMinFrameSide ||
+      *w > kMaxFrameSide || *h > kMaxFrameSide)
     Refuse("size", value, expected);
   draw.width = static_cast<int>(*w);
   draw.height = static_cast<int>(*h);
@@ -104,25 +99,25 @@ FrameRequest ParseFrameRequest(const std::vector<std::pair<std::string, std::str
   for (const auto& [name, value] : query) {
     if (++seen[name] > 1) throw Error(name + ": given twice (expected each parameter once)");
     if (name == "axis") d.axis = Vector(name, value, true);
-    else if (name == "angle") d.start_degrees = Number(name, value, -1e6, 1e6);
+    else if (name == "angle") d.start_degrees = Number(name, value, -kMaxAngle, kMaxAngle);
     else if (name == "lmax") r.lmax = Integer(name, value, 0, limits.lmax);
     else if (name == "basis") r.basis = OneOf(name, value, limits.bases);
     else if (name == "mode") r.mode = OneOf(name, value, limits.modes);
     else if (name == "env") r.env = Integer(name, value, 0, limits.environments - 1);
     else if (name == "view") ReadView(value, limits, d);
-    else if (name == "exposure") d.exposure = Number(name, value, -20, 20);
-    else if (name == "tonemap") d.tonemap = *ParseToneCurve(OneOf(name, value, {"srgb", "reinhard", "aces"}));
+    else if (name == "exposure") d.exposure = Number(name, value, -kMaxExposure, kMaxExposure);
+    else if (name == "tonemap") d.tonemap = *ParseToneCurve(OneOf(name, value, ToneCurveNames()));
     else if (name == "eye") d.eye = Vector(name, value, false);
     else if (name == "target") d.target = Vector(name, value, false);
     else if (name == "up") d.up = Vector(name, value, true);
-    else if (name == "fov") d.fov = Number(name, value, 1, 179);
+    else if (name == "fov") d.fov = Number(name, value, kMinFov, kMaxFov);
     else if (name == "size") ReadSize(value, d);
     else if (name == "ssaa") d.ssaa = Integer(name, value, 1, kMaxSsaa);
     else if (name == "terms") r.light_terms = Integer(name, value, 0, limits.light_terms);
     else throw Error(name + ": unknown parameter (expected axis, angle, lmax, basis, mode, env, view, exposure, "
                             "tonemap, eye, target, up, fov, size, ssaa, terms)");
   }
-  if (double(d.width) * d.height * d.ssaa * d.ssaa > kMaxSamples)
+  if (double(d.width) * d.height * d.ssaa * d.ssaa > kMaxViewSamples)
     throw Error("size=" + std::to_string(d.width) + "x" + std::to_string(d.height) + "&ssaa=" + std::to_string(d.ssaa) +
                 ": refused (expected width x height x ssaa^2 at most 4096^2 samples)");
   if (d.eye && d.target && glm::length(*d.eye - *d.target) < 1e-9) throw Error("eye: the same point as target");

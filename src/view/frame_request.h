@@ -11,9 +11,12 @@
 ///   env=I                      the I-th environment of the command line (0: --env)
 ///   view=V                     radiance | irradiance | albedo | light | glossy | transport:K
 ///   exposure=EV tonemap=CURVE  -20..20; srgb | reinhard | aces
-///   eye=, target=, up=X,Y,Z fov=DEGREES   the camera (fov 1..179)
+///   eye=, target=, up=X,Y,Z fov=DEGREES   the camera (fov 0.001..179)
 ///   terms=K                    the wavelet light's coefficients kept per frame, 0 (all)..6 F^2
-///   size=WxH ssaa=K            16..4096 each; 1..4; W x H x K^2 at most 4096^2 samples
+///   size=WxH ssaa=K            1..16384 each; 1..8; W x H x K^2 at most 4096^2 samples
+///
+/// The limits are render's (render/frame_limits.h), but for the samples of a frame: the view's
+/// own budget, kMaxViewSamples.
 
 #include <string>
 #include <utility>

@@ -7,6 +7,7 @@
 #include "options/option_table.h"
 #include "wavelet/frame_light.h"
 #include "wavelet/scene_wavelets.h"
+#include "wavelet/study.h"
 #include "wavelet/transport_cache.h"
 
 namespace prt {
@@ -50,11 +51,8 @@ class Wavelet : public Basis {
            "small bright sources), its bounces in SH at --lmax (4 unless given)";
   }
   std::string Noun() const override { return "a wavelet"; }
-  BasisTraits Traits() const override {
-    BasisTraits t;
-    t.report_study = true;
-    return t;
-  }
+  BasisTraits Traits() const override { return BasisTraits{}; }
+  const BasisStudy* Study() const override { return &WaveletBasisStudy(); }
 
   std::vector<OptionSpec> OwnOptions() const override {
     const WaveletOptions d;

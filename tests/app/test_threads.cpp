@@ -1,9 +1,10 @@
 // The threads tier of src/app (tests/README.md, "Tiers"): prt view's scene (app/view_scene.h) in
 // this process. Its background computations (another transport mode, the reference's error
-// figures) run on worker threads of their own while the server's threads draw frames of the mode
-// that is ready; a frame of the mode being computed is refused (NotReady) until it is ready, then
-// drawn; and a scene that goes while a computation runs waits for it. ThreadSanitizer watches the
-// workers, the drawing threads and the pool meet.
+// figures) run on the scene's kViewWorkers threads (core/task_pool.h) while the server's threads
+// draw frames of the mode that is ready; a frame of the mode being computed is refused (NotReady)
+// until it is ready, then drawn; more jobs than workers wait their turn and finish; and a scene
+// that goes while a computation runs waits for it. ThreadSanitizer watches the workers, the
+// drawing threads and the pool meet.
 #include <doctest/doctest.h>
 
 #include <atomic>
@@ -88,6 +89,37 @@ TEST_SUITE("app") {
       }
     });
     CHECK(measured);
+  }
+
+  TEST_CASE("threads: prt view's scene queues more background jobs than it has workers, and finishes each") {
+    const test::ThreadCountScope pool(test::kManyThreads);
+    ViewScene scene(SmallSetup("threads_view_scene_queue"));
+    // Two transports and three references on kViewWorkers (2) threads, asked for from threads
+    // of their own as the server's would.
+    std::vector<FrameRequest> requests;
+    for (const char* mode : {"unshadowed", "shadowed", "interreflection"}) {
+      FrameRequest r = scene.Defaults();
+      r.mode = mode;
+      requests.push_back(r);
+    }
+    test::OnThreads(static_cast<int>(requests.size()), [&](int t) {
+      scene.Compute("sh", requests[std::size_t(t)].mode);
+      scene.MeasureReference(requests[std::size_t(t)]);
+    });
+    for (const FrameRequest& r : requests) {
+      CAPTURE(r.mode);
+      const bool finished = WaitFor([&] {
+        try {
+          return scene.ErrorJson(r).find("\"error\":") != std::string::npos;  // the transport's and the reference's
+        } catch (const NotReady&) {
+          return false;
+        }
+      });
+      CHECK(finished);
+    }
+    const std::string state = scene.StateJson();
+    for (const char* unfinished : {"computing", "measuring", "failed"})
+      CHECK(state.find(std::string("\"state\":\"") + unfinished + "\"") == std::string::npos);
   }
 
   TEST_CASE("threads: a view scene that goes while a background computation runs waits for it") {

@@ -1,6 +1,6 @@
 // The Markdown tables prt writes (report.md, stability/report.md), rendered by GitHub's own
 // renderer, Debian's cmark-gfm (gfm_html.h): every row keeps its columns and a `|` in a cell's
-// text shows as `|` (report/markdown_table.h).
+// text shows as `|` (core/markdown_table.h).
 #include <doctest/doctest.h>
 
 #include <stdexcept>
@@ -8,14 +8,15 @@
 #include <vector>
 
 #include "core/atomic_file.h"
+#include "core/markdown_table.h"
 #include "core/output_folder.h"
 #include "core/text.h"
 #include "precompute/sample_rule.h"
-#include "report/markdown_table.h"
 #include "report/report_write.h"
 #include "report/stability.h"
 #include "tests/report/gfm_html.h"
 #include "tests/test_process.h"
+#include "wavelet/study.h"
 
 namespace {
 
@@ -85,7 +86,7 @@ prt::ReportData SyntheticReport() {
   wav.wavelet = true, wav.lmax = 0, wav.budget = 64, wav.kept = 60, wav.kept_energy = 0.9, wav.bytes_per_vertex = 264;
   wav.total = {0.1, 0.2, 0.25};
   w.rows = {sh, wav};
-  d.wavelet = w;
+  d.basis_study = prt::WaveletStudyResults(w);
 
   prt::NoiseStudy n;
   n.vertices = 100, n.seen_vertices = 50, n.pixels = 1000;

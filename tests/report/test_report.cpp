@@ -27,11 +27,11 @@ std::size_t Inked(const prt::Image8& im) {
 }  // namespace
 
 TEST_SUITE("report") {
-  TEST_CASE("stability: the wavelet cases run on the scene StabilityOptions asks for") {
+  TEST_CASE("stability: the bases' cases (the wavelets') run on the scene StabilityOptions asks for") {
     // A knot of 16 x 3 over a 2 x 2 ground: 48 + 3^2 = 57 vertices, named with its ground in each
     // wavelet case's checks; the cases with fixed inputs left out. The wavelet cases' figures on
     // a scene this coarse are not the measured ones, so only that they are numbers is checked.
-    const auto cases = prt::RunStabilityCases(prt::StabilityOptions{16, 3, 2, false});
+    const auto cases = prt::RunStabilityCases(prt::StabilityOptions{{16, 3, 2}, false});
     CHECK(cases.size() == 2);
     int wavelet = 0;
     for (const auto& c : cases) {

@@ -1,5 +1,5 @@
 // prt report --basis wavelet --quick as a command: the basis section, its rows and its chart, and
-// none of them without --basis wavelet. (The study's numbers and writers: test_report_wavelet.cpp.)
+// none of them without --basis wavelet. (The study's numbers and writers: tests/wavelet/test_study.cpp.)
 #include <doctest/doctest.h>
 
 #include <filesystem>

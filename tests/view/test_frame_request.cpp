@@ -95,12 +95,16 @@ TEST_CASE("ParseFrameRequest refuses what the run cannot draw, naming the parame
   CHECK_FALSE(refused({{"angle", "nan"}}).empty());
   CHECK_FALSE(refused({{"angle", "1e7"}}).empty());
   CHECK_FALSE(refused({{"exposure", "-20.5"}}).empty());
-  CHECK_FALSE(refused({{"fov", "0.5"}}).empty());
+  CHECK_FALSE(refused({{"fov", "0.0005"}}).empty());
+  CHECK(ParseFrameRequest({{"fov", "0.5"}}, Defaults(), Limits()).draw.fov == 0.5);  // render's limit: 0.001
   CHECK_FALSE(refused({{"fov", "179.5"}}).empty());
   CHECK_FALSE(refused({{"tonemap", "filmic"}}).empty());
   CHECK_FALSE(refused({{"ssaa", "0"}}).empty());
-  CHECK_FALSE(refused({{"ssaa", "5"}}).empty());
-  for (const char* size : {"15x100", "100x15", "4097x16", "16x4097", "100", "x100", "100x", "100.5x100", "axb"})
+  CHECK_FALSE(refused({{"ssaa", "9"}}).empty());
+  CHECK(ParseFrameRequest({{"size", "64x64"}, {"ssaa", "8"}}, Defaults(), Limits()).draw.ssaa == 8);  // as render's
+  CHECK(refused({{"size", "16385x16"}}) == "size=16385x16: refused (expected WxH, each 1..16384)");
+  CHECK(ParseFrameRequest({{"size", "8x16384"}}, Defaults(), Limits()).draw.width == 8);  // as render's
+  for (const char* size : {"0x100", "100x0", "16385x16", "16x16385", "100", "x100", "100x", "100.5x100", "axb"})
     CHECK_FALSE(refused({{"size", size}}).empty());
   CHECK(ParseFrameRequest({{"size", "4096x16"}, {"ssaa", "4"}}, Defaults(), Limits()).draw.width == 4096);
   CHECK(ParseFrameRequest({{"size", "4096x4096"}, {"ssaa", "1"}}, Defaults(), Limits()).draw.width == 4096);

@@ -115,10 +115,10 @@ TEST_CASE("prt view serves its page, its state and frames, and refuses everythin
   // Parameters out of range, unknown, twice, or unparsable: 400 naming the parameter.
   const std::pair<const char*, const char*> bad[] = {
       {"lmax=4", "lmax=4"},           {"lmax=-1", "lmax"},          {"size=100000x10", "size"},
-      {"size=8x8", "size"},           {"angle=nan", "angle"},       {"axis=0,0,0", "axis"},
+      {"size=0x8", "size"},           {"angle=nan", "angle"},       {"axis=0,0,0", "axis"},
       {"axis=1,2", "axis"},           {"view=transport:16", "view"}, {"view=lite", "view"},
       {"env=1", "env"},               {"mode=smooth", "mode"},      {"basis=pca", "basis"},
-      {"exposure=21", "exposure"},    {"fov=180", "fov"},           {"ssaa=5", "ssaa"},
+      {"exposure=21", "exposure"},    {"fov=180", "fov"},           {"ssaa=9", "ssaa"},
       {"tonemap=filmic", "tonemap"},  {"colour=red", "colour"},     {"lmax=1&lmax=2", "lmax"},
       {"eye=1,1,1&target=1,1,1", "eye"}};
   for (const auto& [query, named] : bad) {

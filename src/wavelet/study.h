@@ -1,6 +1,7 @@
 #pragma once
 /// \file
-/// The basis section of `prt report --basis wavelet`: spherical harmonics against Haar wavelets
+/// The wavelet basis's own study, which `prt report --basis wavelet` runs through the study
+/// interface (basis/study.h, WaveletBasisStudy below): spherical harmonics against Haar wavelets
 /// (all-frequency PRT [1], wavelet/transport.h) on one scene, each scored against
 /// prt reference's ground truth (precompute/reference.h) by the per-vertex relative RMS error of
 /// the outgoing radiance, beside what it costs: the transport's memory per vertex and its
@@ -15,11 +16,12 @@
 ///             bounced light in SH at `bounce_lmax` from `sh_samples` directions, whose floats are
 ///             counted too.
 /// Every run is timed whole (BVH build, rays, transform and selection, the bounce pass), the
-/// fastest of repeats as TimedTransport times (report_sweep.h). The light is the unturned
-/// environment: SH projected once at the highest lmax and cut to each run's bands; the cube
-/// resampled once (wavelet/light_cube.h) with every light coefficient kept.
+/// fastest of repeats as TimedTransport times (basis/timed_transport.h). The light is the
+/// unturned environment: SH projected once at the highest lmax and cut to each run's bands; the
+/// cube resampled once (wavelet/light_cube.h) with every light coefficient kept.
+/// study_write.cpp writes its report.md section, report.csv rows and basis_error.png.
 ///
-/// The stability suite (stability.h) uses the same measurement for its wavelet cases
+/// The stability suite (report/stability.h) uses the same measurement for its wavelet cases
 /// (WaveletAgreementCases below).
 ///
 /// References
@@ -27,17 +29,19 @@
 ///     Approximation", SIGGRAPH 2003.
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "basis/stability_case.h"
+#include "basis/study.h"
 #include "core/image.h"
 #include "env/environment.h"
 #include "geometry/mesh.h"
 #include "precompute/error_metrics.h"
 #include "precompute/transport.h"
-#include "wavelet/transport.h"
-#include "report/stability_case.h"
 #include "wavelet/selection.h"
+#include "wavelet/transport.h"
 
 namespace prt {
 
@@ -57,9 +61,9 @@ struct WaveletStudyConfig {
   bool progress = true;                                     ///< a run-summary line per reference and mode
 };
 
-/// The study `prt report --basis wavelet` runs: `quick` keeps it short (shadowed only, SH lmax
-/// 2, 4, 8 from 4096 directions, budgets 64, 256, 512 (the default) and 1024, a 4096-direction
-/// reference).
+/// The study `prt report --basis wavelet` runs (WaveletBasisStudy): `quick` keeps it short
+/// (shadowed only, SH lmax 2, 4, 8 from 4096 directions, budgets 64, 256, 512 (the default)
+/// and 1024, a 4096-direction reference).
 WaveletStudyConfig MakeWaveletStudyConfig(bool quick, int bounces, std::uint64_t seed);
 
 /// The scene the wavelet basis was measured on: a (2, 3) torus knot of `segments` x `sides`
@@ -103,10 +107,11 @@ WaveletStudy RunWaveletStudy(const Mesh& mesh, const Environment& env, const Wav
 
 /// The report.md section (heading, how to read it, the table, what equal memory buys).
 /// `times_trusted`: the report's timing found its times trustworthy (TimesTrusted,
-/// report_sweep.h); if not, the conclusion quotes rays traced per vertex instead of seconds, and
+/// report/report_sweep.h); if not, the conclusion quotes rays traced per vertex instead of seconds, and
 /// the table's seconds are marked untrusted, as error_vs_time.png turns to rays.
 std::string WaveletMarkdown(const WaveletStudy& study, bool times_trusted);
-/// report.csv rows in Csv's columns (report_write.cpp) plus basis, budget, bytes_per_vertex.
+/// report.csv rows in the report's columns (report/report_write.cpp) plus basis, budget,
+/// bytes_per_vertex.
 std::string WaveletCsvRows(const WaveletStudy& study);
 /// basis_error.png: error against bytes per vertex (left) and against seconds (right; rays traced
 /// per vertex when the times are not trusted), a line per basis and mode.
@@ -117,5 +122,15 @@ Image8 WaveletPlot(const WaveletStudy& study, bool times_trusted);
 /// default cube and budget (WaveletOptions' defaults), shadowed and with one bounce,
 /// against a 4096-direction reference (16 s on 2 cores, 10 of them the references).
 void WaveletAgreementCases(std::vector<StabilityCase>& out, int segments = 192, int sides = 20, int ground = 40);
+
+/// `study` as the report writes it (basis/study.h): its rows, WaveletMarkdown, WaveletCsvRows and
+/// WaveletPlot.
+std::unique_ptr<const StudyResults> WaveletStudyResults(WaveletStudy study);
+
+/// The study as the report sees it (basis/study.h), WaveletBasis's Study(): its own scene is
+/// MakeSunScene() (MakeSunScene(96, 12, 20) with --quick), its configuration
+/// MakeWaveletStudyConfig, its stability cases WaveletAgreementCases (on the measured scene
+/// unless a size is given).
+const BasisStudy& WaveletBasisStudy();
 
 }  // namespace prt

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// One case of the stability suite (stability.h): what it checks, its figure and its limit.
-/// The suite's inputs (stability_inputs.h) and the wavelet study (report_wavelet.h) make cases.
+/// One case of the stability suite (report/stability.h): what it checks, its figure and its
+/// limit. The suite's inputs (report/stability_inputs.h) and a basis's study (basis/study.h)
+/// make cases.
 
 #include <string>
 

@@ -1,4 +1,4 @@
-#include "report/markdown_table.h"
+#include "core/markdown_table.h"
 
 #include <stdexcept>
 

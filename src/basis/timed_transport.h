@@ -1,8 +1,9 @@
 #pragma once
 /// \file
-/// The transport timed as the report's studies time it (report_sweep.h, report_glossy.h,
-/// report_wavelet.h): a run repeated until the repeats together last long enough that the
-/// clock's resolution plays no part, its time the fastest repeat.
+/// The transport timed as the report's studies time it (report/report_sweep.h,
+/// report/report_glossy.h, and a basis's own study, basis/study.h, such as wavelet/study.h): a
+/// run repeated until the repeats together last long enough that the clock's resolution plays no
+/// part, its time the fastest repeat.
 
 #include "geometry/mesh.h"
 #include "precompute/transport.h"

@@ -1,12 +1,12 @@
-// The basis study's scene (report/report_wavelet.h): the knot's vertices first, standing on the
-// ground. (The whole study: test_basis_study.cpp; the command: test_report_wavelet_cli.cpp.)
+// The wavelet study's scene (wavelet/study.h): the knot's vertices first, standing on the ground.
+// (The whole study: test_study.cpp; the command: tests/report/test_report_wavelet_cli.cpp.)
 #include <doctest/doctest.h>
 
 #include <algorithm>
 
-#include "report/report_wavelet.h"
+#include "wavelet/study.h"
 
-TEST_SUITE("report") {
+TEST_SUITE("wavelet") {
   TEST_CASE("sun scene: the knot's vertices first, standing 2 units tall on the ground's plane") {
     // The study's probe vertices and the measured numbers of report.md were taken on this order:
     // the knot's (48 x 8) vertices, then the ground's (13 x 13) on y = 0.

@@ -1,4 +1,4 @@
-#include "report/timed_transport.h"
+#include "basis/timed_transport.h"
 
 #include <chrono>
 #include <limits>

@@ -1,11 +1,12 @@
-// The basis section of report.md, its report.csv rows and basis_error.png (report_wavelet.h).
+// The wavelet study's section of report.md, its report.csv rows and basis_error.png
+// (wavelet/study.h).
 #include <algorithm>
 #include <cstring>
 
+#include "core/markdown_table.h"
 #include "core/text.h"
 #include "raster/plot.h"
-#include "report/markdown_table.h"
-#include "report/report_wavelet.h"
+#include "wavelet/study.h"
 
 namespace prt {
 namespace {

@@ -1,4 +1,4 @@
-// The basis study of prt report --basis wavelet (report/report_wavelet.h), whole and in-process on
+// The wavelet study of prt report --basis wavelet (wavelet/study.h), whole and in-process on
 // a small scene: its numbers, its report.md section, report.csv rows and chart. A whole study:
 // the e2e tier's (tests/README.md, "Tiers"), as the studies `prt report` runs.
 #include <doctest/doctest.h>
@@ -13,10 +13,10 @@
 
 #include "env/procedural.h"
 #include "io/png_io.h"
-#include "wavelet/transport.h"
-#include "report/report_wavelet.h"
 #include "sh/coeffs.h"
 #include "tests/test_support.h"
+#include "wavelet/study.h"
+#include "wavelet/transport.h"
 
 namespace {
 
@@ -68,7 +68,7 @@ std::size_t Inked(const prt::Image8& im, int x0, int x1) {
 
 }  // namespace
 
-TEST_SUITE("report") {
+TEST_SUITE("wavelet") {
   /// The study's numbers: errors fall with lmax and budget, memory is what each basis stores.
   void CheckStudyNumbers() {
     const prt::WaveletStudy& s = SmallStudy();
