@@ -1,0 +1,21 @@
+# Reads the table of src/modules.cmake for scripts/check-includes.cmake and check-links.cmake:
+#   include(scripts/modules-table.cmake)   (ROOT set)
+# sets `known` (every folder in table order), `deps_<folder>` (the folders it may include) and
+# appends to `problems` each dependency not listed before its folder (a cycle, or no such folder).
+include("${ROOT}/src/modules.cmake")
+set(known "")
+foreach(entry IN LISTS PRT_MODULES)
+  if(NOT entry MATCHES "^([a-z_0-9]+):(.*)$")
+    message(FATAL_ERROR "src/modules.cmake: '${entry}' is not 'folder: dependencies'")
+  endif()
+  set(module "${CMAKE_MATCH_1}")
+  string(STRIP "${CMAKE_MATCH_2}" deps)
+  separate_arguments(deps UNIX_COMMAND "${deps}")
+  foreach(dep IN LISTS deps)
+    if(NOT dep IN_LIST known)
+      string(APPEND problems "src/modules.cmake: ${module} depends on ${dep}, which is not listed before it (a cycle, or no such folder)\n")
+    endif()
+  endforeach()
+  list(APPEND known "${module}")
+  set(deps_${module} "${deps}")
+endforeach()
