@@ -5,6 +5,7 @@
 #include "app/render_args.h"
 #include "core/atomic_file.h"
 #include "core/color.h"
+#include "bases/list.h"
 #include "basis/cache_plan.h"
 #include "core/log.h"
 #include "precompute_io/cpca_matrix_file.h"
@@ -33,6 +34,17 @@ Transport LuminanceMix(const Transport& t) {
     for (int c = 0; c < 3; ++c)
       for (std::size_t k = 0; k < n; ++k) mix.coeffs[v * n + k] += static_cast<float>(kLuminanceWeights[c]) * t.at(v, c)[k];
   return mix;
+}
+
+/// precompute's --basis: the bases that write the course's files, and where the others go.
+std::string CourseBasesHelp() {
+  std::string course, others;
+  for (const Basis* b : Bases()) {
+    std::string& list = b->Traits().course_files ? course : others;
+    list += (list.empty() ? "" : ", ") + b->Name();
+  }
+  return course + " only: the course's light.txt and transport.txt are SH coefficients (" + others +
+         ": render, demo and report take it)";
 }
 
 }  // namespace
@@ -66,8 +78,7 @@ CommandSpec PrecomputeSpec() {
                "triangles are other faces (render and reference take it)",
       o.default_text = "";
     else if (o.name == "--basis")
-      o.help = "sh only: the course's light.txt and transport.txt are SH coefficients (wavelet: render, demo and "
-               "report take it)";
+      o.help = CourseBasesHelp();
   return {"prt precompute [scene options] --out DIR",
           "Writes DIR/light.txt and DIR/transport.txt in the course's text format (GAMES202 homework 2: its WebGL "
           "framework loads them), and the binary cache DIR/transport.cache that render reuses.\n\n"

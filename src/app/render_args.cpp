@@ -34,6 +34,14 @@ std::string ViewText(const RenderOptions& o) {
   return o.view == View::kTransport ? "transport:" + std::to_string(o.transport_index) : ViewName(o.view);
 }
 
+/// --cache's default: each basis's file in the output folder, the default's first.
+std::string CacheDefaultText() {
+  std::string text;
+  for (const Basis* b : Bases())
+    text += text.empty() ? "DIR/" + b->CacheName() : "; DIR/" + b->CacheName() + " with --basis " + b->Name();
+  return text;
+}
+
 std::map<std::string, OptionSpec> RenderSpecs(const RenderJobOptions& job) {
   const RenderOptions& d = job.draw;
   const RenderOptions demo = WithDemoCamera({});  // the embedded scene's camera
@@ -106,7 +114,7 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderJobOptions& job) {
   add({"--cache", "PATH",
        "transport cache to reuse and update, so a re-run with the same mesh and options skips the precompute; "
        "`none` disables it; a path that cannot be used is a warning, not an error",
-       job.cache.empty() ? "DIR/transport.cache; DIR/wavelet.cache with --basis wavelet" : job.cache});
+       job.cache.empty() ? CacheDefaultText() : job.cache});
   return s;
 }
 

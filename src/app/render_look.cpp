@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "bases/list.h"
 #include "core/log.h"
 #include "core/text.h"
 
@@ -12,6 +13,15 @@ glm::dvec3 Vec(const double (&v)[3]) { return {v[0], v[1], v[2]}; }
 
 /// The highest band the course's viewer reads: 9 numbers a row.
 constexpr int kCourseLmax = 2;
+
+/// "--basis A or --basis B": the bases whose coefficients per vertex are SH transfer, as the course's
+/// files hold (`sh_transfer`), or the others.
+std::string BasesWhose(bool sh_transfer) {
+  std::string text;
+  for (const Basis* b : Bases())
+    if (b->Traits().coefficient_view == sh_transfer) text += (text.empty() ? "--basis " : " or --basis ") + b->Name();
+  return text;
+}
 
 }  // namespace
 
@@ -25,8 +35,9 @@ OptionSpec LookOption() {
               Formatted("%g", kCourseFov) +
               ": three.js's eye 0,0,100 and vertical fov 75 with the mesh placed as the framework places mary, "
               "translate 0,-35,0 and scale 20); frame 0 is the viewer's picture (its light does not turn). Options "
-              "given on the command line win over the look, each camera value on its own. Not with --basis wavelet "
-              "(the viewer reads SH files, which precompute writes with --basis sh only); with a glossy --material "
+              "given on the command line win over the look, each camera value on its own. Not with " +
+              BasesWhose(false) + " (the viewer reads SH files, which precompute writes with " + BasesWhose(true) +
+              " only); with a glossy --material "
               "a warning, and the picture shows the diffuse part, as the viewer does with transport.txt; with --lmax "
               "other than 2 a warning (the viewer reads 9 numbers a row). Coloured interreflection shows the exact "
               "per-channel transport, where the viewer loads transport.txt's luminance mix",

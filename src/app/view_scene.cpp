@@ -14,6 +14,7 @@
 #include "core/progress.h"
 #include "core/shell_word.h"
 #include "core/text.h"
+#include "precompute/transport_types.h"
 #include "raster/exposure.h"
 #include "render/render_frames.h"
 
@@ -22,9 +23,6 @@ namespace {
 
 /// JSON objects keep their keys in the order written: the page's tests find "key" before "state".
 using Json = nlohmann::ordered_json;
-
-/// The transport modes the page offers.
-const std::vector<std::string> kModes = {"unshadowed", "shadowed", "interreflection"};
 
 /// `v` rounded as printf's `format` rounds it, as a JSON number: the page reads the double that
 /// printf's text reads as (nlohmann may spell it longer, 79.48923979999999 for 79.4892398: its
@@ -104,7 +102,7 @@ ViewScene::ViewScene(ViewSetup setup) : setup_(std::move(setup)) {
   limits_.bases.push_back(setup_.scene.basis->Name());
   for (const Basis* b : Bases())
     if (b != setup_.scene.basis && (b->Traits().glossy || !setup_.scene.material.glossy)) limits_.bases.push_back(b->Name());
-  limits_.modes = kModes;
+  limits_.modes = TransportModeNames();  // every mode the page offers
   limits_.environments = static_cast<int>(envs_.size());
   limits_.coefficients = CoeffCount(setup_.scene.lmax);
   for (const Basis* b : Bases())  // the light terms of the bases that keep fewer than all
