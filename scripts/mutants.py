@@ -6,7 +6,8 @@
 
 Each mutant of tests/mutants.txt replaces one exact piece of a source file. The script copies
 the project to build-mutants/src (never touching the checkout), builds it once, then for each
-mutant: applies it, rebuilds, runs the test programs of every tier (unit, threads, e2e, readme: tests/README.md)
+mutant: applies it, rebuilds, runs the test programs of every tier (unit, threads, e2e, readme: tests/README.md;
+then any other prt_*_tests program, and the tests that are scripts, CTest label `script`)
 as a fresh clone would (PRT_SHARED_DATA=none, so the course data cannot be what catches it; tests that
 run with the data are a superset), stops at the first failure (its output is kept in build-mutants/log/), and restores the file. It prints CAUGHT or SURVIVED per mutant and
 exits 1 if any survived. A mutant whose text is no longer in its file is an error: the list
@@ -21,6 +22,7 @@ tests/mutants.txt holds blocks of the form
     replacement
     ===
 """
+import glob
 import os
 import subprocess
 import sys
@@ -94,15 +96,22 @@ def main():
     env = dict(os.environ, PRT_SHARED_DATA="none")
     env.pop("PRT_REQUIRE_SHARED_DATA", None)
     programs = [os.path.join(BUILD, f"prt_{tier}_tests") for tier in ("unit", "threads", "e2e", "readme")]
+    # Programs of a tier built with other sources (tests/basis: prt_stub_basis_tests), after those.
+    programs += sorted(p for p in glob.glob(os.path.join(BUILD, "prt_*_tests")) if p not in programs)
 
     def test():
-        """The programs in turn until one fails: the first failure's output."""
+        """The programs in turn until one fails, then the tests that are scripts, not cases of a
+        program (CTest label `script`): the first failure's output."""
         out = ""
         for program in programs:
             r = run([program, "--no-intro=true", "--abort-after=1", "--no-version=true"], env=env)
             out += r.stdout
             if r.returncode:
                 return subprocess.CompletedProcess(r.args, r.returncode, out)
+        r = run(["ctest", "--test-dir", BUILD, "-L", "^script$", "--output-on-failure"], env=env)
+        out += r.stdout
+        if r.returncode:
+            return subprocess.CompletedProcess(r.args, r.returncode, out)
         return subprocess.CompletedProcess(programs, 0, out)
 
     r = test()
