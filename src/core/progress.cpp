@@ -82,7 +82,13 @@ Progress::~Progress() {
 
 void Progress::Advance(std::size_t n) {
   const std::size_t done = done_ += n;
-  if (TheLatest().owner == this) TheLatest().done = done;  // a newer bar may have taken its place
+  // A newer bar may have taken its place. Threads finish their Advance in any order: the count
+  // read from the bar only grows (the largest one stored wins), so a reader never sees it go back.
+  if (Latest& latest = TheLatest(); latest.owner == this) {
+    std::size_t stored = latest.done.load();
+    while (stored < done && !latest.done.compare_exchange_weak(stored, done)) {
+    }
+  }
   if (!enabled_) return;
   const auto now = std::chrono::steady_clock::now();
   std::unique_lock<std::mutex> lock(mutex_, std::try_to_lock);
