@@ -142,7 +142,7 @@ void RenderJob(const SceneOptions& scene, const RenderJobOptions& job) {
     Summary("transport: none computed (--view light draws the light as the basis keeps it, not the mesh's transport)");
   const std::unique_ptr<PreparedBasis> basis = transport ? scene.basis->Prepare(inputs) : scene.basis->PrepareLight(inputs);
   const std::unique_ptr<FrameLight> light_of_frames =
-      basis->Light(*env, light, render.axis, scene.basis->LightTerms(scene.own()));
+      basis->Light(*env, light, render.axis, scene.basis->LightTerms(scene.own()), LightQuality::kStill);
   FrameLight& frame_light = *light_of_frames;
   std::unique_ptr<SingleFileOutput> radiance_outside;
   if (!job.vertex_radiance.empty())

@@ -135,7 +135,7 @@ ViewScene::ViewScene(ViewSetup setup) : setup_(std::move(setup)) {
     Frame(probe, &ms);
     std::lock_guard<std::mutex> lock(draw_mutex_);
     defaults_.draw.exposure = AutoExposureEv(
-        RasterizeFrame(rasterizer_, mesh_, *light_, *envs_[0], ChooseCamera(mesh_, probe.draw), probe.draw,
+        RasterizeFrame(rasterizer_, mesh_, FrameLightOf(probe, Find(defaults_.basis, defaults_.mode).get()), *envs_[0], ChooseCamera(mesh_, probe.draw), probe.draw,
                        probe.draw.start_degrees * kPi / 180.0, 0.0),
         defaults_.draw.tonemap);
     ReportAutoExposure(*defaults_.draw.exposure, "the first frame's mesh pixels");
@@ -196,6 +196,32 @@ const ShRgb& ViewScene::Light(int env, int lmax, View view, const SceneOptions& 
   return it->second;
 }
 
+FrameLight& ViewScene::FrameLightOf(const FrameRequest& request, const Prepared& slot) {
+  const bool bands = slot.scene.basis->Traits().light_bands;
+  const int computed = slot.scene.lmax;
+  const int lmax = bands ? std::min(request.lmax, computed) : computed;
+  const std::string key = Key(request.basis, request.mode) + " " + std::to_string(request.env) + " " +
+                          std::to_string(lmax) + " " + ViewName(request.draw.view) + " " +
+                          std::to_string(request.light_terms) + (request.interactive ? " interactive" : " still");
+  auto it = frame_lights_.find(key);
+  if (it == frame_lights_.end()) {
+    if (frame_lights_.size() >= kKeptLights) frame_lights_.clear();
+    // Bands above lmax zeroed: the frame of a transport computed at lmax.
+    ShRgb light = Light(request.env, lmax, request.draw.view, slot.scene);
+    light.resize(CoeffCount(computed), glm::dvec3(0.0));
+    const LightQuality quality = request.interactive ? LightQuality::kInteractive : LightQuality::kStill;
+    it = frame_lights_
+             .emplace(key, KeptLight{slot.basis->Light(*envs_[request.env], light, request.draw.axis,
+                                                       request.light_terms, quality),
+                                     request.draw.axis})
+             .first;
+  } else if (it->second.axis != request.draw.axis) {
+    it->second.light->SetAxis(request.draw.axis);
+    it->second.axis = request.draw.axis;
+  }
+  return *it->second.light;
+}
+
 Image8 ViewScene::Frame(const FrameRequest& request, double* draw_ms) {
   const Prepared* const slot = &Transport(request.basis, request.mode);
   if (request.draw.view == View::kTransport && !slot->scene.basis->Traits().coefficient_view)
@@ -203,22 +229,12 @@ Image8 ViewScene::Frame(const FrameRequest& request, double* draw_ms) {
                 DefaultBasis()->Name() + ")");
   const auto start = std::chrono::steady_clock::now();
   std::lock_guard<std::mutex> lock(draw_mutex_);
-  const bool bands = slot->scene.basis->Traits().light_bands;
-  const int computed = slot->scene.lmax;
-  const int lmax = bands ? std::min(request.lmax, computed) : computed;
-  const std::string key = Key(request.basis, request.mode) + " " + std::to_string(request.env) + " " +
-                          std::to_string(lmax) + " " + ViewName(request.draw.view) + " " + Vec(request.draw.axis) +
-                          " " + std::to_string(request.light_terms);
-  if (key != light_key_ || !light_) {
-    // Bands above lmax zeroed: the frame of a transport computed at lmax.
-    ShRgb light = Light(request.env, lmax, request.draw.view, slot->scene);
-    light.resize(CoeffCount(computed), glm::dvec3(0.0));
-    light_ = slot->basis->Light(*envs_[request.env], light, request.draw.axis, request.light_terms);
-    light_key_ = key;
-  }
-  const Camera camera = ChooseCamera(mesh_, request.draw);
-  ToneMapped toned = DrawFrame(rasterizer_, mesh_, *light_, *envs_[request.env], camera, request.draw,
-                               request.draw.start_degrees * kPi / 180.0, request.draw.exposure.value_or(0.0));
+  FrameLight& light = FrameLightOf(request, *slot);
+  RenderOptions draw = request.draw;
+  if (request.interactive) draw.ssaa = 1;
+  const Camera camera = ChooseCamera(mesh_, draw);
+  ToneMapped toned = DrawFrame(rasterizer_, mesh_, light, *envs_[request.env], camera, draw,
+                               draw.start_degrees * kPi / 180.0, draw.exposure.value_or(0.0));
   *draw_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return std::move(toned.image);
 }
@@ -265,7 +281,8 @@ std::string ViewScene::ErrorJson(const FrameRequest& r) {
   // This setting's radiance per vertex, the light unturned, against the reference's.
   ShRgb light = Light(r.env, lmax, View::kRadiance, slot->scene);
   light.resize(CoeffCount(computed), glm::dvec3(0.0));
-  const std::unique_ptr<FrameLight> frame_light = slot->basis->Light(*envs_[r.env], light, defaults_.draw.axis, r.light_terms);
+  const std::unique_ptr<FrameLight> frame_light =
+      slot->basis->Light(*envs_[r.env], light, defaults_.draw.axis, r.light_terms, LightQuality::kStill);
   frame_light->Turn(0.0);
   const glm::dvec3 eye(camera_.eye);
   const std::vector<glm::vec3> shaded = frame_light->Shade(mesh_, true, &eye);

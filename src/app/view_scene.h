@@ -7,8 +7,10 @@
 ///   lmax L <= the bands computed   the light's bands above L zeroed: SH bands nest, so this is
 ///                                   the frame of a transport computed at L with the same
 ///                                   directions (the command line gives them: --samples)
-///   another axis, env, lmax or      a new frame light of the same transport (PreparedBasis::relight)
-///   wavelet light terms
+///   another axis                    the kept frame light turned about it (FrameLight::SetAxis): a
+///                                   drag turns about a new axis at every move
+///   another env, lmax, wavelet      a new frame light of the same transport (PreparedBasis::Light),
+///   light terms or quality          kept for the next frames
 ///   another basis or mode           that transport computed in the background on first use
 ///                                   (409 for its frames meanwhile, progress in /state), then kept
 ///   the error against prt reference the reference's per-vertex radiance under the unturned
@@ -45,6 +47,10 @@ namespace prt {
 /// threads go to one job at a time and the others run alone (core/parallel.h), so more jobs at
 /// once would mostly contend for the same cores, and a page could start threads without bound.
 inline constexpr int kViewWorkers = 2;
+
+/// Frame lights kept between frames: a setting's still and interactive lights, and those of the
+/// one before (lmax or basis switched back and forth).
+inline constexpr std::size_t kKeptLights = 4;
 
 /// What `prt view` was given.
 struct ViewSetup {
@@ -105,10 +111,19 @@ class ViewScene : public ViewBackend {
   std::map<std::string, std::shared_future<Reference>> references_;  ///< by mode and env
   std::map<std::string, std::string> errors_;                        ///< ErrorJson by setting; under draw_mutex_
 
+  /// The frame light of one setting (all but the axis, which SetAxis changes).
+  struct KeptLight {
+    std::unique_ptr<FrameLight> light;
+    glm::dvec3 axis;
+  };
+  /// The frame light of `request`'s setting, turning about its axis.
+  FrameLight& FrameLightOf(const FrameRequest& request, const Prepared& slot);
+
   std::mutex draw_mutex_;  ///< one frame at a time: what follows is the frame loop's
   std::map<std::string, ShRgb> lights_;
-  std::string light_key_;
-  std::unique_ptr<FrameLight> light_;
+  /// The frame lights of the last settings drawn (a still and an interactive one of the same
+  /// setting alternate), at most kKeptLights.
+  std::map<std::string, KeptLight> frame_lights_;
   Rasterizer rasterizer_;
 
   /// Last, so destroyed first: its destructor waits for the running jobs, which read the members

@@ -83,9 +83,9 @@ class PreparedBasis {
   /// A frame light under environment `env` (whose SH projection, windowed as the frames need,
   /// is `light`) turning about `axis`. `light_terms` of the light's coefficients are kept each
   /// frame (0: all; a basis that always keeps all ignores it). `env` and this object must
-  /// outlive the result.
+  /// outlive the result. `quality` kInteractive allows a coarser light (basis/frame_light.h).
   virtual std::unique_ptr<FrameLight> Light(const Environment& env, const ShRgb& light, const glm::dvec3& axis,
-                                            int light_terms) const = 0;
+                                            int light_terms, LightQuality quality) const = 0;
 };
 
 class Basis {

@@ -10,7 +10,9 @@
 ///             cube, its Haar coefficients, each vertex a sparse dot product.
 ///
 /// Turn(angle) is called once per frame with the absolute angle (no accumulated drift); the
-/// other calls read the light it left.
+/// other calls read the light it left. SetAxis changes the axis of the turns that follow, keeping
+/// what the light keeps of its environment: the next Turn gives the bytes of a light made with
+/// that axis (prt view's drag turns about a new axis every move).
 
 #include <cstddef>
 #include <vector>
@@ -21,11 +23,19 @@
 
 namespace prt {
 
+/// What a frame light may trade for time. kStill is the light `prt render` draws with; kInteractive
+/// is prt view's while the light or the camera moves, followed by a still frame once they stop: a
+/// basis may keep its light coarser then (the wavelets gather the environment into fewer cells,
+/// wavelet/light_cube.h), never with less energy.
+enum class LightQuality { kStill, kInteractive };
+
 class FrameLight {
  public:
   virtual ~FrameLight() = default;
   /// Turns the light by `angle` radians about the axis it was made with: L'(d) = L(R^T d).
   virtual void Turn(double angle) = 0;
+  /// The turns that follow go about `axis` (non-zero); call Turn before reading the light again.
+  virtual void SetAxis(const glm::dvec3& axis) = 0;
   /// Per-vertex linear RGB radiance toward `eye` (without `albedo`: as if every albedo were 1 and
   /// the material diffuse).
   virtual std::vector<glm::vec3> Shade(const Mesh& mesh, bool albedo, const glm::dvec3* eye) const = 0;

@@ -18,6 +18,7 @@ class ShFrameLight : public FrameLight {
         lit_(light_) {}
 
   void Turn(double angle) override { lit_ = rotation_.Rotate(light_, angle); }
+  void SetAxis(const glm::dvec3& axis) override { rotation_ = AxisRotation(axis, transport_.lmax); }
   std::vector<glm::vec3> Shade(const Mesh& mesh, bool albedo, const glm::dvec3* eye) const override {
     if (cpca_ && albedo && transport_.material.glossy) return ShadeVerticesCpca(mesh, transport_, *cpca_, lit_, albedo, Eye(eye));
     return ShadeVertices(mesh, transport_, lit_, albedo, eye);

@@ -20,8 +20,8 @@ class ShPrepared : public PreparedBasis {
   CpcaTransfer cpca;
   bool compressed = false;
 
-  std::unique_ptr<FrameLight> Light(const Environment&, const ShRgb& light, const glm::dvec3& axis,
-                                    int) const override {
+  std::unique_ptr<FrameLight> Light(const Environment&, const ShRgb& light, const glm::dvec3& axis, int,
+                                    LightQuality) const override {
     return MakeShFrameLight(transport, light, axis, compressed ? &cpca : nullptr);
   }
 };

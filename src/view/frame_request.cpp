@@ -114,8 +114,9 @@ FrameRequest ParseFrameRequest(const std::vector<std::pair<std::string, std::str
     else if (name == "size") ReadSize(value, d);
     else if (name == "ssaa") d.ssaa = Integer(name, value, 1, kMaxSsaa);
     else if (name == "terms") r.light_terms = Integer(name, value, 0, limits.light_terms);
+    else if (name == "quality") r.interactive = OneOf(name, value, {"still", "interactive"}) == "interactive";
     else throw Error(name + ": unknown parameter (expected axis, angle, lmax, basis, mode, env, view, exposure, "
-                            "tonemap, eye, target, up, fov, size, ssaa, terms)");
+                            "tonemap, eye, target, up, fov, size, ssaa, terms, quality)");
   }
   if (double(d.width) * d.height * d.ssaa * d.ssaa > kMaxViewSamples)
     throw Error("size=" + std::to_string(d.width) + "x" + std::to_string(d.height) + "&ssaa=" + std::to_string(d.ssaa) +
@@ -140,7 +141,7 @@ std::string FrameQuery(const FrameRequest& r) {
   if (d.up) q += "&up=" + Vec(*d.up);
   if (d.fov) q += Formatted("&fov=%.17g", *d.fov);
   q += "&size=" + std::to_string(d.width) + "x" + std::to_string(d.height) + "&ssaa=" + std::to_string(d.ssaa) +
-       "&terms=" + std::to_string(r.light_terms);
+       "&terms=" + std::to_string(r.light_terms) + "&quality=" + (r.interactive ? "interactive" : "still");
   return q;
 }
 

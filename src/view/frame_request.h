@@ -14,6 +14,9 @@
 ///   eye=, target=, up=X,Y,Z fov=DEGREES   the camera (fov 0.001..179)
 ///   terms=K                    the wavelet light's coefficients kept per frame, 0 (all)..6 F^2
 ///   size=WxH ssaa=K            1..16384 each; 1..8; W x H x K^2 at most 4096^2 samples
+///   quality=Q                  still (the frame prt render draws) | interactive: drawn at ssaa 1
+///                              with the basis's interactive light (basis/frame_light.h), for the
+///                              frames shown while the light or the camera moves
 ///
 /// The limits are render's (render/frame_limits.h), but for the samples of a frame: the view's
 /// own budget, kMaxViewSamples.
@@ -43,6 +46,7 @@ struct FrameRequest {
   std::string basis, mode;
   int env = 0;
   int light_terms = 0;  ///< the wavelet light's terms kept per frame (0: all)
+  bool interactive = false;  ///< quality=interactive: ssaa 1 and the basis's interactive light
 };
 
 /// `defaults` with the parameters of `query` (name, value pairs in order) applied and checked.

@@ -1,6 +1,13 @@
 #include "view/view_server.h"
 
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
 #include <exception>
+#include <map>
+#include <mutex>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -8,9 +15,12 @@
 #include <sys/socket.h>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "io/png_io.h"
+#include "view/frame_stream.h"
 #include "view/page.h"
 #include "view/request_guard.h"
+#include "view/stream_record.h"
 
 namespace prt {
 namespace {
@@ -33,11 +43,77 @@ std::vector<std::pair<std::string, std::string>> Query(const httplib::Request& r
   return {req.params.begin(), req.params.end()};
 }
 
+/// A stream's name: the page's own random one, 16 to 64 hexadecimal digits.
+std::string StreamName(const httplib::Request& req) {
+  const std::string id = req.get_param_value("stream");
+  const bool hex = std::all_of(id.begin(), id.end(), [](char c) { return std::isxdigit(static_cast<unsigned char>(c)); });
+  if (id.size() < 16 || id.size() > 64 || !hex)
+    throw Error("stream=" + id + ": refused (expected the page's stream name, 16 to 64 hexadecimal digits)");
+  return id;
+}
+
+/// A count the page sends (input=, shown=): a whole number 0..2^53.
+std::uint64_t Count(const std::string& name, const std::string& value) {
+  const std::optional<double> x = ParseNumber(value);
+  if (!x || *x < 0 || *x > 9007199254740992.0 || *x != std::floor(*x))
+    throw Error(name + "=" + value + ": refused (expected a whole number)");
+  return static_cast<std::uint64_t>(*x);
+}
+
+/// The frame query of a stream request: its parameters but stream=, input= and shown=.
+std::vector<std::pair<std::string, std::string>> FrameParams(const httplib::Request& req) {
+  std::vector<std::pair<std::string, std::string>> query;
+  for (const auto& [name, value] : req.params)
+    if (name != "stream" && name != "input" && name != "shown") query.emplace_back(name, value);
+  return query;
+}
+
 }  // namespace
+
+/// The open streams by name. A page that reconnects under the same name replaces its old stream
+/// (stopped); Close forgets a stream when its response ends, unless it was replaced.
+class ViewServer::Streams {
+ public:
+  void Open(const std::string& name, const std::shared_ptr<FrameStream>& stream) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (closed_) throw Error("the server is stopping");
+    auto it = open_.find(name);
+    if (it != open_.end()) {
+      it->second->Stop();
+      it->second = stream;
+      return;
+    }
+    if (open_.size() >= kMaxStreams)
+      throw Error("stream: refused (" + std::to_string(kMaxStreams) + " streams are open, the most served at once)");
+    open_.emplace(name, stream);
+  }
+  std::shared_ptr<FrameStream> Find(const std::string& name) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = open_.find(name);
+    return it == open_.end() ? nullptr : it->second;
+  }
+  void Close(const std::string& name, const FrameStream* stream) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const auto it = open_.find(name);
+    if (it != open_.end() && it->second.get() == stream) open_.erase(it);
+  }
+  /// Stops every stream, and those opened later at once.
+  void StopAll() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    closed_ = true;
+    for (auto& [name, stream] : open_) stream->Stop();
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  std::map<std::string, std::shared_ptr<FrameStream>> open_;
+  bool closed_ = false;
+};
 
 struct ViewServer::Impl {
   httplib::Server server;
   std::vector<std::string> hosts;
+  Streams streams;
 };
 
 ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
@@ -103,6 +179,54 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
   };
   s.Get("/frame", guarded([frame](const httplib::Request& req, httplib::Response& res) { frame(req, false, res); }));
   s.Get("/frame.png", guarded([frame](const httplib::Request& req, httplib::Response& res) { frame(req, true, res); }));
+  // The stream of frames (view/frame_stream.h): each draw and send on this connection's thread,
+  // every write bounded by the write timeout, so a page that stops reading frees it.
+  s.Get("/stream", guarded([this, &backend](const httplib::Request& req, httplib::Response& res) {
+          const std::string name = StreamName(req);
+          const std::uint64_t input = req.has_param("input") ? Count("input", req.get_param_value("input")) : 0;
+          auto stream = std::make_shared<FrameStream>(
+              ParseFrameRequest(FrameParams(req), backend.Defaults(), backend.Limits()), input);
+          impl_->streams.Open(name, stream);
+          res.set_header("Cache-Control", "no-store");
+          res.set_chunked_content_provider(
+              "application/octet-stream",
+              [stream, &backend](std::size_t, httplib::DataSink& sink) {
+                FrameStream::Job job;
+                switch (stream->Next(job)) {
+                  case FrameStream::Step::kStopped:
+                    sink.done();
+                    return true;
+                  case FrameStream::Step::kKeepAlive: {
+                    const std::string record = KeepAliveRecord();
+                    return sink.write(record.data(), record.size());
+                  }
+                  case FrameStream::Step::kDraw:
+                    break;
+                }
+                std::string record;
+                try {
+                  double ms = 0.0;
+                  const Image8 image = backend.Frame(job.request, &ms);
+                  record = FrameRecord(image, job.frame, job.input, ms, !job.request.interactive);
+                } catch (const std::exception& e) {  // NotReady, Error: the page shows why
+                  record = ErrorRecord(job.frame, job.input, e.what());
+                }
+                return sink.write(record.data(), record.size());
+              },
+              [this, name, raw = stream.get()](bool) { impl_->streams.Close(name, raw); });
+        }));
+  s.Post("/input", guarded([this, &backend](const httplib::Request& req, httplib::Response& res) {
+           const std::shared_ptr<FrameStream> stream = impl_->streams.Find(StreamName(req));
+           if (!stream) return Text(res, 404, "stream: not open (it ended: the page opens another)");
+           if (req.has_param("shown")) stream->Shown(Count("shown", req.get_param_value("shown")));
+           if (req.has_param("input")) {
+             const std::uint64_t input = Count("input", req.get_param_value("input"));
+             stream->Want(ParseFrameRequest(FrameParams(req), backend.Defaults(), backend.Limits()), input);
+           } else if (!FrameParams(req).empty()) {
+             throw Error(FrameParams(req).front().first + ": a frame parameter without input= (expected input=N with them)");
+           }
+           res.status = 204;
+         }));
   s.Get("/command", guarded([&backend](const httplib::Request& req, httplib::Response& res) {
           const FrameRequest request = ParseFrameRequest(Query(req), backend.Defaults(), backend.Limits());
           res.set_content(backend.Command(request) + "\n", "text/plain; charset=utf-8");
@@ -161,6 +285,9 @@ std::string ViewServer::Address() const {
 
 void ViewServer::Serve() { impl_->server.listen_after_bind(); }
 
-void ViewServer::Stop() { impl_->server.stop(); }
+void ViewServer::Stop() {
+  impl_->streams.StopAll();
+  impl_->server.stop();
+}
 
 }  // namespace prt

@@ -9,6 +9,12 @@
 ///                         top; its size and the time it took to draw in the headers
 ///                         X-Prt-Size (WxH) and X-Prt-Draw-Ms
 ///   GET  /frame.png?QUERY the same frame as a PNG file, to save
+///   GET  /stream?stream=NAME&input=N&QUERY   the page's frames, pushed as they are drawn on one
+///                         response (view/frame_stream.h; records: view/stream_record.h),
+///                         starting with QUERY as input N; at most kMaxStreams open at once (400
+///                         beyond); a stream opened again under its NAME replaces the old one
+///   POST /input?stream=NAME&shown=F[&input=N&QUERY]   the page has shown frame F; it now wants
+///                         QUERY (input N): 204, 404 for a stream not open
 ///   GET  /command?QUERY   the `prt render` command line that draws the same frame
 ///   POST /compute?basis=B&mode=M   starts computing that transport (202), progress in /state
 ///   POST /reference?mode=M&env=I   starts measuring prt reference's radiance for them (202)
@@ -59,6 +65,9 @@ class ViewBackend {
   virtual std::string Command(const FrameRequest& request) const = 0;
 };
 
+/// Streams open at once: a page keeps one; more would each hold a pool thread (kPoolThreads).
+inline constexpr std::size_t kMaxStreams = 8;
+
 class ViewServer {
  public:
   /// Binds `bind`:`port` (0: any free port); throws Error when it cannot.
@@ -75,6 +84,7 @@ class ViewServer {
   void Stop();
 
  private:
+  class Streams;
   struct Impl;
   std::unique_ptr<Impl> impl_;
   std::string bind_;

@@ -14,10 +14,10 @@ namespace {
 class WaveletFrameLight : public FrameLight {
  public:
   WaveletFrameLight(const WaveletTransport& transport, const Environment& env, const ShRgb& sh_light,
-                    const glm::dvec3& axis, int light_terms, Selection selection)
+                    const glm::dvec3& axis, int light_terms, Selection selection, int cells)
       : transport_(transport),
         grid_(transport.face_size),
-        cube_(env, grid_),
+        cube_(env, grid_, cells),
         axis_(glm::normalize(axis)),
         light_terms_(light_terms),
         weights_(SelectionWeights(transport.face_size, selection)),
@@ -31,6 +31,10 @@ class WaveletFrameLight : public FrameLight {
     light_ = TurnedWaveletLight(cube_, AxisAngle(axis_, angle), light_terms_, weights_, base_.get(), kept_);
     CubeFromHaar(grid_.size(), kept_);  // the kept light back on the texels, for Kept()
     if (!sh_light_.empty()) lit_sh_ = rotation_.Rotate(sh_light_, angle);
+  }
+  void SetAxis(const glm::dvec3& axis) override {
+    axis_ = glm::normalize(axis);
+    rotation_ = AxisRotation(axis, transport_.bounce.coeffs.empty() ? 0 : transport_.bounce.lmax);
   }
   std::vector<glm::vec3> Shade(const Mesh& mesh, bool albedo, const glm::dvec3*) const override {
     return ShadeWavelet(mesh, transport_, light_, lit_sh_, albedo);
@@ -65,8 +69,8 @@ class WaveletFrameLight : public FrameLight {
 
 std::unique_ptr<FrameLight> MakeWaveletFrameLight(const WaveletTransport& transport, const Environment& env,
                                                   const ShRgb& sh_light, const glm::dvec3& axis, int light_terms,
-                                                  Selection selection) {
-  return std::make_unique<WaveletFrameLight>(transport, env, sh_light, axis, light_terms, selection);
+                                                  Selection selection, int cells) {
+  return std::make_unique<WaveletFrameLight>(transport, env, sh_light, axis, light_terms, selection, cells);
 }
 
 }  // namespace prt

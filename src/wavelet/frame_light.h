@@ -23,11 +23,18 @@
 
 namespace prt {
 
+/// The light cube's cells a texel along each side at interactive quality (basis/frame_light.h),
+/// against LightCube::kFineCells at still quality. The energy is kept exactly at any count; a
+/// frame's light costs about the square of the count. Measured (Intel Xeon, AVX-512, 2 vCPUs; the
+/// demo scene, F 32, 640x480 in prt view): a frame's draw 30 ms at 8 cells, [TBD] ms at 2.
+inline constexpr int kInteractiveCells = 2;
+
 /// Wavelets: `transport` under `env` turned about `axis`, `sh_light` lighting its bounces (may
 /// be empty without them); `light_terms` > 0 keeps only that many light coefficients per frame,
-/// chosen by `selection`. `env` and `transport` must outlive the result.
+/// chosen by `selection`; the environment gathered into `cells` x `cells` cells a texel
+/// (LightCube; 0: its default). `env` and `transport` must outlive the result.
 std::unique_ptr<FrameLight> MakeWaveletFrameLight(const WaveletTransport& transport, const Environment& env,
                                                   const ShRgb& sh_light, const glm::dvec3& axis, int light_terms,
-                                                  Selection selection);
+                                                  Selection selection, int cells = 0);
 
 }  // namespace prt

@@ -37,9 +37,10 @@ class WaveletPrepared : public PreparedBasis {
   WaveletTransport transport;
   Selection light_selection = WaveletOptions{}.light_selection;
 
-  std::unique_ptr<FrameLight> Light(const Environment& env, const ShRgb& light, const glm::dvec3& axis,
-                                    int light_terms) const override {
-    return MakeWaveletFrameLight(transport, env, light, axis, light_terms, light_selection);
+  std::unique_ptr<FrameLight> Light(const Environment& env, const ShRgb& light, const glm::dvec3& axis, int light_terms,
+                                    LightQuality quality) const override {
+    return MakeWaveletFrameLight(transport, env, light, axis, light_terms, light_selection,
+                                 quality == LightQuality::kInteractive ? kInteractiveCells : 0);
   }
 };
 

@@ -15,6 +15,7 @@ class GivenCoefficients : public FrameLight {
  public:
   explicit GivenCoefficients(std::vector<std::vector<double>> rows) : rows_(std::move(rows)) {}
   void Turn(double) override {}
+  void SetAxis(const glm::dvec3&) override {}
   std::vector<glm::vec3> Shade(const Mesh&, bool, const glm::dvec3*) const override { return {}; }
   bool HasGlossy() const override { return false; }
   std::vector<glm::vec3> Glossy(const Mesh&, const glm::dvec3*) const override { return {}; }

@@ -9,17 +9,26 @@ const $ = (id) => document.getElementById(id);
 
 const view = {
   state: null,            // /state: limits and the first frame
-  q: [0, 0, 0, 1],        // the light's rotation as a unit quaternion (x, y, z, w)
-  axis: [0, 1, 0],        // the rotation's axis, kept when the rotation is the identity
+  turn: { axis: [0, 1, 0], angle: 0 },  // the light's rotation: degrees about a unit axis
   playing: false,
   camera: null,           // {eye, target, up, fov}
   dirty: true,            // the picture is not the one the controls ask for
-  inflight: false,
-  pendingInput: null,     // time of the oldest input the next frame answers
+  input: 0,               // the newest input's number (each change of a control or the light)
+  inputs: [],             // [number, time, query] of the inputs no frame has answered yet
+  posted: 0,              // the newest input sent to the server
+  answered: 0,            // the input the picture answers
+  stream: null,           // the open stream's name
+  streams: 0,             // streams opened (a reconnect opens another)
+  frame: 0,               // the number of the frame on the page, in its stream
+  shown: 0,               // the same, as told to the server
+  outOfOrder: 0,          // frames that came after a later one (never, on one stream)
+  still: false,           // the picture is at still quality (what prt render draws)
   framesDrawn: 0,
   frameTimes: [],         // when each of the last frames was drawn, for the frame rate
   latencies: [],          // input to picture, ms
   lastQuery: '',
+  transport: null,        // {basis, mode} drawn: the controls' choice once it is computed
+  choice: 0,              // counts the basis and mode choices, the newest wins
 };
 window.prtView = view;   // for tests and the benchmark
 
@@ -47,14 +56,17 @@ function rotate(v, axis, degrees) {  // Rodrigues
   return [0, 1, 2].map((i) => v[i] * c + kx[i] * s + k[i] * d * (1 - c));
 }
 
-// The light's rotation as axis and angle in degrees (what prt render's --axis and --start-angle take).
-function axisAngle() {
-  let [x, y, z, w] = view.q;
+// The light's rotation as axis and angle in degrees (what prt render's --axis and --start-angle
+// take), kept as such: playing and the turn slider change the angle about the same axis, exactly,
+// so the server's frame light keeps its axis; a drag composes rotations and finds a new axis.
+function axisAngle() { return view.turn; }
+
+function turnFromQuat(q) {
+  let [x, y, z, w] = q;
   if (w < 0) { x = -x; y = -y; z = -z; w = -w; }
   const s = Math.hypot(x, y, z);
-  if (s < 1e-12) return { axis: view.axis, angle: 0 };
-  view.axis = [x / s, y / s, z / s];
-  return { axis: view.axis, angle: 2 * Math.atan2(s, w) * 180 / Math.PI };
+  if (s < 1e-12) return { axis: view.turn.axis, angle: 0 };
+  return { axis: [x / s, y / s, z / s], angle: 2 * Math.atan2(s, w) * 180 / Math.PI };
 }
 
 function fmt(v) { return v.map((x) => Number(x.toPrecision(12))).join(','); }
@@ -66,7 +78,7 @@ function query() {
   if (viewName === 'transport') viewName = 'transport:' + Math.max(0, Math.floor(Number($('coef').value) || 0));
   const params = [
     ['axis', fmt(axis)], ['angle', String(Number(angle.toPrecision(12)))], ['lmax', $('lmax').value],
-    ['basis', $('basis').value], ['mode', $('mode').value], ['env', $('env').value], ['view', viewName],
+    ['basis', view.transport.basis], ['mode', view.transport.mode], ['env', $('env').value], ['view', viewName],
     ['exposure', $('exposure').value], ['tonemap', $('tonemap').value],
     ['eye', fmt(view.camera.eye)], ['target', fmt(view.camera.target)], ['up', fmt(view.camera.up)],
     ['fov', String(view.camera.fov)], ['size', d.width + 'x' + d.height],
@@ -79,13 +91,13 @@ function status(text) { $('status').textContent = text; }
 // The setting's error against prt reference, when the run has measured that reference (the
 // light unturned: the figure belongs to the setting, not to the frame).
 async function updateError() {
-  const key = $('mode').value + ' ' + $('env').value;
-  const setting = key + ' ' + $('basis').value + ' ' + $('lmax').value + ' ' + $('terms').value;
+  const key = view.transport.mode + ' ' + $('env').value;
+  const setting = key + ' ' + view.transport.basis + ' ' + $('lmax').value + ' ' + $('terms').value;
   if (setting === view.errorSetting) return;
   view.errorSetting = setting;
   const state = await (await fetch('/state')).json();
   const ref = state.references.find((x) => x.key === key);
-  const t = state.transports.find((x) => x.key === $('basis').value + ' ' + $('mode').value);
+  const t = state.transports.find((x) => x.key === view.transport.basis + ' ' + view.transport.mode);
   if (!ref || ref.state !== 'ready' || !t || t.state !== 'ready') {
     $('error').textContent = 'error against prt reference: ' +
       (ref && ref.state === 'measuring' ? 'measuring ...' : ref && ref.error ? ref.error : 'not measured for this mode and environment');
@@ -94,14 +106,14 @@ async function updateError() {
   }
   const e = await (await fetch('/error?' + query())).json();
   $('error').textContent = 'error against prt reference: ' + (100 * e.error).toFixed(2) + ' % RMS over ' + e.vertices +
-    ' vertices (' + $('basis').value + (($('basis').value === 'sh') ? ' lmax ' + e.lmax : '') + ', ' + $('mode').value +
+    ' vertices (' + view.transport.basis + ((view.transport.basis === 'sh') ? ' lmax ' + e.lmax : '') + ', ' + view.transport.mode +
     ', the light unturned); the reference\'s own error ' + (100 * e.reference_error).toFixed(2) + ' % at ' + e.samples +
     ' directions a vertex';
   view.error = e;
 }
 
 async function measure() {
-  const mode = $('mode').value, env = $('env').value;
+  const mode = view.transport.mode, env = $('env').value;
   await fetch('/reference?mode=' + mode + '&env=' + env, { method: 'POST' });
   for (;;) {
     const state = await (await fetch('/state')).json();
@@ -116,14 +128,19 @@ async function measure() {
 }
 
 function changed() {
+  view.input++;
+  view.inputs.push([view.input, performance.now(), query()]);
+  if (view.inputs.length > 200) view.inputs.shift();
   view.dirty = true;
-  if (view.pendingInput === null) view.pendingInput = performance.now();
   const { axis, angle } = axisAngle();
   $('angletext').textContent = angle.toFixed(1);
+  if (document.activeElement !== $('angle')) $('angle').value = String(((angle % 360) + 360) % 360);
   $('axistext').textContent = axis.map((x) => x.toFixed(3)).join(',');
   $('lmaxtext').textContent = $('lmax').value;
   $('exposuretext').textContent = Number($('exposure').value).toFixed(1);
   $('save').href = '/frame.png?' + query();
+  $('command').classList.add('stale');
+  sendInput();
   updateError();
 }
 
@@ -132,76 +149,174 @@ function median(xs) {
   return s.length ? s[Math.floor(s.length / 2)] : NaN;
 }
 
-async function drawFrame() {
-  view.inflight = true;
-  view.dirty = false;
-  const input = view.pendingInput;
-  view.pendingInput = null;
-  const q = query();
-  const t0 = performance.now();
+// The frame stream (GET /stream, src/view/frame_stream.h): the server pushes each frame as soon
+// as it is drawn, the next drawn while the last travels; the page says what it wants (POST
+// /input, one at a time, the newest) and which frame it has shown, so the server never draws
+// more than two frames ahead of the picture. Records: src/view/stream_record.h.
+const HEADER = 32;
+
+function randomName() {
+  const bytes = new Uint8Array(16);
+  crypto.getRandomValues(bytes);
+  return Array.from(bytes, (b) => b.toString(16).padStart(2, '0')).join('');
+}
+
+async function sendInput() {
+  if (!view.stream) return;
+  if (view.posting) { view.postAgain = true; return; }
+  view.posting = true;
   try {
-    const res = await fetch('/frame?' + q);
-    if (!res.ok) {
-      status('frame: ' + (await res.text()).trim());
-      return;
-    }
-    const [w, h] = res.headers.get('X-Prt-Size').split('x').map(Number);
-    const rgb = new Uint8Array(await res.arrayBuffer());
-    const canvas = $('frame');
-    if (canvas.width !== w || canvas.height !== h) { canvas.width = w; canvas.height = h; }
-    const ctx = canvas.getContext('2d');
-    const image = ctx.createImageData(w, h);
-    const out = image.data;
-    for (let i = 0, j = 0; i < rgb.length; i += 3, j += 4) {
-      out[j] = rgb[i]; out[j + 1] = rgb[i + 1]; out[j + 2] = rgb[i + 2]; out[j + 3] = 255;
-    }
-    ctx.putImageData(image, 0, 0);
-    const now = performance.now();
-    view.lastQuery = q;
-    view.framesDrawn++;
-    view.frameTimes.push(now);
-    while (view.frameTimes.length && now - view.frameTimes[0] > 1000) view.frameTimes.shift();
-    if (input !== null) {
-      view.latencies.push(now - input);
-      if (view.latencies.length > 50) view.latencies.shift();
-    }
-    $('drawms').textContent = Number(res.headers.get('X-Prt-Draw-Ms')).toFixed(1);
-    $('tripms').textContent = (now - t0).toFixed(1);
-    $('inputms').textContent = view.latencies.length ? median(view.latencies).toFixed(1) : '-';
-    if (!status.busy) status('');
+    do {
+      view.postAgain = false;
+      const fresh = view.input > view.posted;
+      const shown = view.shown;
+      const url = '/input?stream=' + view.stream + '&shown=' + shown +
+        (fresh ? '&input=' + view.input + '&' + query() : '');
+      const sentInput = view.input;
+      const res = await fetch(url, { method: 'POST' });
+      if (res.status === 404) { openStream(); return; }
+      if (!res.ok) status('input: ' + (await res.text()).trim());
+      if (fresh) view.posted = sentInput;
+    } while (view.postAgain || view.input > view.posted);
   } catch (e) {
-    status('frame: ' + e);
+    status('input: ' + e);
   } finally {
-    view.inflight = false;
+    view.posting = false;
   }
 }
+
+function fieldsOf(bytes) {
+  const d = new DataView(bytes.buffer, bytes.byteOffset, HEADER);
+  const f = [];
+  for (let i = 4; i < HEADER; i += 4) f.push(d.getUint32(i, true));
+  return { kind: String.fromCharCode(bytes[0], bytes[1], bytes[2], bytes[3]), f };
+}
+
+function showFrame(h, pixels) {
+  const [frame, input, w, hgt, drawUs, flags] = h.f;
+  const canvas = $('frame');
+  if (canvas.width !== w || canvas.height !== hgt) { canvas.width = w; canvas.height = hgt; }
+  canvas.getContext('2d').putImageData(new ImageData(pixels, w, hgt), 0, 0);
+  const now = performance.now();
+  if (frame <= view.frame) view.outOfOrder++;
+  view.frame = frame;
+  view.answered = input;
+  view.still = (flags & 1) === 1;
+  view.dirty = input < view.input;
+  view.framesDrawn++;
+  view.frameTimes.push(now);
+  while (view.frameTimes.length && now - view.frameTimes[0] > 1000) view.frameTimes.shift();
+  let first = null;
+  while (view.inputs.length && view.inputs[0][0] <= input) first = first || view.inputs[0], view.lastQuery = view.inputs.shift()[2];
+  if (first) {
+    view.latencies.push(now - first[1]);
+    if (view.latencies.length > 50) view.latencies.shift();
+  }
+  const times = view.frameTimes;
+  $('fps').textContent = times.length > 1 ? ((times.length - 1) * 1000 / (times[times.length - 1] - times[0])).toFixed(1) : '-';
+  $('drawms').textContent = (drawUs / 1000).toFixed(1);
+  $('inputms').textContent = view.latencies.length ? median(view.latencies).toFixed(1) : '-';
+  $('quality').textContent = view.still ? 'still' : 'interactive';
+  if (!status.busy) status('');
+  view.shown = frame;
+  sendInput();
+}
+
+async function openStream() {
+  const name = randomName();
+  view.stream = null;
+  view.frame = 0;
+  view.shown = 0;
+  view.posted = view.input;
+  let res;
+  try {
+    res = await fetch('/stream?stream=' + name + '&input=' + view.input + '&' + query());
+  } catch (e) {
+    status('stream: ' + e + ' (trying again)');
+    setTimeout(openStream, 1000);
+    return;
+  }
+  if (!res.ok) { status('stream: ' + (await res.text()).trim()); setTimeout(openStream, 1000); return; }
+  view.stream = name;
+  view.streams++;
+  const reader = res.body.getReader();
+  let header = new Uint8Array(HEADER), have = 0, h = null, body = null, at = 0;
+  try {
+    for (;;) {
+      const { value, done } = await reader.read();
+      if (done) break;
+      let i = 0;
+      while (i < value.length) {
+        if (!h) {
+          const n = Math.min(HEADER - have, value.length - i);
+          header.set(value.subarray(i, i + n), have);
+          have += n; i += n;
+          if (have < HEADER) break;
+          h = fieldsOf(header);
+          have = 0;
+          const size = h.kind === 'PRTF' ? h.f[2] * h.f[3] * 4 : h.kind === 'PRTE' ? h.f[2] : 0;
+          body = h.kind === 'PRTF' ? new Uint8ClampedArray(size) : new Uint8Array(size);
+          at = 0;
+        }
+        const n = Math.min(body.length - at, value.length - i);
+        body.set(value.subarray(i, i + n), at);
+        at += n; i += n;
+        if (at < body.length) break;
+        if (h.kind === 'PRTF') showFrame(h, body);
+        else if (h.kind === 'PRTE') {
+          status('frame: ' + new TextDecoder().decode(body).trim());
+          view.answered = h.f[1];
+          view.dirty = view.answered < view.input;
+          view.shown = h.f[0];
+          sendInput();
+        }
+        h = null;
+      }
+    }
+  } catch (e) {
+    // the connection broke: open another below
+  }
+  if (view.stream === name) { view.stream = null; setTimeout(openStream, 250); }
+}
+
+// The page's text changes only when a frame arrives (showFrame); this only clears the frame
+// rate once frames have stopped coming.
+setInterval(() => {
+  const times = view.frameTimes;
+  if (times.length && performance.now() - times[times.length - 1] > 1000) { times.length = 0; $('fps').textContent = '-'; }
+}, 1000);
 
 function tick(now) {
   if (view.playing) {
     const dt = view.lastTick ? now - view.lastTick : 0;
-    view.q = quatMul(quatAbout(view.axis, dt * 0.045), view.q);  // 45 degrees a second
+    view.turn = { axis: view.turn.axis, angle: (view.turn.angle + dt * 0.045) % 360 };  // 45 degrees a second
     changed();
   }
   view.lastTick = now;
-  const times = view.frameTimes;
-  $('fps').textContent = times.length > 1 && now - times[times.length - 1] < 1000
-    ? ((times.length - 1) * 1000 / (times[times.length - 1] - times[0])).toFixed(1) : '-';
-  if (!view.inflight && view.dirty) drawFrame();
   requestAnimationFrame(tick);
 }
 
-// A transport not computed yet: asks for it, shows the progress, then draws.
+// The transport the controls ask for, computed on first use: until it is ready the page keeps
+// drawing (and turning) the one it shows, and says so. A later choice takes over from an earlier
+// one still waiting.
 async function ensureTransport() {
-  const key = $('basis').value + ' ' + $('mode').value;
+  const generation = ++view.choice;
   for (;;) {
+    const basis = $('basis').value, mode = $('mode').value, key = basis + ' ' + mode;
     const state = await (await fetch('/state')).json();
+    if (generation !== view.choice) return;
     const t = state.transports.find((x) => x.key === key);
-    if (t && t.state === 'ready') { status.busy = false; status(''); changed(); return; }
-    if (t && t.state === 'failed') { status.busy = false; status(t.error); return; }
-    if (!t) await fetch('/compute?basis=' + encodeURIComponent($('basis').value) + '&mode=' + $('mode').value, { method: 'POST' });
+    const shown = view.transport.basis + ' ' + view.transport.mode;
+    if (t && t.state === 'ready') {
+      view.transport = { basis, mode };
+      status.busy = false; status(''); view.errorSetting = null; changed(); return;
+    }
+    if (t && t.state === 'failed') { status.busy = false; status(t.error + ' (showing ' + shown + ')'); return; }
+    if (!t) await fetch('/compute?basis=' + encodeURIComponent(basis) + '&mode=' + encodeURIComponent(mode), { method: 'POST' });
     const p = state.progress;
     status.busy = true;
-    status('computing the ' + key + ' transport' + (p.active ? ': ' + p.label + ' ' + Math.round(100 * p.fraction) + ' %' : '') + ' ...');
+    status('computing the ' + key + ' transport' + (p.active ? ': ' + p.label + ' ' + Math.round(100 * p.fraction) + ' %' : '') +
+      ' ... (showing ' + shown + ')');
     await new Promise((r) => setTimeout(r, 250));
   }
 }
@@ -216,6 +331,7 @@ function setupControls() {
   fill('mode', s.limits.modes);
   fill('env', s.limits.environments.map((_, i) => String(i)), s.limits.environments);
   const initial = new URLSearchParams(d.query);
+  view.transport = { basis: initial.get('basis'), mode: initial.get('mode') };
   $('mode').value = initial.get('mode');
   $('lmax').max = String(s.limits.lmax);
   $('lmax').value = initial.get('lmax');
@@ -229,24 +345,24 @@ function setupControls() {
   $('tonemap').value = initial.get('tonemap');
   view.camera = { eye: d.eye.slice(), target: d.target.slice(), up: d.up.slice(), fov: d.fov };
   view.home = { camera: JSON.parse(JSON.stringify(view.camera)) };
-  view.axis = normalize(d.axis);
-  view.q = quatAbout(view.axis, Number(initial.get('angle')));
+  view.turn = { axis: normalize(d.axis), angle: Number(initial.get('angle')) };
   $('frame').width = d.width;
   $('frame').height = d.height;
   for (const id of ['lmax', 'terms', 'view', 'coef', 'exposure', 'tonemap', 'env']) $(id).addEventListener('input', changed);
   for (const id of ['basis', 'mode']) $(id).addEventListener('change', ensureTransport);
   $('angle').addEventListener('input', () => {
-    view.q = quatAbout(view.axis, Number($('angle').value));
+    view.turn = { axis: view.turn.axis, angle: Number($('angle').value) };
     changed();
   });
   $('play').addEventListener('click', () => {
     view.playing = !view.playing;
     $('play').textContent = view.playing ? 'pause' : 'play';
   });
-  $('reset').addEventListener('click', () => { view.q = [0, 0, 0, 1]; changed(); });
+  $('reset').addEventListener('click', () => { view.turn = { axis: view.turn.axis, angle: 0 }; changed(); });
   $('measure').addEventListener('click', measure);
   $('showcommand').addEventListener('click', async () => {
     $('command').value = (await (await fetch('/command?' + query())).text()).trim();
+    $('command').classList.remove('stale');
   });
   setupPointer();
 }
@@ -278,10 +394,10 @@ function setupPointer() {
     } else {
       // Dragging right turns the light about the camera's up (the world's, unless --up says
       // otherwise), dragging down about the camera's right: together, about any axis.
-      let q = view.q;
+      let q = quatAbout(view.turn.axis, view.turn.angle);
       if (dx) q = quatMul(quatAbout(c.up, dx * DEGREES_PER_PIXEL), q);
       if (dy) q = quatMul(quatAbout(right, dy * DEGREES_PER_PIXEL), q);
-      view.q = q;
+      view.turn = turnFromQuat(q);
     }
     changed();
   });
@@ -298,6 +414,7 @@ async function start() {
   view.state = await (await fetch('/state')).json();
   setupControls();
   changed();
+  openStream();
   requestAnimationFrame(tick);
 }
 start();

@@ -16,6 +16,7 @@ class StubLight : public FrameLight {
  public:
   StubLight(const ShRgb& light, double gain) : radiance_(glm::vec3(light.at(0) * 0.28209479177387814 * gain)) {}
   void Turn(double) override {}
+  void SetAxis(const glm::dvec3&) override {}
   std::vector<glm::vec3> Shade(const Mesh& mesh, bool, const glm::dvec3*) const override {
     return std::vector<glm::vec3>(mesh.vertex_count(), radiance_);
   }
@@ -35,7 +36,8 @@ class StubPrepared : public PreparedBasis {
  public:
   explicit StubPrepared(double g) : gain(g) {}
   double gain;
-  std::unique_ptr<FrameLight> Light(const Environment&, const ShRgb& light, const glm::dvec3&, int) const override {
+  std::unique_ptr<FrameLight> Light(const Environment&, const ShRgb& light, const glm::dvec3&, int,
+                                    LightQuality) const override {
     return std::make_unique<StubLight>(light, gain);
   }
 };
