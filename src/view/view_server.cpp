@@ -193,9 +193,8 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
               [stream, &backend](std::size_t, httplib::DataSink& sink) {
                 FrameStream::Job job;
                 switch (stream->Next(job)) {
-                  case FrameStream::Step::kStopped:
-                    sink.done();
-                    return true;
+                  case FrameStream::Step::kStopped:  // the server stops, or the page opened another:
+                    return false;                    // the connection is closed, not kept alive
                   case FrameStream::Step::kKeepAlive: {
                     const std::string record = KeepAliveRecord();
                     return sink.write(record.data(), record.size());

@@ -1,11 +1,14 @@
 // The threads tier of src/view (tests/README.md, "Tiers"): prt view's server in this process,
 // before a stand-in scene that counts what it is asked. The server's threads are the HTTP
 // library's pool, not prt's: clients on threads of their own ask at once for the page, the state
-// and frames (each frame checked against the request it answers), the server is stopped while
-// they ask, and ThreadSanitizer watches the handlers meet on the backend and on the server.
+// and frames (each frame checked against the request it answers), streams draw and send while
+// their pages' inputs arrive on other threads, the server is stopped while they ask and stream,
+// and ThreadSanitizer watches the handlers meet on the backend, the streams and the server.
 #include <doctest/doctest.h>
 
 #include <atomic>
+#include <chrono>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -14,6 +17,7 @@
 #include "core/error.h"
 #include "tests/threads_util.h"
 #include "tests/view/http_client.h"
+#include "tests/view/stream_client.h"
 #include "view/view_server.h"
 
 namespace prt {
@@ -106,6 +110,56 @@ TEST_SUITE("view") {
     asking = false;
     for (auto& t : late) t.join();
     CHECK(torn == 0);
+  }
+
+  TEST_CASE("threads: streams draw while their inputs and acknowledgements come on other threads; Stop ends them at once") {
+    CountingBackend backend;
+    ViewServer server(backend, "127.0.0.1", 0);
+    std::thread serving([&] { server.Serve(); });
+    constexpr int kPages = 4, kInputs = 12;
+    std::atomic<int> wrong{0}, disordered{0};
+    test::OnThreads(kPages, [&](int c) {
+      const std::string name = "00000000000000000000000000000" + std::to_string(100 + c);
+      test::StreamClient stream(server.port(), name, "size=16x8", 1);
+      if (stream.status() != 200) return void(++wrong);
+      // The page's inputs from a thread of their own, each a size of its own, while this thread
+      // reads and acknowledges: each frame's bytes are its size, so a frame drawn for another
+      // input or another page shows.
+      std::atomic<std::uint32_t> shown{0};
+      std::thread inputs([&] {
+        for (int i = 2; i <= kInputs; ++i)
+          if (test::PostInput(server.port(), name, "shown=" + std::to_string(shown.load()) + "&input=" +
+                                                      std::to_string(i) + "&size=" + std::to_string(16 + i) + "x8") != 204)
+            ++wrong;
+      });
+      std::uint32_t last = 0, input = 0;
+      while (input != kInputs) {
+        const test::StreamRecord r = stream.Next(30.0);
+        if (r.kind == "PRTK") continue;
+        if (r.kind != "PRTF") { ++wrong; break; }
+        if (r.frame != last + 1 || r.input < input) ++disordered;
+        last = r.frame;
+        input = r.input;
+        const int width = input == 1 ? 16 : 16 + static_cast<int>(input);
+        if (r.Rgb() != std::string(std::size_t(3) * width * 8, char(width))) ++wrong;
+        shown = r.frame;
+        if (test::PostInput(server.port(), name, "shown=" + std::to_string(r.frame)) != 204) ++wrong;
+      }
+      inputs.join();
+    });
+    CHECK(wrong == 0);
+    CHECK(disordered == 0);
+
+    // Streams open and waiting when the server stops: Serve returns without waiting for them.
+    std::vector<std::unique_ptr<test::StreamClient>> open;
+    for (int c = 0; c < 3; ++c) {
+      open.push_back(std::make_unique<test::StreamClient>(server.port(), "0000000000000000000000000000020" + std::to_string(c), "", 1));
+      CHECK(open.back()->status() == 200);
+    }
+    const auto stop_at = std::chrono::steady_clock::now();
+    server.Stop();
+    serving.join();
+    CHECK(std::chrono::steady_clock::now() - stop_at < std::chrono::milliseconds(1500));
   }
 }
 

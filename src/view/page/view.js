@@ -23,6 +23,8 @@ const view = {
   shown: 0,               // the same, as told to the server
   outOfOrder: 0,          // frames that came after a later one (never, on one stream)
   still: false,           // the picture is at still quality (what prt render draws)
+  stillFrames: 0,         // frames shown at still quality, and at interactive
+  interactiveFrames: 0,
   framesDrawn: 0,
   frameTimes: [],         // when each of the last frames was drawn, for the frame rate
   latencies: [],          // input to picture, ms
@@ -202,6 +204,7 @@ function showFrame(h, pixels) {
   view.frame = frame;
   view.answered = input;
   view.still = (flags & 1) === 1;
+  if (view.still) view.stillFrames++; else view.interactiveFrames++;
   view.dirty = input < view.input;
   view.framesDrawn++;
   view.frameTimes.push(now);
