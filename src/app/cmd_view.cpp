@@ -2,12 +2,14 @@
 // view/view_server.h).
 #include <cstdio>
 #include <set>
+#include <thread>
 
 #include "app/commands.h"
 #include "app/render_args.h"
 #include "app/scene_options.h"
 #include "app/view_scene.h"
 #include "core/log.h"
+#include "view/late_backend.h"
 #include "view/view_server.h"
 
 namespace prt {
@@ -90,13 +92,25 @@ int RunView(const std::vector<std::string>& tokens) {
   for (const std::string& env : args.TakePositionals()) setup.envs.push_back(env);
   args.Finish();
 
+  // The mesh and environments loaded (and so checked), then the port taken and the page served
+  // at once, showing the first transport's progress until it is ready (view/late_backend.h).
   ViewScene view(setup);
-  ViewServer server(view, bind, port);
+  LateBackend backend;
+  ViewServer server(backend, bind, port);
   Summary("view: serving " + server.Address() + (bind == "127.0.0.1" ? " to this machine only (--bind ADDRESS serves others)"
                                                                       : " on " + bind + " (--bind): any machine that reaches it may use the page"));
   std::printf("%s\n", server.Address().c_str());
   std::fflush(stdout);
-  server.Serve();
+  std::thread serving([&server] { server.Serve(); });
+  try {
+    view.ComputeFirst();
+  } catch (...) {
+    server.Stop();
+    serving.join();
+    throw;
+  }
+  backend.Ready(view);
+  serving.join();  // until SIGINT or SIGTERM ends the run
   return 0;
 }
 

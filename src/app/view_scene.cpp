@@ -121,6 +121,9 @@ ViewScene::ViewScene(ViewSetup setup) : setup_(std::move(setup)) {
   defaults_.basis = setup_.scene.basis->Name();
   defaults_.mode = setup_.scene.transport;
 
+}
+
+void ViewScene::ComputeFirst() {
   // The first transport, here and now: the run fails with its error.
   try {
     prepared_[Key(defaults_.basis, defaults_.mode)] = Done(Prepare(defaults_.basis, defaults_.mode));
@@ -131,13 +134,11 @@ ViewScene::ViewScene(ViewSetup setup) : setup_(std::move(setup)) {
     // As render measures it: on the first frame's mesh pixels.
     FrameRequest probe = defaults_;
     probe.draw.exposure = 0.0;
-    double ms = 0.0;
-    Frame(probe, &ms);
     std::lock_guard<std::mutex> lock(draw_mutex_);
-    defaults_.draw.exposure = AutoExposureEv(
-        RasterizeFrame(rasterizer_, mesh_, FrameLightOf(probe, Find(defaults_.basis, defaults_.mode).get()), *envs_[0], ChooseCamera(mesh_, probe.draw), probe.draw,
-                       probe.draw.start_degrees * kPi / 180.0, 0.0),
-        defaults_.draw.tonemap);
+    FrameLight& light = FrameLightOf(probe, Find(defaults_.basis, defaults_.mode).get());
+    defaults_.draw.exposure = AutoExposureEv(RasterizeFrame(rasterizer_, mesh_, light, *envs_[0], ChooseCamera(mesh_, probe.draw),
+                                                            probe.draw, probe.draw.start_degrees * kPi / 180.0, 0.0),
+                                             defaults_.draw.tonemap);
     ReportAutoExposure(*defaults_.draw.exposure, "the first frame's mesh pixels");
   }
 }

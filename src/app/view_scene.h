@@ -66,8 +66,11 @@ struct ViewSetup {
 
 class ViewScene : public ViewBackend {
  public:
-  /// Loads the mesh and environments and computes the first transport (said on the run summary).
+  /// Loads the mesh and environments (their errors thrown here, before any long work).
   explicit ViewScene(ViewSetup setup);
+  /// Computes the first transport (said on the run summary) and, without --exposure, the
+  /// exposure of the first frame; the run fails with its error. The other calls need it done.
+  void ComputeFirst();
   /// Waits for the background jobs that are running; those still queued are dropped.
   ~ViewScene() override = default;
 

@@ -51,6 +51,7 @@ TEST_SUITE("app") {
   TEST_CASE("threads: prt view's scene computes a mode and a reference in the background while threads draw the mode that is ready") {
     const test::ThreadCountScope pool(test::kManyThreads);
     ViewScene scene(SmallSetup("threads_view_scene"));
+    scene.ComputeFirst();
     const FrameRequest shadowed = scene.Defaults();
     REQUIRE(shadowed.mode == "shadowed");
     FrameRequest bounced = shadowed;
@@ -94,6 +95,7 @@ TEST_SUITE("app") {
   TEST_CASE("threads: prt view's scene queues more background jobs than it has workers, and finishes each") {
     const test::ThreadCountScope pool(test::kManyThreads);
     ViewScene scene(SmallSetup("threads_view_scene_queue"));
+    scene.ComputeFirst();
     // Two transports and three references on kViewWorkers (2) threads, asked for from threads
     // of their own as the server's would.
     std::vector<FrameRequest> requests;
@@ -127,6 +129,7 @@ TEST_SUITE("app") {
     ViewSetup setup = SmallSetup("threads_view_scene_gone");
     setup.scene.samples = 256;  // a computation that is still running when the scene goes
     ViewScene scene(setup);
+    scene.ComputeFirst();
     scene.Compute("sh", "interreflection");
     scene.MeasureReference(scene.Defaults());
   }

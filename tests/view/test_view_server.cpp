@@ -397,6 +397,37 @@ TEST_CASE("prt view ends cleanly on SIGTERM and SIGINT, leaving only the cache i
   }
 }
 
+TEST_CASE("prt view listens before its first transport: the page at once with the progress, a taken port refused first") {
+  const std::string dir = ScratchDir("view_starting");
+  // The embedded demo scene: its first transport takes seconds to minutes, time enough to look.
+  ViewProcess view = ViewProcess::Starting({"--port", "0", "--size", "64x48"}, dir + "/stderr.txt");
+  const int port = view.port();
+  const HttpReply state = Request(port, "/state");
+  CHECK(state.status == 200);
+  CHECK(state.body.find("\"starting\":true") != std::string::npos);
+  CHECK(state.body.find("\"progress\":{\"label\":") != std::string::npos);
+  CHECK(Request(port, "/").status == 200);
+  const HttpReply frame = Request(port, "/frame");
+  CHECK(frame.status == 409);
+  CHECK(frame.body.find("starting") != std::string::npos);
+  CHECK(Request(port, "/stream?stream=0123456789abcdef").status == 409);
+  CHECK(Request(port, "/command").status == 409);
+  // A second server on its port is refused at once, before its own transport: a clear error, no
+  // address printed, nothing computed.
+  const auto start = std::chrono::steady_clock::now();
+  const RunResult taken = RunCommand("timeout -s KILL 120 " + Q(PrtBinary()) + " view --port " + std::to_string(port));
+  CHECK(taken.exit_code == 1);
+  CHECK(taken.out.empty());
+  CHECK(taken.err.find("--port " + std::to_string(port) + ": cannot listen there") != std::string::npos);
+  CHECK(taken.err.find("transport:") == std::string::npos);
+  CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(15));
+  // Still starting (the demo's transport is not done), and SIGTERM ends it at once.
+  CHECK(Request(port, "/state").body.find("\"starting\":true") != std::string::npos);
+  const int status = view.Stop(SIGTERM);
+  CHECK(WIFSIGNALED(status));
+  CHECK(WTERMSIG(status) == SIGTERM);
+}
+
 TEST_CASE("prt view: --port, --bind and its other options are checked before any work") {
   const std::string dir = ScratchDir("view_options");
   const std::string mesh = WriteSmallScene(dir);
@@ -416,6 +447,7 @@ TEST_CASE("prt view: --port, --bind and its other options are checked before any
   CHECK(taken.exit_code == 1);
   CHECK(taken.out.empty());
   CHECK(taken.err.find("--port " + std::to_string(first.port()) + ": cannot listen there") != std::string::npos);
+  CHECK(taken.err.find("transport:") == std::string::npos);  // refused before any transport
   // An unknown environment among the extra ones: refused before any transport.
   const RunResult env = RunPrt("view --mesh " + Q(mesh) + " --port 0 " + Q(dir + "/no-such.hdr"));
   CHECK(env.exit_code != 0);

@@ -25,13 +25,21 @@ ViewProcess::ViewProcess(const std::vector<std::string>& args, const std::string
   Start(all, log, "");
 }
 
+ViewProcess ViewProcess::Starting(const std::vector<std::string>& args, const std::string& log) {
+  ViewProcess p;
+  std::vector<std::string> all = {PrtBinary(), "view"};
+  all.insert(all.end(), args.begin(), args.end());
+  p.Start(all, log, "", false);
+  return p;
+}
+
 ViewProcess ViewProcess::Shell(const std::string& command, const std::string& dir, const std::string& log) {
   ViewProcess p;
   p.Start({"/bin/bash", "-c", "exec " + command}, log, dir);
   return p;
 }
 
-void ViewProcess::Start(std::vector<std::string> all, const std::string& log, const std::string& dir) {
+void ViewProcess::Start(std::vector<std::string> all, const std::string& log, const std::string& dir, bool wait_ready) {
   std::vector<char*> argv;
   for (auto& a : all) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -71,6 +79,19 @@ void ViewProcess::Start(std::vector<std::string> all, const std::string& log, co
     pid_ = -1;
     FAIL("prt view printed no address (stdout '" << line << "'; its stderr is in " << log << ")");
   }
+  // It serves from then on, and its scene once the first transport is computed: /state says
+  // "starting" until then (view/late_backend.h). The tests start from a ready scene.
+  while (wait_ready && std::chrono::steady_clock::now() < deadline) {
+    const HttpReply state = Request(port_, "/state");
+    if (state.status == 200 && state.body.find("\"starting\":true") == std::string::npos) return;
+    int status = 0;
+    if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+      pid_ = -1;
+      FAIL("prt view ended before its scene was ready (its stderr is in " << log << ")");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  if (wait_ready) FAIL("prt view's scene was not ready within five minutes (its stderr is in " << log << ")");
 }
 
 ViewProcess::~ViewProcess() {

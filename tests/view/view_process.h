@@ -13,8 +13,11 @@ namespace prt::test {
 class ViewProcess {
  public:
   /// Starts `prt view ARGS...` (stderr into `log`, stdout read for the address line); waits for
-  /// the address for up to five minutes. FAILs the test when none comes.
+  /// the address, then for its scene to be ready (/state no longer "starting"), for up to five
+  /// minutes in all. FAILs the test when either does not come.
   ViewProcess(const std::vector<std::string>& args, const std::string& log);
+  /// Starts `prt view ARGS...` and waits for its address only: its scene may still be starting.
+  static ViewProcess Starting(const std::vector<std::string>& args, const std::string& log);
   /// Runs `command` with bash in folder `dir` instead (a README command, as a user types it).
   static ViewProcess Shell(const std::string& command, const std::string& dir, const std::string& log);
   ~ViewProcess();  ///< SIGKILL if still running
@@ -33,7 +36,7 @@ class ViewProcess {
 
  private:
   ViewProcess() = default;
-  void Start(std::vector<std::string> argv, const std::string& log, const std::string& dir);
+  void Start(std::vector<std::string> argv, const std::string& log, const std::string& dir, bool wait_ready = true);
 
   int pid_ = -1;
   int port_ = 0;

@@ -414,7 +414,15 @@ function setupPointer() {
 }
 
 async function start() {
-  view.state = await (await fetch('/state')).json();
+  // The server answers at once; its scene once the first transport is computed.
+  for (;;) {
+    view.state = await (await fetch('/state')).json();
+    if (!view.state.starting) break;
+    const p = view.state.progress;
+    status('starting: computing the first transport' + (p.active ? ': ' + p.label + ' ' + Math.round(100 * p.fraction) + ' %' : '') + ' ...');
+    await new Promise((r) => setTimeout(r, 250));
+  }
+  status('');
   setupControls();
   changed();
   openStream();
