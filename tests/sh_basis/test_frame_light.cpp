@@ -36,6 +36,30 @@ TEST_SUITE("sh_basis") {
     for (std::size_t v = 0; v < mesh.vertex_count(); v += 7)
       for (int k = 0; k < CoeffCount(3); ++k) CHECK(frame->Coefficient(v, k) == t.at(v, 0)[k]);
   }
+
+  TEST_CASE("frame light: SH SetAxis gives the bytes of a light made with that axis") {
+    const Mesh mesh = MakeSphere(12);
+    TransportOptions o;
+    o.mode = TransportMode::kUnshadowed;
+    o.lmax = 4;
+    const Transport t = ComputeTransport(mesh, o, nullptr);
+    const ShRgb light = ProjectLight(*MakeSky(SkyParams{}), 4);
+    const glm::dvec3 first(0, 1, 0), second = glm::normalize(glm::dvec3(0.6, 0.7, -0.3));
+    const auto moved = MakeShFrameLight(t, light, first), made = MakeShFrameLight(t, light, second);
+    moved->Turn(1.1);
+    const auto before = moved->Shade(mesh, true, nullptr);
+    moved->SetAxis(second);
+    moved->Turn(1.1);
+    made->Turn(1.1);
+    const auto got = moved->Shade(mesh, true, nullptr), expected = made->Shade(mesh, true, nullptr);
+    bool differs = false;
+    for (std::size_t v = 0; v < mesh.vertex_count(); ++v)
+      for (int c = 0; c < 3; ++c) {
+        CHECK(got[v][c] == expected[v][c]);
+        differs = differs || got[v][c] != before[v][c];
+      }
+    CHECK(differs);
+  }
 }
 
 }  // namespace prt

@@ -18,6 +18,7 @@
 #include "tests/threads_util.h"
 #include "tests/view/http_client.h"
 #include "tests/view/stream_client.h"
+#include "view/late_backend.h"
 #include "view/view_server.h"
 
 namespace prt {
@@ -160,6 +161,43 @@ TEST_SUITE("view") {
     server.Stop();
     serving.join();
     CHECK(std::chrono::steady_clock::now() - stop_at < std::chrono::milliseconds(1500));
+  }
+
+  TEST_CASE("threads: a late backend answers 409 while starting and its scene once Ready is called from another thread") {
+    CountingBackend scene;
+    LateBackend late;
+    ViewServer server(late, "127.0.0.1", 0);
+    std::thread serving([&] { server.Serve(); });
+    std::atomic<bool> ready{false};
+    std::atomic<int> wrong{0}, early{0}, served{0};
+    std::thread make([&] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      ready = true;
+      late.Ready(scene);
+    });
+    test::OnThreads(3, [&](int) {
+      for (int i = 0; i < 40; ++i) {
+        const bool was_ready = ready;
+        const test::HttpReply frame = test::Request(server.port(), "/frame?size=16x8");
+        const test::HttpReply state = test::Request(server.port(), "/state");
+        if (frame.status == 409 && frame.body.find("starting") != std::string::npos) {
+          ++early;
+          if (was_ready) ++wrong;  // once ready, never starting again
+        } else if (frame.status == 200 && frame.body == std::string(3 * 16 * 8, char(16))) {
+          ++served;
+        } else {
+          ++wrong;
+        }
+        if (state.status != 200) ++wrong;
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      }
+    });
+    make.join();
+    CHECK(wrong == 0);
+    CHECK(early > 0);
+    CHECK(served > 0);
+    server.Stop();
+    serving.join();
   }
 }
 
