@@ -65,18 +65,6 @@ Image8 FramePng(int port, const std::string& query, const std::string& dir, cons
   return ReadPng(path);
 }
 
-/// Waits (up to five minutes) until /state says the transport `key` is ready.
-void WaitReady(int port, const std::string& key) {
-  for (int i = 0; i < 3000; ++i) {
-    const HttpReply state = Request(port, "/state");
-    REQUIRE(state.status == 200);
-    if (state.body.find("{\"key\":\"" + key + "\",\"state\":\"ready\"") != std::string::npos) return;
-    REQUIRE(state.body.find("{\"key\":\"" + key + "\",\"state\":\"failed\"") == std::string::npos);
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
-  FAIL("transport " << key << " never ready");
-}
-
 }  // namespace
 
 TEST_SUITE("view") {

@@ -38,16 +38,6 @@ StreamRecord NextFrame(StreamClient& s, double seconds = kWait) {
   }
 }
 
-/// Waits (up to five minutes) until /state says the transport `key` is ready.
-void WaitReady(int port, const std::string& key) {
-  for (int i = 0; i < 3000; ++i) {
-    const HttpReply state = Request(port, "/state");
-    if (state.body.find("{\"key\":\"" + key + "\",\"state\":\"ready\"") != std::string::npos) return;
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
-  FAIL("transport " << key << " never ready");
-}
-
 }  // namespace
 
 TEST_SUITE("view") {

@@ -106,6 +106,17 @@ int ViewProcess::Stop(int signal) {
   return status;
 }
 
+void WaitReady(int port, const std::string& key) {
+  for (int i = 0; i < 3000; ++i) {
+    const HttpReply state = Request(port, "/state");
+    REQUIRE(state.status == 200);
+    if (state.body.find("{\"key\":\"" + key + "\",\"state\":\"ready\"") != std::string::npos) return;
+    REQUIRE(state.body.find("{\"key\":\"" + key + "\",\"state\":\"failed\"") == std::string::npos);
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  FAIL("transport " << key << " never ready");
+}
+
 std::vector<std::string> SmallViewArgs(const std::string& dir) {
   return {"--mesh", WriteSmallScene(dir), "--lmax", "3", "--samples", "256", "--size", "160x120", "--port", "0"};
 }

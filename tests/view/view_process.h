@@ -43,6 +43,10 @@ class ViewProcess {
   std::string address_;
 };
 
+/// Waits (up to five minutes) until /state says the transport `key` ("basis mode") is ready;
+/// FAILs when it failed or never is.
+void WaitReady(int port, const std::string& key);
+
 /// The small scene's view arguments the tests share: WriteSmallScene in `dir`, lmax 3, 256
 /// directions a vertex, 160x120 frames, one thread per process kept free.
 std::vector<std::string> SmallViewArgs(const std::string& dir);

@@ -16,6 +16,16 @@
 #include "wavelet/shade.h"
 
 namespace prt {
+namespace {
+
+/// A floor and a wall, albedo 0.9: the bounces carry much of the light.
+Mesh FloorAndWall() {
+  Mesh mesh = MakeBox({-1.0f, 0.0f, -1.0f}, {1.0f, 0.1f, 1.0f}, BoxFacing::kOutward, 3, glm::vec3(0.9f));
+  AppendMesh(mesh, MakeBox({-1.0f, 0.1f, -1.0f}, {-0.9f, 1.5f, 1.0f}, BoxFacing::kOutward, 3, glm::vec3(0.9f)));
+  return mesh;
+}
+
+}  // namespace
 
 TEST_SUITE("wavelet") {
   TEST_CASE("frame light: wavelets resample the turned sky, keep K light terms and show what they keep") {
@@ -64,8 +74,7 @@ TEST_SUITE("wavelet") {
     // turned about a tilted axis: each frame must be the direct light of the turned cube plus
     // the bounces lit by the SH light turned by the same angle, built here by the general
     // rotation (ShRotation's band matrices of the rotation matrix), not the frame's polar path.
-    Mesh mesh = MakeBox({-1.0f, 0.0f, -1.0f}, {1.0f, 0.1f, 1.0f}, BoxFacing::kOutward, 3, glm::vec3(0.9f));
-    AppendMesh(mesh, MakeBox({-1.0f, 0.1f, -1.0f}, {-0.9f, 1.5f, 1.0f}, BoxFacing::kOutward, 3, glm::vec3(0.9f)));
+    const Mesh mesh = FloorAndWall();
     TransportOptions o;
     o.mode = TransportMode::kInterreflection;
     o.lmax = 2;
@@ -110,8 +119,7 @@ TEST_SUITE("wavelet") {
   }
 
   TEST_CASE("frame light: SetAxis gives the bytes of a light made with that axis, its bounces turned about it too") {
-    Mesh mesh = MakeBox({-1.0f, 0.0f, -1.0f}, {1.0f, 0.1f, 1.0f}, BoxFacing::kOutward, 3, glm::vec3(0.9f));
-    AppendMesh(mesh, MakeBox({-1.0f, 0.1f, -1.0f}, {-0.9f, 1.5f, 1.0f}, BoxFacing::kOutward, 3, glm::vec3(0.9f)));
+    const Mesh mesh = FloorAndWall();
     TransportOptions o;
     o.mode = TransportMode::kInterreflection;
     o.lmax = 2;
