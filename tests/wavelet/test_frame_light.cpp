@@ -25,6 +25,19 @@ Mesh FloorAndWall() {
   return mesh;
 }
 
+/// `mesh`'s wavelet transport (F 8) with one bounce at lmax 2, `samples` directions a vertex.
+WaveletTransport BounceTransport(const Mesh& mesh, int samples) {
+  TransportOptions o;
+  o.mode = TransportMode::kInterreflection;
+  o.lmax = 2;
+  o.samples = samples;
+  WaveletOptions w;
+  w.face_size = 8;
+  WaveletTransport t = ComputeWaveletTransport(mesh, o, w, nullptr);
+  REQUIRE_FALSE(t.bounce.coeffs.empty());
+  return t;
+}
+
 }  // namespace
 
 TEST_SUITE("wavelet") {
@@ -75,16 +88,9 @@ TEST_SUITE("wavelet") {
     // the bounces lit by the SH light turned by the same angle, built here by the general
     // rotation (ShRotation's band matrices of the rotation matrix), not the frame's polar path.
     const Mesh mesh = FloorAndWall();
-    TransportOptions o;
-    o.mode = TransportMode::kInterreflection;
-    o.lmax = 2;
-    o.samples = 256;
-    WaveletOptions w;
-    w.face_size = 8;
-    const WaveletTransport t = ComputeWaveletTransport(mesh, o, w, nullptr);
-    REQUIRE_FALSE(t.bounce.coeffs.empty());
+    const WaveletTransport t = BounceTransport(mesh, 256);
     const auto sky = MakeSky(SkyParams{});
-    const ShRgb light = ProjectLight(*sky, o.lmax);
+    const ShRgb light = ProjectLight(*sky, t.bounce.lmax);
     const glm::dvec3 axis = glm::normalize(glm::dvec3(0.3, 1.0, 0.2));
     const auto frame = MakeWaveletFrameLight(t, *sky, light, axis, 0, Selection::kArea);
     const CubeGrid grid(8);
@@ -101,7 +107,7 @@ TEST_SUITE("wavelet") {
       CubeRgb haar = texels;
       CubeToHaar(8, haar);
       const WaveletLight direct = PackWaveletLight(haar, BaseLight(base, texels));
-      const ShRgb turned = ShRotation(turn, o.lmax).Apply(light);
+      const ShRgb turned = ShRotation(turn, t.bounce.lmax).Apply(light);
       const auto expected = ShadeWavelet(mesh, t, direct, turned, false);
       const auto unturned = ShadeWavelet(mesh, t, direct, light, false);  // the bounces left behind
       const auto got = frame->Shade(mesh, false, nullptr);
@@ -120,16 +126,9 @@ TEST_SUITE("wavelet") {
 
   TEST_CASE("frame light: SetAxis gives the bytes of a light made with that axis, its bounces turned about it too") {
     const Mesh mesh = FloorAndWall();
-    TransportOptions o;
-    o.mode = TransportMode::kInterreflection;
-    o.lmax = 2;
-    o.samples = 128;
-    WaveletOptions w;
-    w.face_size = 8;
-    const WaveletTransport t = ComputeWaveletTransport(mesh, o, w, nullptr);
-    REQUIRE_FALSE(t.bounce.coeffs.empty());
+    const WaveletTransport t = BounceTransport(mesh, 128);
     const auto sky = MakeSky(SkyParams{});
-    const ShRgb light = ProjectLight(*sky, o.lmax);
+    const ShRgb light = ProjectLight(*sky, t.bounce.lmax);
     const glm::dvec3 first(0, 1, 0), second = glm::normalize(glm::dvec3(0.6, 0.7, -0.3));
     const auto moved = MakeWaveletFrameLight(t, *sky, light, first, 0, Selection::kArea);
     const auto made = MakeWaveletFrameLight(t, *sky, light, second, 0, Selection::kArea);
