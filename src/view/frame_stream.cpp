@@ -4,12 +4,17 @@
 
 namespace prt {
 
-FrameStream::FrameStream(FrameRequest request, std::uint64_t input)
-    : wanted_(std::move(request)), input_(input), since_(std::chrono::steady_clock::now()) {}
+FrameStream::FrameStream(FrameRequest request, std::uint64_t input, std::chrono::milliseconds silent_page)
+    : wanted_(std::move(request)),
+      input_(input),
+      since_(std::chrono::steady_clock::now()),
+      heard_(since_),
+      silent_page_(silent_page) {}
 
 void FrameStream::Want(const FrameRequest& request, std::uint64_t input) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    heard_ = std::chrono::steady_clock::now();
     if (input <= input_) return;
     wanted_ = request;
     input_ = input;
@@ -21,6 +26,7 @@ void FrameStream::Want(const FrameRequest& request, std::uint64_t input) {
 void FrameStream::Shown(std::uint64_t frame) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
+    heard_ = std::chrono::steady_clock::now();
     shown_ = std::max(shown_, std::min(frame, sent_));  // a frame not sent yet cannot have been shown
   }
   changed_.notify_all();
@@ -59,10 +65,17 @@ FrameStream::Step FrameStream::Next(Job& job) {
       still_drawn_ = !fresh;
       return Step::kDraw;
     }
+    if (!room && now >= heard_ + silent_page_) {  // the page has stopped or gone
+      stopped_ = true;
+      return Step::kStopped;
+    }
     if (now >= give_up) return Step::kKeepAlive;
-    // Woken by an input, an acknowledgement or Stop; else when the still frame falls due.
+    // Woken by an input, an acknowledgement or Stop; else when the still frame falls due, or
+    // when the page's silence would end the stream.
     const bool waiting_for_still = room && !fresh && !still_drawn_;
-    changed_.wait_until(lock, waiting_for_still ? std::min(still_at, give_up) : give_up);
+    auto until = waiting_for_still ? std::min(still_at, give_up) : give_up;
+    if (!room) until = std::min(until, heard_ + silent_page_);
+    changed_.wait_until(lock, until);
   }
 }
 

@@ -13,6 +13,10 @@
 ///             it has shown): a page that paints slower than the server draws gets the newest
 ///             input's frame next, never a queue of old ones, and one that stops reading stops
 ///             the drawing for it, not for anyone else;
+///   silence   a page that has said nothing (no input, no frame shown) for kSilentPage while its
+///             window is full has stopped or gone (a frozen tab, a machine that vanished without
+///             closing): its stream ends, freeing its thread and its place among kMaxStreams,
+///             even when its frames are small enough to wait in the sockets' buffers;
 ///   order     frames are numbered in the order drawn and sent on one connection: they arrive
 ///             in that order.
 ///
@@ -37,6 +41,8 @@ inline constexpr std::uint64_t kFramesInFlight = 2;
 /// The longest a stream stays silent: then it sends a keep-alive record, so that a page that has
 /// gone is noticed (the write fails) and its thread freed.
 inline constexpr std::chrono::milliseconds kKeepAlive{2000};
+/// How long a page may leave its full window unacknowledged before its stream ends.
+inline constexpr std::chrono::milliseconds kSilentPage{30000};
 
 class FrameStream {
  public:
@@ -49,8 +55,9 @@ class FrameStream {
   /// What Next found: a job, nothing for kKeepAlive (send a keep-alive), or the stream stopped.
   enum class Step { kDraw, kKeepAlive, kStopped };
 
-  /// The stream starts with `request` as input number `input`.
-  FrameStream(FrameRequest request, std::uint64_t input);
+  /// The stream starts with `request` as input number `input`; `silent_page` is kSilentPage but
+  /// for tests.
+  FrameStream(FrameRequest request, std::uint64_t input, std::chrono::milliseconds silent_page = kSilentPage);
 
   /// The page's newest input; an input numbered no higher than the newest seen is ignored (a POST
   /// overtaken by a later one).
@@ -62,7 +69,7 @@ class FrameStream {
   bool Stopped() const;
 
   /// Waits until there is a frame to draw (into `job`), kKeepAlive has passed, or the stream is
-  /// stopped. The job's frame counts as sent.
+  /// stopped (by Stop, or by the page's silence). The job's frame counts as sent.
   Step Next(Job& job);
 
  private:
@@ -71,6 +78,8 @@ class FrameStream {
   FrameRequest wanted_;
   std::uint64_t input_ = 0;               ///< the newest input's number
   std::chrono::steady_clock::time_point since_;  ///< when it came
+  std::chrono::steady_clock::time_point heard_;  ///< when the page last said anything
+  std::chrono::milliseconds silent_page_;
   std::uint64_t answered_ = 0;            ///< the input the last frame drawn answers
   bool answered_once_ = false;
   bool still_drawn_ = false;              ///< the last frame drawn was input_'s still frame

@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <exception>
 #include <map>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -39,8 +42,24 @@ void Text(httplib::Response& res, int status, const std::string& text) {
   res.set_content(text + "\n", "text/plain; charset=utf-8");
 }
 
+/// A request refused whatever its parameters (403).
+struct Refused : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 std::vector<std::pair<std::string, std::string>> Query(const httplib::Request& req) {
   return {req.params.begin(), req.params.end()};
+}
+
+/// The header the page puts on its stream requests. A page of another origin cannot send it
+/// without asking first (a CORS preflight, which OPTIONS' 405 refuses), nor can an <img> or a
+/// form: only prt's own page opens streams and sends their input, even from the same site.
+constexpr const char* kStreamHeader = "X-Prt-Stream";
+
+/// Refuses a stream request without kStreamHeader (403).
+void RequireStreamHeader(const httplib::Request& req) {
+  if (req.get_header_value(kStreamHeader) != "1")
+    throw Refused(std::string("refused: ") + kStreamHeader + ": 1 missing (only prt's own page opens a stream)");
 }
 
 /// A stream's name: the page's own random one, 16 to 64 hexadecimal digits.
@@ -97,6 +116,11 @@ class ViewServer::Streams {
     const auto it = open_.find(name);
     if (it != open_.end() && it->second.get() == stream) open_.erase(it);
   }
+  /// True once StopAll has been called: the server is stopping.
+  bool Closed() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return closed_;
+  }
   /// Stops every stream, and those opened later at once.
   void StopAll() {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -144,6 +168,8 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
     return [handler](const httplib::Request& req, httplib::Response& res) {
       try {
         handler(req, res);
+      } catch (const Refused& e) {
+        Text(res, 403, e.what());
       } catch (const NotReady& e) {
         Text(res, 409, e.what());
       } catch (const Error& e) {
@@ -182,6 +208,7 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
   // The stream of frames (view/frame_stream.h): each draw and send on this connection's thread,
   // every write bounded by the write timeout, so a page that stops reading frees it.
   s.Get("/stream", guarded([this, &backend](const httplib::Request& req, httplib::Response& res) {
+          RequireStreamHeader(req);
           const std::string name = StreamName(req);
           const std::uint64_t input = req.has_param("input") ? Count("input", req.get_param_value("input")) : 0;
           auto stream = std::make_shared<FrameStream>(
@@ -190,31 +217,44 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
           res.set_header("Cache-Control", "no-store");
           res.set_chunked_content_provider(
               "application/octet-stream",
-              [stream, &backend](std::size_t, httplib::DataSink& sink) {
-                FrameStream::Job job;
-                switch (stream->Next(job)) {
-                  case FrameStream::Step::kStopped:  // the server stops, or the page opened another:
-                    return false;                    // the connection is closed, not kept alive
-                  case FrameStream::Step::kKeepAlive: {
-                    const std::string record = KeepAliveRecord();
-                    return sink.write(record.data(), record.size());
-                  }
-                  case FrameStream::Step::kDraw:
-                    break;
-                }
-                std::string record;
+              [this, stream, &backend](std::size_t, httplib::DataSink& sink) {
+                // Nothing may escape to the library (it would end the run): what cannot be sent
+                // ends this stream, and the page opens another.
                 try {
-                  double ms = 0.0;
-                  const Image8 image = backend.Frame(job.request, &ms);
-                  record = FrameRecord(image, job.frame, job.input, ms, !job.request.interactive);
-                } catch (const std::exception& e) {  // NotReady, Error: the page shows why
-                  record = ErrorRecord(job.frame, job.input, e.what());
+                  FrameStream::Job job;
+                  switch (stream->Next(job)) {
+                    case FrameStream::Step::kStopped:
+                      // The server stops: the connection is closed at once (a finished response
+                      // would keep it for the next request). The page opened another stream, or
+                      // went silent: the response ends whole, its last chunk sent, so that the
+                      // browser sees an end, not a broken download.
+                      if (this->impl_->streams.Closed()) return false;
+                      sink.done();
+                      return true;
+                    case FrameStream::Step::kKeepAlive: {
+                      const std::string record = KeepAliveRecord();
+                      return sink.write(record.data(), record.size());
+                    }
+                    case FrameStream::Step::kDraw:
+                      break;
+                  }
+                  std::string record;
+                  try {
+                    double ms = 0.0;
+                    const Image8 image = backend.Frame(job.request, &ms);
+                    record = FrameRecord(image, job.frame, job.input, ms, !job.request.interactive);
+                  } catch (const std::exception& e) {  // NotReady, Error: the page shows why
+                    record = ErrorRecord(job.frame, job.input, e.what());
+                  }
+                  return sink.write(record.data(), record.size());
+                } catch (...) {
+                  return false;
                 }
-                return sink.write(record.data(), record.size());
               },
               [this, name, raw = stream.get()](bool) { impl_->streams.Close(name, raw); });
         }));
   s.Post("/input", guarded([this, &backend](const httplib::Request& req, httplib::Response& res) {
+           RequireStreamHeader(req);
            const std::shared_ptr<FrameStream> stream = impl_->streams.Find(StreamName(req));
            if (!stream) return Text(res, 404, "stream: not open (it ended: the page opens another)");
            if (req.has_param("shown")) stream->Shown(Count("shown", req.get_param_value("shown")));
@@ -257,13 +297,13 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
           res.set_header("Cache-Control", "no-store");
         }));
   const auto not_allowed = [](const httplib::Request& req, httplib::Response& res) {
-    Text(res, 405, req.method + " " + req.path + ": not allowed (the page uses GET, and POST for /compute and /reference)");
+    Text(res, 405, req.method + " " + req.path + ": not allowed (the page uses GET, and POST for /compute, /reference and /input)");
   };
   s.Put(".*", not_allowed);
   s.Delete(".*", not_allowed);
   s.Patch(".*", not_allowed);
   s.Options(".*", not_allowed);
-  s.Post(".*", not_allowed);  // after /compute and /reference, which match first
+  s.Post(".*", not_allowed);  // after /compute, /reference and /input, which match first
   s.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
     if (res.body.empty()) Text(res, res.status, std::to_string(res.status) + ": " + req.method + " " + req.path);
   });
@@ -282,10 +322,18 @@ std::string ViewServer::Address() const {
   return "http://" + host + ":" + std::to_string(port_) + "/";
 }
 
-void ViewServer::Serve() { impl_->server.listen_after_bind(); }
+void ViewServer::Serve() {
+  serving_ = true;
+  if (!stopping_) impl_->server.listen_after_bind();
+  serving_ = false;
+}
 
 void ViewServer::Stop() {
+  stopping_ = true;
   impl_->streams.StopAll();
+  // The library's stop() does nothing before its listening loop has started: a Serve already
+  // entered is waited for until it listens (or returns), one entered later sees stopping_.
+  while (serving_ && !impl_->server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   impl_->server.stop();
 }
 

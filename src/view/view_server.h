@@ -9,12 +9,13 @@
 ///                         top; its size and the time it took to draw in the headers
 ///                         X-Prt-Size (WxH) and X-Prt-Draw-Ms
 ///   GET  /frame.png?QUERY the same frame as a PNG file, to save
-///   GET  /stream?stream=NAME&input=N&QUERY   the page's frames, pushed as they are drawn on one
+///   GET  /stream?stream=NAME&input=N&QUERY   (with the header X-Prt-Stream: 1, which only the
+///                         page itself can send: 403 without) the page's frames, pushed as they are drawn on one
 ///                         response (view/frame_stream.h; records: view/stream_record.h),
 ///                         starting with QUERY as input N; at most kMaxStreams open at once (400
 ///                         beyond); a stream opened again under its NAME replaces the old one
-///   POST /input?stream=NAME&shown=F[&input=N&QUERY]   the page has shown frame F; it now wants
-///                         QUERY (input N): 204, 404 for a stream not open
+///   POST /input?stream=NAME&shown=F[&input=N&QUERY]   (X-Prt-Stream: 1 too) the page has shown
+///                         frame F; it now wants QUERY (input N): 204, 404 for a stream not open
 ///   GET  /command?QUERY   the `prt render` command line that draws the same frame
 ///   POST /compute?basis=B&mode=M   starts computing that transport (202), progress in /state
 ///   POST /reference?mode=M&env=I   starts measuring prt reference's radiance for them (202)
@@ -27,6 +28,7 @@
 /// client that stalls or disappears holds one thread for at most that long and never the others;
 /// the backend draws one frame at a time, and a frame's bytes are sent after its lock is left.
 
+#include <atomic>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -79,8 +81,9 @@ class ViewServer {
   int port() const { return port_; }
   /// http://ADDRESS:PORT/ (an IPv6 address in brackets).
   std::string Address() const;
-  /// Serves until Stop().
+  /// Serves until Stop() (at once when Stop came first).
   void Serve();
+  /// Ends Serve, from any thread, whether or not Serve has started listening yet.
   void Stop();
 
  private:
@@ -89,6 +92,7 @@ class ViewServer {
   std::unique_ptr<Impl> impl_;
   std::string bind_;
   int port_ = 0;
+  std::atomic<bool> serving_{false}, stopping_{false};
 };
 
 }  // namespace prt

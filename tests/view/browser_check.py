@@ -229,6 +229,30 @@ def main():
             check(drawn >= 5, "frames kept coming while playing (%d drawn)" % drawn)
             check(page.evaluate("prtView.outOfOrder") == 0 and page.evaluate("prtView.streams") == 1,
                   "every frame came in order, on one stream")
+
+            # An input the scene cannot draw (a mode never computed, asked for by hand): the
+            # stream's error record shows on the page, and the stream goes on.
+            page.evaluate("view.transport = { basis: 'sh', mode: 'interreflection' }; changed()")
+            page.wait_for("document.getElementById('status').textContent.includes('not computed')")
+            check(True, "an input the scene cannot draw shows the stream's reason on the page")
+            drawn = page.evaluate("prtView.framesDrawn")
+            page.evaluate("view.transport = { basis: 'sh', mode: 'shadowed' }; changed()")
+            settled(page, drawn)
+
+            # The stream ends under the page (another request takes its name, so the server ends
+            # it): the page opens one new stream, and frames go on from where the light is.
+            drawn = page.evaluate("prtView.framesDrawn")
+            page.evaluate("(() => { const c = new AbortController();"
+                          " fetch('/stream?stream=' + prtView.stream, { headers: { 'X-Prt-Stream': '1' }, signal: c.signal })"
+                          ".then(() => c.abort(), () => {}); })()")
+            page.wait_for("prtView.streams === 2 && prtView.stream !== null", timeout=30)
+            page.evaluate("view.turn = { axis: view.turn.axis, angle: 123 }; changed()")
+            settled(page, drawn)
+            time.sleep(2.5)  # longer than a keep-alive: a second stream would have been opened by now
+            check(page.evaluate("prtView.streams") == 2 and "angle=123&" in page.evaluate("prtView.lastQuery"),
+                  "the page reopened one stream when its stream ended, and drew the newest input (%d streams)"
+                  % page.evaluate("prtView.streams"))
+            check(page.evaluate("prtView.outOfOrder") == 0, "frames came in order on the new stream too")
             browser.pump(0.2)
             check(page.errors() == [], "no console error over the whole session: %s" % page.errors())
     finally:

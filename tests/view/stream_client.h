@@ -19,7 +19,8 @@ struct StreamRecord {
 
 class StreamClient {
  public:
-  /// GET /stream?stream=NAME&input=INPUT&QUERY on 127.0.0.1:port; reads the reply's head.
+  /// GET /stream?stream=NAME&input=INPUT&QUERY on 127.0.0.1:port, with the page's X-Prt-Stream
+  /// header; reads the reply's head.
   StreamClient(int port, const std::string& name, const std::string& query, std::uint64_t input);
   ~StreamClient();
   StreamClient(const StreamClient&) = delete;
@@ -45,7 +46,7 @@ class StreamClient {
   bool ended_ = false;
 };
 
-/// POST /input?stream=NAME&PARAMS with the page's Origin: the reply's status.
+/// POST /input?stream=NAME&PARAMS with the page's Origin and X-Prt-Stream header: the reply's status.
 int PostInput(int port, const std::string& name, const std::string& params);
 
 }  // namespace prt::test

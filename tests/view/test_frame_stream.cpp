@@ -42,9 +42,9 @@ std::uint32_t Field(const std::string& s, std::size_t at) {
 TEST_SUITE("view") {
 
 TEST_CASE("frame stream: an input drawn at once at interactive quality, its still frame once it has stayed kStillDelay") {
+  const auto t0 = Clock::now();
   FrameStream s(Turned(10), 1);
   FrameStream::Job job;
-  const auto t0 = Clock::now();
   REQUIRE(s.Next(job) == FrameStream::Step::kDraw);
   CHECK(job.request.interactive);
   CHECK(job.input == 1);
@@ -128,6 +128,35 @@ TEST_CASE("frame stream: Stop wakes a waiting Next and every later one; silence 
   CHECK(s.Stopped());
   s.Want(Turned(5), 5);
   CHECK(s.Next(job) == FrameStream::Step::kStopped);
+}
+
+TEST_CASE("frame stream: a page silent for its silence limit with its window full ends its stream; one that answers does not") {
+  constexpr std::chrono::milliseconds kSilence{400};
+  FrameStream s(Turned(0), 1, kSilence);
+  FrameStream::Job job;
+  REQUIRE(s.Next(job) == FrameStream::Step::kDraw);
+  REQUIRE(s.Next(job) == FrameStream::Step::kDraw);  // the still frame: the window is full
+  const auto full = Clock::now();
+  CHECK(s.Next(job) == FrameStream::Step::kStopped);
+  CHECK(Clock::now() - full >= kSilence - std::chrono::milliseconds(150));  // counted from the last word
+  CHECK(s.Stopped());
+
+  // A page that keeps acknowledging, however slowly within the limit, keeps its stream; so does
+  // one whose window is not full, however long it says nothing.
+  FrameStream answered(Turned(0), 1, kSilence);
+  REQUIRE(answered.Next(job) == FrameStream::Step::kDraw);
+  for (int i = 2; i <= 6; ++i) {
+    std::this_thread::sleep_for(kSilence / 2);
+    answered.Shown(job.frame);
+    answered.Want(Turned(i), static_cast<std::uint64_t>(i));
+    REQUIRE(answered.Next(job) == FrameStream::Step::kDraw);
+  }
+  answered.Shown(job.frame);
+  REQUIRE(answered.Next(job) == FrameStream::Step::kDraw);  // input 6's still frame: one in flight
+  const auto idle = Clock::now();
+  CHECK(answered.Next(job) == FrameStream::Step::kKeepAlive);  // 2 s without a word: not dropped
+  CHECK(Clock::now() - idle >= kKeepAlive);
+  CHECK_FALSE(answered.Stopped());
 }
 
 TEST_CASE("stream records: a frame's header fields little-endian, its pixels RGBA and opaque; errors and keep-alives") {

@@ -173,8 +173,8 @@ TEST_SUITE("view") {
     std::atomic<int> wrong{0}, early{0}, served{0};
     std::thread make([&] {
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
-      ready = true;
       late.Ready(scene);
+      ready = true;  // after: a client that saw it must find the scene
     });
     test::OnThreads(3, [&](int) {
       for (int i = 0; i < 40; ++i) {

@@ -17,7 +17,9 @@ TEST_CASE("prt view in chromium: no console error, a drag turns the light as ren
   // Each check the script makes is named; none may be missing from its report.
   for (const char* said : {"no console error", "turned the light by 45 degrees", "prt render's of the same light",
                            "still render's picture", "the drags composed", "--start-angle 10", "the measured exposure", "the transport view on the page", "from the oldest input", "prt render --lmax 1", "changed the picture",
-                           "shows its frame rate", "the page shows the error", "more bands, less error"})
+                           "shows its frame rate", "the page shows the error", "more bands, less error",
+                           "interactive quality while it moved", "in order, on one stream", "the stream's reason",
+                           "reopened one stream"})
     CHECK(r.err.find(said) != std::string::npos);
   CHECK(r.err.find("FAILED") == std::string::npos);
 }

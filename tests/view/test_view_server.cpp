@@ -398,7 +398,7 @@ TEST_CASE("prt view listens before its first transport: the page at once with th
   const HttpReply frame = Request(port, "/frame");
   CHECK(frame.status == 409);
   CHECK(frame.body.find("starting") != std::string::npos);
-  CHECK(Request(port, "/stream?stream=0123456789abcdef").status == 409);
+  CHECK(Request(port, "/stream?stream=0123456789abcdef", "GET", "X-Prt-Stream: 1\r\n").status == 409);
   CHECK(Request(port, "/command").status == 409);
   // A second server on its port is refused at once, before its own transport: a clear error, no
   // address printed, nothing computed.

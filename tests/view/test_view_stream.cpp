@@ -171,7 +171,19 @@ TEST_CASE("prt view's stream: what /input and /stream refuse") {
   CHECK(PostInput(port, kName, "input=5&angle=abc") == 400);  // the frame query checked as /frame's
   CHECK(PostInput(port, kName, "input=5&lmax=99") == 400);
   CHECK(Request(port, "/input?stream=" + kName + "&shown=1").status == 404);  // a GET changes nothing
-  CHECK(Request(port, "/input?stream=" + kName + "&shown=1", "POST").status == 403);  // no Origin
+  const std::string page = "X-Prt-Stream: 1\r\n", origin = "Origin: http://127.0.0.1:" + std::to_string(port) + "\r\n";
+  CHECK(Request(port, "/input?stream=" + kName + "&shown=1", "POST", page).status == 403);  // no Origin
+  CHECK(Request(port, "/input?stream=" + kName + "&shown=1", "POST", "Origin: http://evil.example\r\n" + page).status == 403);
+  // Only prt's own page sends X-Prt-Stream (another page cannot without a preflight, which is
+  // refused; an <img> or a form cannot at all): without it, no stream and no input.
+  const HttpReply no_header = Request(port, "/input?stream=" + kName + "&shown=1", "POST", origin);
+  CHECK(no_header.status == 403);
+  CHECK(no_header.body.find("X-Prt-Stream") != std::string::npos);
+  CHECK(Request(port, "/stream?stream=" + kOther).status == 403);
+  CHECK(Request(port, "/stream?stream=" + kOther, "GET", "X-Prt-Stream: 0\r\n").status == 403);
+  // No preflight passes: refused without an Origin (403), not allowed with the page's own (405).
+  CHECK(Request(port, "/stream?stream=" + kOther, "OPTIONS", page).status == 403);
+  CHECK(Request(port, "/stream?stream=" + kOther, "OPTIONS", origin + page).status == 405);
   StreamClient bad(port, kOther, "lmax=99", 0);
   CHECK(bad.status() == 400);
   StreamClient unnamed(port, "", "", 0);

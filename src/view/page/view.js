@@ -19,6 +19,7 @@ const view = {
   answered: 0,            // the input the picture answers
   stream: null,           // the open stream's name
   streams: 0,             // streams opened (a reconnect opens another)
+  opening: null,          // the name of the stream being opened
   frame: 0,               // the number of the frame on the page, in its stream
   shown: 0,               // the same, as told to the server
   outOfOrder: 0,          // frames that came after a later one (never, on one stream)
@@ -163,27 +164,33 @@ function randomName() {
   return Array.from(bytes, (b) => b.toString(16).padStart(2, '0')).join('');
 }
 
+// The page's stream requests carry this header: only the page itself can send it (the server
+// refuses them without), so no other page, even of the same site, can open a stream.
+const STREAM_HEADERS = { 'X-Prt-Stream': '1' };
+
 async function sendInput() {
   if (!view.stream) return;
   if (view.posting) { view.postAgain = true; return; }
   view.posting = true;
+  const name = view.stream;  // this stream's inputs only: a reconnect sends its own
   try {
     do {
       view.postAgain = false;
       const fresh = view.input > view.posted;
-      const shown = view.shown;
-      const url = '/input?stream=' + view.stream + '&shown=' + shown +
+      const url = '/input?stream=' + name + '&shown=' + view.shown +
         (fresh ? '&input=' + view.input + '&' + query() : '');
       const sentInput = view.input;
-      const res = await fetch(url, { method: 'POST' });
-      if (res.status === 404) { openStream(); return; }
+      const res = await fetch(url, { method: 'POST', headers: STREAM_HEADERS });
+      if (view.stream !== name) return;  // the stream ended meanwhile: its successor has the input
+      if (res.status === 404) { reopenStream(name); return; }
       if (!res.ok) status('input: ' + (await res.text()).trim());
-      if (fresh) view.posted = sentInput;
+      else if (fresh) view.posted = Math.max(view.posted, sentInput);
     } while (view.postAgain || view.input > view.posted);
   } catch (e) {
     status('input: ' + e);
   } finally {
     view.posting = false;
+    if (view.stream && view.stream !== name) sendInput();  // what came meanwhile goes to the new stream
   }
 }
 
@@ -225,29 +232,34 @@ function showFrame(h, pixels) {
   sendInput();
 }
 
+// Opens the page's one stream; a stream that ends (the server dropped it, the connection broke)
+// is replaced once, by reopenStream, never twice.
 async function openStream() {
   const name = randomName();
   view.stream = null;
-  view.frame = 0;
-  view.shown = 0;
-  view.posted = view.input;
+  view.opening = name;
   let res;
   try {
-    res = await fetch('/stream?stream=' + name + '&input=' + view.input + '&' + query());
+    res = await fetch('/stream?stream=' + name + '&input=' + view.input + '&' + query(), { headers: STREAM_HEADERS });
   } catch (e) {
     status('stream: ' + e + ' (trying again)');
-    setTimeout(openStream, 1000);
+    setTimeout(() => reopenStream(name), 1000);
     return;
   }
-  if (!res.ok) { status('stream: ' + (await res.text()).trim()); setTimeout(openStream, 1000); return; }
+  if (view.opening !== name) { res.body && res.body.cancel(); return; }
+  if (!res.ok) { status('stream: ' + (await res.text()).trim()); setTimeout(() => reopenStream(name), 1000); return; }
   view.stream = name;
+  view.frame = 0;
+  view.shown = 0;
+  view.posted = Math.max(view.posted, view.input);  // the stream starts with the newest input
   view.streams++;
   const reader = res.body.getReader();
-  let header = new Uint8Array(HEADER), have = 0, h = null, body = null, at = 0;
+  const header = new Uint8Array(HEADER);
+  let have = 0, h = null, body = null, at = 0;
   try {
     for (;;) {
       const { value, done } = await reader.read();
-      if (done) break;
+      if (done || view.stream !== name) break;
       let i = 0;
       while (i < value.length) {
         if (!h) {
@@ -277,9 +289,19 @@ async function openStream() {
       }
     }
   } catch (e) {
-    // the connection broke: open another below
+    // the connection broke: another stream below
   }
-  if (view.stream === name) { view.stream = null; setTimeout(openStream, 250); }
+  reader.cancel().catch(() => {});
+  reopenStream(name);
+}
+
+// Replaces stream `name` once it has ended, if it is still the page's stream (or the one being
+// opened): a late 404 of an old stream, or a second end, opens nothing more.
+function reopenStream(name) {
+  if (view.stream !== name && view.opening !== name) return;
+  view.stream = null;
+  view.opening = null;
+  setTimeout(openStream, 250);
 }
 
 // The page's text changes only when a frame arrives (showFrame); this only clears the frame
@@ -316,6 +338,7 @@ async function ensureTransport() {
     }
     if (t && t.state === 'failed') { status.busy = false; status(t.error + ' (showing ' + shown + ')'); return; }
     if (!t) await fetch('/compute?basis=' + encodeURIComponent(basis) + '&mode=' + encodeURIComponent(mode), { method: 'POST' });
+    if (generation !== view.choice) return;
     const p = state.progress;
     status.busy = true;
     status('computing the ' + key + ' transport' + (p.active ? ': ' + p.label + ' ' + Math.round(100 * p.fraction) + ' %' : '') +
