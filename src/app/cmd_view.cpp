@@ -57,8 +57,9 @@ CommandSpec ViewSpec() {
   RenderJobOptions job;
   job.cache = "none";
   return {"prt view [scene options] [render options] [--port N] [--bind ADDRESS] [ENV ...]",
-          "Computes the scene's transport (or reads it from --cache), then serves a page on which the scene is relit "
-          "live by prt's own renderer: drag to turn the light about any axis (the environment behind turns with it), "
+          "Serves a page at once, showing the progress while the scene's transport is computed (or read from "
+          "--cache), on which the scene is then relit live by prt's own renderer, frames pushed as they are drawn "
+          "(while the light or camera moves at an interactive quality, then the frame prt render draws): drag to turn the light about any axis (the environment behind turns with it), "
           "right-drag or shift-drag to orbit the camera, the wheel to zoom; switch lmax (up to --lmax: SH bands "
           "nest), the transport mode and basis (each computed on first use, then kept), the view, exposure and tone "
           "curve, and the environment among --env and the ENV arguments after the options. The page shows the frame "
