@@ -173,6 +173,11 @@ def view_phase(a, load):
             say("view_sh_draw_ms" + suffix, page.evaluate("document.getElementById('drawms').textContent"))
             say("view_sh_input_to_picture_ms" + suffix, "%.1f" % input_latency(page, 30))
             say("view_sh_out_of_order_frames" + suffix, page.evaluate("prtView.outOfOrder"))
+            # The page idle (the light still, its still frame shown): what it costs the machine.
+            page.wait_for("prtView.still && prtView.answered === prtView.input")
+            idle = Cores(pids)
+            time.sleep(a.seconds)
+            say("view_idle_cores" + suffix, idle.line())
             if not a.no_wavelet and not load:
                 t0 = time.monotonic()
                 page.evaluate("(() => { const b = document.getElementById('basis'); b.value = 'wavelet';"

@@ -311,12 +311,13 @@ setInterval(() => {
   if (times.length && performance.now() - times[times.length - 1] > 1000) { times.length = 0; $('fps').textContent = '-'; }
 }, 1000);
 
+// While playing, the light turns with the display's frames; an idle page asks for none (it
+// would cost the server's machine a share of a core for nothing).
 function tick(now) {
-  if (view.playing) {
-    const dt = view.lastTick ? now - view.lastTick : 0;
-    view.turn = { axis: view.turn.axis, angle: (view.turn.angle + dt * 0.045) % 360 };  // 45 degrees a second
-    changed();
-  }
+  if (!view.playing) { view.lastTick = null; view.ticking = false; return; }
+  const dt = view.lastTick ? now - view.lastTick : 0;
+  view.turn = { axis: view.turn.axis, angle: (view.turn.angle + dt * 0.045) % 360 };  // 45 degrees a second
+  changed();
   view.lastTick = now;
   requestAnimationFrame(tick);
 }
@@ -383,6 +384,7 @@ function setupControls() {
   $('play').addEventListener('click', () => {
     view.playing = !view.playing;
     $('play').textContent = view.playing ? 'pause' : 'play';
+    if (view.playing && !view.ticking) { view.ticking = true; requestAnimationFrame(tick); }
   });
   $('reset').addEventListener('click', () => { view.turn = { axis: view.turn.axis, angle: 0 }; changed(); });
   $('measure').addEventListener('click', measure);
@@ -449,6 +451,5 @@ async function start() {
   setupControls();
   changed();
   openStream();
-  requestAnimationFrame(tick);
 }
 start();
