@@ -141,22 +141,30 @@ TEST_CASE("frame stream: a page silent for its silence limit with its window ful
   CHECK(Clock::now() - full >= kSilence - std::chrono::milliseconds(150));  // counted from the last word
   CHECK(s.Stopped());
 
-  // A page that keeps acknowledging, however slowly within the limit, keeps its stream; so does
-  // one whose window is not full, however long it says nothing.
+  // A page that keeps answering within the limit keeps its stream, its window full all along
+  // (it says it has shown the same frame again: heard, though nothing moves).
   FrameStream answered(Turned(0), 1, kSilence);
   REQUIRE(answered.Next(job) == FrameStream::Step::kDraw);
-  for (int i = 2; i <= 6; ++i) {
+  REQUIRE(answered.Next(job) == FrameStream::Step::kDraw);  // the still frame: the window is full
+  FrameStream::Job later;
+  auto waiting = NextLater(answered, later);
+  for (int i = 0; i < 6; ++i) {  // 1.2 s: three limits' worth of time, each part answered in time
     std::this_thread::sleep_for(kSilence / 2);
-    answered.Shown(job.frame);
-    answered.Want(Turned(i), static_cast<std::uint64_t>(i));
-    REQUIRE(answered.Next(job) == FrameStream::Step::kDraw);
+    answered.Shown(0);
   }
-  answered.Shown(job.frame);
-  REQUIRE(answered.Next(job) == FrameStream::Step::kDraw);  // input 6's still frame: one in flight
+  CHECK(StillWaiting(waiting, 0));  // neither ended nor drawing
+  answered.Stop();
+  CHECK(waiting.get() == FrameStream::Step::kStopped);
+
+  // One whose window has room may say nothing for longer than the limit: it only gets keep-alives.
+  FrameStream roomy(Turned(0), 1, kSilence);
+  REQUIRE(roomy.Next(job) == FrameStream::Step::kDraw);
+  roomy.Shown(job.frame);
+  REQUIRE(roomy.Next(job) == FrameStream::Step::kDraw);  // the still frame: one in flight
   const auto idle = Clock::now();
-  CHECK(answered.Next(job) == FrameStream::Step::kKeepAlive);  // 2 s without a word: not dropped
+  CHECK(roomy.Next(job) == FrameStream::Step::kKeepAlive);  // 2 s without a word: not dropped
   CHECK(Clock::now() - idle >= kKeepAlive);
-  CHECK_FALSE(answered.Stopped());
+  CHECK_FALSE(roomy.Stopped());
 }
 
 TEST_CASE("stream records: a frame's header fields little-endian, its pixels RGBA and opaque; errors and keep-alives") {

@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include <atomic>
+#include <future>
 #include <chrono>
 #include <memory>
 #include <mutex>
@@ -199,6 +200,26 @@ TEST_SUITE("view") {
     CHECK(served > 0);
     server.Stop();
     serving.join();
+  }
+
+  TEST_CASE("threads: a server stopped before it serves does not serve, whichever thread gets there first") {
+    CountingBackend backend;
+    for (const bool stop_first : {true, false}) {
+      CAPTURE(stop_first);
+      ViewServer server(backend, "127.0.0.1", 0);
+      if (stop_first) server.Stop();
+      std::promise<void> served;
+      std::future<void> done = served.get_future();
+      std::thread serving([&] {
+        server.Serve();
+        served.set_value();
+      });
+      if (!stop_first) server.Stop();  // racing Serve's start: it listens first or sees the stop
+      const bool returned = done.wait_for(std::chrono::seconds(3)) == std::future_status::ready;
+      CHECK(returned);
+      if (!returned) server.Stop();  // listening after all: stopped now, so that the test ends
+      serving.join();
+    }
   }
 }
 
