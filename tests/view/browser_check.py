@@ -230,9 +230,28 @@ def main():
             check(page.evaluate("prtView.outOfOrder") == 0 and page.evaluate("prtView.streams") == 1,
                   "every frame came in order, on one stream")
 
+            # Another mode chosen: computed in the background while the page goes on drawing the
+            # mode it shows, saying which; then that mode.
+            page.evaluate("(() => { const m = document.getElementById('mode'); m.value = 'interreflection';"
+                          " m.dispatchEvent(new Event('change')); })()")
+            page.wait_for("document.getElementById('status').textContent.includes('(showing sh shadowed)')")
+            drawn = page.evaluate("prtView.framesDrawn")
+            page.evaluate("view.turn = { axis: view.turn.axis, angle: 77 }; changed()")
+            page.wait_for("prtView.framesDrawn > %d && prtView.answered === prtView.input" % drawn)
+            shown_meanwhile = page.evaluate("prtView.lastQuery")
+            check("angle=77&" in shown_meanwhile and "mode=shadowed&" in shown_meanwhile,
+                  "while another mode computes, the page draws the mode it shows and says which: " + shown_meanwhile)
+            page.wait_for("prtView.lastQuery.includes('mode=interreflection&') && prtView.still", timeout=120)
+            check(page.evaluate("document.getElementById('status').textContent") == "",
+                  "then it draws the new mode, and says nothing more")
+            drawn = page.evaluate("prtView.framesDrawn")
+            page.evaluate("(() => { const m = document.getElementById('mode'); m.value = 'shadowed';"
+                          " m.dispatchEvent(new Event('change')); })()")
+            page.wait_for("prtView.lastQuery.includes('mode=shadowed&') && prtView.still", timeout=60)
+
             # An input the scene cannot draw (a mode never computed, asked for by hand): the
             # stream's error record shows on the page, and the stream goes on.
-            page.evaluate("view.transport = { basis: 'sh', mode: 'interreflection' }; changed()")
+            page.evaluate("view.transport = { basis: 'sh', mode: 'unshadowed' }; changed()")
             page.wait_for("document.getElementById('status').textContent.includes('not computed')")
             check(True, "an input the scene cannot draw shows the stream's reason on the page")
             drawn = page.evaluate("prtView.framesDrawn")

@@ -19,7 +19,8 @@ TEST_CASE("prt view in chromium: no console error, a drag turns the light as ren
                            "still render's picture", "the drags composed", "--start-angle 10", "the measured exposure", "the transport view on the page", "from the oldest input", "prt render --lmax 1", "changed the picture",
                            "shows its frame rate", "the page shows the error", "more bands, less error",
                            "interactive quality while it moved", "in order, on one stream", "the stream's reason",
-                           "reopened one stream"})
+                           "reopened one stream",
+                           "draws the mode it shows and says which"})
     CHECK(r.err.find(said) != std::string::npos);
   CHECK(r.err.find("FAILED") == std::string::npos);
 }
