@@ -13,6 +13,8 @@
 #include "wavelet/frame_light.h"
 #include "wavelet/light_cube.h"
 #include "wavelet/texel_sh.h"
+#include "wavelet/wavelet_basis.h"
+#include "basis/cache_plan.h"
 #include "wavelet/shade.h"
 
 namespace prt {
@@ -190,6 +192,44 @@ TEST_SUITE("wavelet") {
     constexpr double kInteractiveNear = 0.03;
     CHECK(std::sqrt(diff / norm) < kInteractiveNear);
     CHECK_FALSE(same);  // it is the coarser light, not the still one
+  }
+
+  TEST_CASE("frame light: the wavelet basis keeps the still light at still quality, the coarser one only at interactive") {
+    // Through the basis, as render and prt view ask for it: the light kept at kStill is the
+    // default cell cube's, at kInteractive the kInteractiveCells one's (each against the cube
+    // resampled here by hand), so that render's frames and prt view's still ones stay the still
+    // light's.
+    const Basis& basis = WaveletBasis();
+    const Mesh mesh = MakeSphere(4);
+    const TransportOptions transport;
+    const std::shared_ptr<const BasisSettings> own = basis.DefaultSettings();
+    const glm::dvec3 axis(0, 1, 0);
+    const CpcaOptions cpca{};
+    const auto sky = MakeSky(SkyParams{});
+    const CachePlan cache{"", false, {}};
+    const std::string why;
+    const BasisInputs in{mesh, transport, false, why, *own, axis, cpca, *sky, nullptr, cache, false};
+    const std::unique_ptr<PreparedBasis> prepared = basis.PrepareLight(in);
+    const int face = WaveletOptions{}.face_size;
+    const CubeGrid grid(face);
+    constexpr double kAngle = 0.6;
+    for (const LightQuality quality : {LightQuality::kStill, LightQuality::kInteractive}) {
+      const bool still = quality == LightQuality::kStill;
+      CAPTURE(still);
+      const auto light = prepared->Light(*sky, {}, axis, 0, quality);
+      light->Turn(kAngle);
+      CubeRgb mine, other;
+      LightCube(*sky, grid, still ? 0 : kInteractiveCells).Resample(AxisAngle(axis, kAngle), mine);
+      LightCube(*sky, grid, still ? kInteractiveCells : 0).Resample(AxisAngle(axis, kAngle), other);
+      double off = 0.0, off_other = 0.0;
+      for (std::size_t t = 0; t < grid.texels(); ++t) {
+        const double kept = light->Kept(grid.Direction(t)).y;
+        off = std::max(off, std::abs(kept - mine.c[1][t]) / std::max(1e-6, std::abs(mine.c[1][t])));
+        off_other = std::max(off_other, std::abs(kept - other.c[1][t]) / std::max(1e-6, std::abs(other.c[1][t])));
+      }
+      CHECK(off < 1e-5);        // float rounding of the Haar round trip
+      CHECK(off_other > 1e-3);  // and the other quality's light is another
+    }
   }
 }
 
