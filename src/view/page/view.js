@@ -183,8 +183,11 @@ async function sendInput() {
       const res = await fetch(url, { method: 'POST', headers: STREAM_HEADERS });
       if (view.stream !== name) return;  // the stream ended meanwhile: its successor has the input
       if (res.status === 404) { reopenStream(name); return; }
-      if (!res.ok) status('input: ' + (await res.text()).trim());
-      else if (fresh) view.posted = Math.max(view.posted, sentInput);
+      if (!res.ok) {  // refused (a query the scene cannot take): said, and sent again with the next
+        status('input: ' + (await res.text()).trim());  // message to the server, not in a loop
+        break;
+      }
+      if (fresh) view.posted = Math.max(view.posted, sentInput);
     } while (view.postAgain || view.input > view.posted);
   } catch (e) {
     status('input: ' + e);
