@@ -289,6 +289,13 @@ def main():
                   "the page reopened one stream when its stream ended, and drew the newest input (%d streams)"
                   % page.evaluate("prtView.streams"))
             check(page.evaluate("prtView.outOfOrder") == 0, "frames came in order on the new stream too")
+            # Told twice that the same stream ended (its reader's end and a late 404 of an input
+            # sent to it): one new stream, not two.
+            page.evaluate("(() => { const n = prtView.stream; reopenStream(n); reopenStream(n); })()")
+            page.wait_for("prtView.streams >= 3 && prtView.stream !== null", timeout=30)
+            time.sleep(2.5)
+            check(page.evaluate("prtView.streams") == 3,
+                  "an end said twice opens one stream (%d streams in all)" % page.evaluate("prtView.streams"))
             browser.pump(0.2)
             # The one refused input above is logged by the browser as a failed load, once.
             refused = "log: Failed to load resource: the server responded with a status of 400 (Bad Request)"

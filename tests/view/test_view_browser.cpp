@@ -21,7 +21,8 @@ TEST_CASE("prt view in chromium: no console error, a drag turns the light as ren
                            "interactive quality while it moved", "in order, on one stream", "the stream's reason",
                            "reopened one stream",
                            "draws the mode it shows and says which", "not posted again and again",
-                           "sent again with the next message"})
+                           "sent again with the next message",
+                           "an end said twice opens one stream"})
     CHECK(r.err.find(said) != std::string::npos);
   CHECK(r.err.find("FAILED") == std::string::npos);
 }
