@@ -261,6 +261,21 @@ def main():
             page.evaluate("view.transport = { basis: 'sh', mode: 'shadowed' }; changed()")
             settled(page, drawn)
 
+            # Two choices in a row, the first still asking for its transport when the second (a
+            # ready one) is drawn: the first gives way, and says nothing more. Its /compute is
+            # held back 0.5 s here, so that the second comes while the first waits for it.
+            page.evaluate("(() => { const f = window.fetch; window.computeAsked = false;"
+                          " window.fetch = (u, o) => { if (String(u).startsWith('/compute')) { window.computeAsked = true;"
+                          " return new Promise((r) => setTimeout(() => r(f(u, o)), 500)); } return f(u, o); };"
+                          " const m = document.getElementById('mode'); m.value = 'unshadowed'; m.dispatchEvent(new Event('change')); })()")
+            page.wait_for("window.computeAsked")
+            page.evaluate("(() => { const m = document.getElementById('mode'); m.value = 'shadowed';"
+                          " m.dispatchEvent(new Event('change')); })()")
+            time.sleep(1.5)
+            status_after = page.evaluate("document.getElementById('status').textContent")
+            check(status_after == "" and page.evaluate("view.transport.mode") == "shadowed",
+                  "a choice overtaken by a later one gives way and says nothing more: '%s'" % status_after)
+
             # An input the server refuses (a basis the run does not offer, set by hand): the page
             # says why, does not post it in a loop, and sends the input again with its next
             # message (here an acknowledgement), once it can be drawn.

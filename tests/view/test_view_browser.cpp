@@ -22,7 +22,7 @@ TEST_CASE("prt view in chromium: no console error, a drag turns the light as ren
                            "reopened one stream",
                            "draws the mode it shows and says which", "not posted again and again",
                            "sent again with the next message",
-                           "an end said twice opens one stream"})
+                           "an end said twice opens one stream", "overtaken by a later one gives way"})
     CHECK(r.err.find(said) != std::string::npos);
   CHECK(r.err.find("FAILED") == std::string::npos);
 }
