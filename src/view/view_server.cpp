@@ -258,11 +258,12 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
            const std::shared_ptr<FrameStream> stream = impl_->streams.Find(StreamName(req));
            if (!stream) return Text(res, 404, "stream: not open (it ended: the page opens another)");
            if (req.has_param("shown")) stream->Shown(Count("shown", req.get_param_value("shown")));
+           const std::vector<std::pair<std::string, std::string>> frame = FrameParams(req);
            if (req.has_param("input")) {
              const std::uint64_t input = Count("input", req.get_param_value("input"));
-             stream->Want(ParseFrameRequest(FrameParams(req), backend.Defaults(), backend.Limits()), input);
-           } else if (!FrameParams(req).empty()) {
-             throw Error(FrameParams(req).front().first + ": a frame parameter without input= (expected input=N with them)");
+             stream->Want(ParseFrameRequest(frame, backend.Defaults(), backend.Limits()), input);
+           } else if (!frame.empty()) {
+             throw Error(frame.front().first + ": a frame parameter without input= (expected input=N with them)");
            }
            res.status = 204;
          }));

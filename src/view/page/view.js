@@ -12,7 +12,6 @@ const view = {
   turn: { axis: [0, 1, 0], angle: 0 },  // the light's rotation: degrees about a unit axis
   playing: false,
   camera: null,           // {eye, target, up, fov}
-  dirty: true,            // the picture is not the one the controls ask for
   input: 0,               // the newest input's number (each change of a control or the light)
   inputs: [],             // [number, time, query] of the inputs no frame has answered yet
   posted: 0,              // the newest input sent to the server
@@ -134,7 +133,6 @@ function changed() {
   view.input++;
   view.inputs.push([view.input, performance.now(), query()]);
   if (view.inputs.length > 200) view.inputs.shift();
-  view.dirty = true;
   const { axis, angle } = axisAngle();
   $('angletext').textContent = angle.toFixed(1);
   if (document.activeElement !== $('angle')) $('angle').value = String(((angle % 360) + 360) % 360);
@@ -215,7 +213,6 @@ function showFrame(h, pixels) {
   view.answered = input;
   view.still = (flags & 1) === 1;
   if (view.still) view.stillFrames++; else view.interactiveFrames++;
-  view.dirty = input < view.input;
   view.framesDrawn++;
   view.frameTimes.push(now);
   while (view.frameTimes.length && now - view.frameTimes[0] > 1000) view.frameTimes.shift();
@@ -284,7 +281,6 @@ async function openStream() {
         else if (h.kind === 'PRTE') {
           status('frame: ' + new TextDecoder().decode(body).trim());
           view.answered = h.f[1];
-          view.dirty = view.answered < view.input;
           view.shown = h.f[0];
           sendInput();
         }
