@@ -56,7 +56,8 @@ ShRgb ComputeLight(const Environment& env, const SceneOptions& options, View vie
 Mesh LoadSceneMesh(const SceneOptions& options, OutputFolder* folder = nullptr);
 
 /// What the scene options change in any mesh: `--albedo`, then the `--max-edge` split (refused
-/// with an Error before splitting when it would make an unreasonable number of triangles).
+/// with an Error before splitting when it would make an unreasonable number of triangles; the
+/// faces as read stay in `file_triangles`, on the vertices they had, for --vertex-radiance).
 void ApplySceneEdits(Mesh& mesh, const SceneOptions& options);
 
 /// Ends a successful run's use of `folder` (OutputFolder::Finish): removes what an earlier run

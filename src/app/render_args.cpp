@@ -100,9 +100,10 @@ std::map<std::string, OptionSpec> RenderSpecs(const RenderJobOptions& job) {
        "measured; off: the full matrices",
        job.cpca.clusters > 0 ? std::to_string(job.cpca.clusters) + "," + std::to_string(job.cpca.terms) : "off"});
   add({"--vertex-radiance", "FILE",
-       "write frame 0's per-vertex linear RGB radiance toward the camera (albedo in, before tone mapping) in "
-       "transport.txt's layout: the welded vertex count, then three `R G B` rows per face of the mesh in file "
-       "order, one per corner",
+       "write frame 0's per-vertex linear RGB radiance toward the camera (its light turned by --start-angle; albedo "
+       "in, before tone mapping) in transport.txt's layout: the welded vertex count, then three `R G B` rows per "
+       "face of the mesh as read in file order, one per corner (with --max-edge, the corners of the faces before "
+       "the split; the vertices it adds are not written)",
        job.vertex_radiance.empty() ? "none" : job.vertex_radiance});
   add({"--video", "FILE",
        "the frames also as one video: .png or .apng an animated PNG that loops (written by prt, plays in every "

@@ -51,17 +51,22 @@ OutputPlan RenderPlan(const RenderJobOptions& r) {
   return plan;
 }
 
-/// Frame 0's per-vertex radiance toward the camera (its light not turned), as RenderFrames
-/// shades it, to the --vertex-radiance file `path` (precompute_io/transport_txt.h): one of the
-/// folder's outputs when it lies there; else written beside it under a temporary name, returned
-/// to be renamed into place when the run has succeeded.
+/// Frame 0's per-vertex radiance toward the camera, its light turned to frame 0's angle
+/// (FrameAngle: --start-angle), as RenderFrames shades it, to the --vertex-radiance file `path`
+/// (precompute_io/transport_txt.h: three rows per face of the mesh as read, --max-edge's split
+/// vertices left out): one of the folder's outputs when it lies there; else written beside it
+/// under a temporary name, returned to be renamed into place when the run has succeeded.
 std::unique_ptr<SingleFileOutput> WriteVertexRadiance(const Mesh& mesh, FrameLight& light, const Camera& camera,
-                                                      const std::string& path, OutputFolder& folder) {
+                                                      const RenderOptions& render, const std::string& path,
+                                                      OutputFolder& folder) {
   const glm::dvec3 eye(camera.eye);
-  light.Turn(0.0);
+  light.Turn(FrameAngle(render, 0));
   const std::string text = FormatVertexRadianceTxt(mesh, light.Shade(mesh, true, &eye));
-  Summary("vertex radiance: frame 0's linear RGB radiance of " + std::to_string(mesh.vertex_count()) +
-          " vertices toward the camera, three rows per face, in " + path);
+  const std::size_t written = FileVertexCount(mesh), added = mesh.vertex_count() - written;
+  Summary("vertex radiance: frame 0's linear RGB radiance of " + std::to_string(written) +
+          " vertices toward the camera, three rows per face of the mesh as read" +
+          (added ? " (the " + std::to_string(added) + " vertices --max-edge added are not in it)" : "") + ", in " +
+          path);
   if (LiesIn(path, folder.dir())) {
     WriteFileAtomic(folder.Output(std::filesystem::path(path).filename().string()), text);
     return nullptr;
@@ -146,7 +151,7 @@ void RenderJob(const SceneOptions& scene, const RenderJobOptions& job) {
   FrameLight& frame_light = *light_of_frames;
   std::unique_ptr<SingleFileOutput> radiance_outside;
   if (!job.vertex_radiance.empty())
-    radiance_outside = WriteVertexRadiance(mesh, frame_light, camera, job.vertex_radiance, folder);
+    radiance_outside = WriteVertexRadiance(mesh, frame_light, camera, render, job.vertex_radiance, folder);
 
   RenderVideo video(job.video, render, folder);
   const FrameStats stats = RenderFrames(mesh, frame_light, *env, camera, render, folder, video.writer());

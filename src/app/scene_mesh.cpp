@@ -1,5 +1,6 @@
 // LoadSceneMesh (pipeline.h): the mesh of --mesh or the embedded scene, repaired and reported.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -55,7 +56,13 @@ void SplitLongTriangles(Mesh& mesh, const SceneOptions& options) {
                 " triangles (expected at most " + std::to_string(kMaxSplitTriangles) + ": choose a longer edge)");
   }
   const auto t0 = std::chrono::steady_clock::now();
+  // The faces as read, kept for the files with a row per face of the file (--vertex-radiance's):
+  // the split appends the vertices it adds, so each face's corners are still vertices of the
+  // split mesh, with their own indices (geometry/subdivide.h clears file_triangles).
+  std::vector<std::array<std::uint32_t, 3>> faces_as_read =
+      mesh.file_triangles.empty() ? mesh.triangles : mesh.file_triangles;
   const SplitReport r = SplitLongEdges(mesh, max_edge);
+  if (r.passes > 0) mesh.file_triangles = std::move(faces_as_read);
   char line[200];
   std::snprintf(line, sizeof line, "split: no edge longer than %.4g: %zu triangles -> %zu, %zu vertices added", max_edge,
                 r.triangles_before, r.triangles_after, r.vertices_added);

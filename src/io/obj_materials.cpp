@@ -186,14 +186,14 @@ std::string DescribeMaterialFields(const MaterialFields& fields, const MaterialU
   if (use.glossy || fields.gloss_material.empty() || !fields.keywords.count("Ns")) return out;
   const int n = static_cast<int>(std::lround(std::clamp(double(fields.ns), double(kMinPhongExponent),
                                                         double(kMaxPhongExponent))));
-  double ks = std::clamp((fields.ks.x + fields.ks.y + fields.ks.z) / 3.0, 0.0, 1.0);
-  std::string fit;
-  if (!use.textured && use.brightest_kd + ks > 1.0) {
-    // Down to two decimals, less a rounding margin: Kd 0.8 read as a float is 0.800000012.
-    ks = std::floor((1.0 - use.brightest_kd) * 100.0 + 1e-4) / 100.0;
-    fit = ", KS lowered to fit beside the brightest Kd " + ShortestFloat(use.brightest_kd);
-  }
-  ks = std::round(ks * 100.0) / 100.0;
+  // Two decimals: the nearest, or (untextured) the largest that --material accepts beside the
+  // brightest Kd (FittingKs; a textured mesh's texels are fitted under the coat instead).
+  const double mean_ks = std::clamp((fields.ks.x + fields.ks.y + fields.ks.z) / 3.0, 0.0, 1.0);
+  const KsOffer offer = use.textured ? KsOffer{std::round(mean_ks * 100.0) / 100.0, false}
+                                     : FittingKs(mean_ks, use.brightest_kd);
+  const double ks = offer.ks;
+  const std::string fit =
+      offer.lowered ? ", KS lowered to fit beside the brightest Kd " + ShortestFloat(use.brightest_kd) : "";
   if (!(ks > 0.0)) return out;
   return out + " (shading comes from --material: material '" + fields.gloss_material + "' (Ks " +
          ShortestFloat(float((fields.ks.x + fields.ks.y + fields.ks.z) / 3.0)) + ", Ns " + ShortestFloat(fields.ns) +

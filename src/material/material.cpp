@@ -1,5 +1,6 @@
 #include "material/material.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
@@ -44,13 +45,27 @@ Material ParseMaterial(const std::string& text) {
   return m;
 }
 
-void CheckMaterialEnergy(const Material& material, double max_albedo, const std::string& where) {
+bool EnergyFits(double ks, double max_albedo) {
   // Slack for albedo stored as float (0.8f is 0.800000012): 1e-6.
-  if (!material.glossy || max_albedo + material.ks <= 1.0 + 1e-6) return;
+  return max_albedo + ks <= 1.0 + 1e-6;
+}
+
+void CheckMaterialEnergy(const Material& material, double max_albedo, const std::string& where) {
+  if (!material.glossy || EnergyFits(material.ks, max_albedo)) return;
   throw Error("--material " + material.Name() + ": albedo " + ShortestFloat(float(max_albedo)) + " (" + where + ") + KS " +
               ShortestFloat(float(material.ks)) + " = " + ShortestFloat(float(max_albedo + material.ks)) +
               " exceeds 1: the surface would reflect more light than it receives (expected albedo + KS <= 1; lower KS "
               "or --albedo)");
+}
+
+KsOffer FittingKs(double ks, double max_albedo) {
+  const long nearest = std::lround(std::clamp(ks, 0.0, 1.0) * 100.0);
+  if (EnergyFits(double(nearest) / 100.0, max_albedo)) return {double(nearest) / 100.0, false};
+  // Down from the nearest: the first multiple of 0.01 that fits is the largest (EnergyFits only
+  // tightens as KS grows), floored below the limit, never rounded up past it.
+  for (long k = nearest - 1; k > 0; --k)
+    if (EnergyFits(double(k) / 100.0, max_albedo)) return {double(k) / 100.0, true};
+  return {0.0, true};
 }
 
 double GlossyValue(const Material& material, double r_dot_s) {

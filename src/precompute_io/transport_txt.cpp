@@ -1,5 +1,6 @@
 #include "precompute_io/transport_txt.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -109,8 +110,18 @@ const std::vector<std::array<std::uint32_t, 3>>& FileFaces(const Mesh& mesh) {
 
 }  // namespace
 
+std::size_t FileFaceCount(const Mesh& mesh) { return FileFaces(mesh).size(); }
+
+std::size_t FileVertexCount(const Mesh& mesh) {
+  if (mesh.file_triangles.empty()) return mesh.vertex_count();
+  std::size_t count = 0;
+  for (const auto& tri : mesh.file_triangles)
+    for (std::uint32_t v : tri) count = std::max(count, std::size_t(v) + 1);
+  return count;
+}
+
 std::string FormatVertexRadianceTxt(const Mesh& mesh, const std::vector<glm::vec3>& radiance) {
-  std::string out = std::to_string(mesh.vertex_count()) + "\n";
+  std::string out = std::to_string(FileVertexCount(mesh)) + "\n";
   const auto& faces = FileFaces(mesh);
   out.reserve(out.size() + faces.size() * 3 * 48);
   char row[96];

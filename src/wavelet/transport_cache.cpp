@@ -87,14 +87,18 @@ std::string HeaderProblem(const Header& h) {
 }
 
 /// The reason the arrays (their checksum matching) cannot be read as a transport, or "": each
-/// vertex's details in range, its indices increasing, the probes real vertices.
+/// vertex's details in range, its indices increasing and below the texel count 6 F^2 (an index
+/// of 6 F^2 or more would read past the end of a frame's light, wavelet/shade.h), the probes
+/// real vertices.
 std::string PayloadProblem(const WaveletTransport& t) {
   const std::size_t texels = std::size_t(6) * t.face_size * t.face_size;
   if (t.offsets.front() != 0 || t.offsets.back() != t.index.size()) return "corrupt offsets";
   for (std::size_t v = 0; v < t.vertices; ++v) {
     if (t.offsets[v + 1] < t.offsets[v]) return "corrupt offsets";
     for (std::uint64_t j = t.offsets[v]; j < t.offsets[v + 1]; ++j)
-      if (t.index[j] >= texels || (j > t.offsets[v] && t.index[j] <= t.index[j - 1])) return "corrupt indices";
+      if (t.index[j] >= texels || (j > t.offsets[v] && t.index[j] <= t.index[j - 1]))
+        return "corrupt indices (vertex " + std::to_string(v) + " has detail index " + std::to_string(t.index[j]) +
+               ", expected increasing indices below the cube's " + std::to_string(texels) + " texels)";
   }
   for (std::uint32_t p : t.probes)
     if (p >= t.vertices) return "corrupt probes";

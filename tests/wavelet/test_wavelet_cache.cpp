@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/atomic_file.h"
+#include "core/hash.h"
 #include "geometry/mesh_ops.h"
 #include "geometry/procedural.h"
 #include "precompute_io/transport_cache.h"
@@ -238,6 +239,62 @@ TEST_SUITE("wavelet") {
     CHECK(StartsLikeWaveletCache(good_path));
     CHECK(!StartsLikeWaveletCache(dir + "/sh.cache"));
     CHECK(!StartsLikeTransportCache(good_path));
+  }
+
+  TEST_CASE("wavelet cache: a detail index at the texel count is refused, the last texel's is read") {
+    // A damaged cache whose checksum was made to match (as a writer with a bug would make it):
+    // a detail index of 6 F^2, one past the last texel, would read past the end of the light's
+    // coefficients on every frame. The reader's bound is index < 6 F^2; 6 F^2 - 1 is the last
+    // texel, a valid index.
+    const std::string dir = test::ScratchDir("wavelet_cache_index_bound");
+    const std::string path = dir + "/damaged.cache";
+    constexpr std::uint64_t kKey = 7;
+    const WaveletTransport t = test::SyntheticWaveletTransport();
+    const std::size_t texels = 6 * std::size_t(t.face_size) * std::size_t(t.face_size);
+    WriteWaveletCache(path, t, kKey);
+    const std::string good = ReadFile(path);
+    // The index array's place (transport_cache.h): after the header, base, means, scale and offsets.
+    const std::size_t index_at = kHeaderBytes + sizeof(float) * (t.base.size() + t.means.size() + t.scale.size()) +
+                                 sizeof(std::uint64_t) * t.offsets.size();
+    REQUIRE(index_at + sizeof(std::uint16_t) * t.index.size() <= good.size());
+    // The file with detail j's index set to `index`, its checksum (at byte 64: FNV-1a of the file
+    // with that field 0, the header's fields then the arrays in file order) made to match.
+    const auto with_index = [&](std::size_t j, std::size_t index) {
+      std::string bytes = good;
+      const std::uint16_t stored = static_cast<std::uint16_t>(index);
+      REQUIRE(stored == index);
+      std::memcpy(&bytes[index_at + sizeof stored * j], &stored, sizeof stored);
+      constexpr std::size_t kChecksumAt = 64;
+      const std::uint64_t zero = 0;
+      std::memcpy(&bytes[kChecksumAt], &zero, sizeof zero);
+      const std::uint64_t sum = Fnv1a(bytes.data(), bytes.size());
+      std::memcpy(&bytes[kChecksumAt], &sum, sizeof sum);
+      return bytes;
+    };
+    CHECK(Verdict(path, with_index(0, t.index[0]), kKey) == "reused");  // the checksum made as the writer makes it
+    // The last detail of each vertex that has one (each vertex's indices increase): at the
+    // texel count refused, at the last texel read back with that index.
+    std::size_t damaged = 0;
+    for (std::size_t v = 0; v < t.vertices; ++v) {
+      if (t.offsets[v + 1] == t.offsets[v]) continue;
+      const std::size_t last = t.offsets[v + 1] - 1;
+      CAPTURE(v);
+      const std::string refused = Verdict(path, with_index(last, texels), kKey);
+      CHECK(refused.find("corrupt indices") != std::string::npos);
+      CHECK(refused.find(std::to_string(texels)) != std::string::npos);  // says which bound it broke
+      CHECK(Verdict(path, with_index(last, texels + 1), kKey).find("corrupt indices") != std::string::npos);
+      if (last == t.offsets[v] || t.index[last - 1] < texels - 1) {
+        CHECK(Verdict(path, with_index(last, texels - 1), kKey) == "reused");
+        std::string why;
+        const auto read = ReadWaveletCache(path, kKey, why);
+        REQUIRE_MESSAGE(read, why);
+        CHECK(read->index[last] == texels - 1);
+      }
+      ++damaged;
+    }
+    CHECK(damaged == 4);
+    // Through the reader's refusal, never an exception or a read: a cache of 65535 indices.
+    CHECK(Verdict(path, with_index(t.offsets[1] - 1, 65535), kKey).find("corrupt indices") != std::string::npos);
   }
 
   TEST_CASE("wavelet cache: what cannot be written faithfully is an error, not a file") {
