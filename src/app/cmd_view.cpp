@@ -10,6 +10,7 @@
 #include "app/view_scene.h"
 #include "core/log.h"
 #include "view/late_backend.h"
+#include "view/request_guard.h"
 #include "view/view_server.h"
 
 namespace prt {
@@ -49,6 +50,17 @@ std::vector<std::string> KeptTokens(const std::vector<std::string>& tokens, cons
     i += separate_value;
   }
   return kept;
+}
+
+/// The summary's line on whom the server serves.
+std::string ServingLine(const ViewServer& server, const std::string& bind) {
+  const std::string line = "view: serving " + server.Address();
+  if (IsLoopback(bind)) return line + " to this machine only (--bind ADDRESS serves others)";
+  std::string also;
+  if (IsWildcard(bind))
+    for (const std::string& host : server.Hosts()) also += (also.empty() ? "" : ", ") + host;
+  return line + " on " + bind + " (--bind)" + (also.empty() ? "" : ", as " + also) +
+         ": any machine that reaches it may open the page";
 }
 
 }  // namespace
@@ -98,8 +110,7 @@ int RunView(const std::vector<std::string>& tokens) {
   ViewScene view(setup);
   LateBackend backend;
   ViewServer server(backend, bind, port);
-  Summary("view: serving " + server.Address() + (bind == "127.0.0.1" ? " to this machine only (--bind ADDRESS serves others)"
-                                                                      : " on " + bind + " (--bind): any machine that reaches it may use the page"));
+  Summary(ServingLine(server, bind));
   std::printf("%s\n", server.Address().c_str());
   std::fflush(stdout);
   std::thread serving([&server] { server.Serve(); });

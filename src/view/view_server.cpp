@@ -5,11 +5,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <exception>
 #include <map>
 #include <mutex>
 #include <optional>
+#include <random>
 #include <stdexcept>
+#include <string_view>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -20,7 +23,10 @@
 #include "core/error.h"
 #include "core/text.h"
 #include "io/png_io.h"
+#include "view/deadline_server.h"
+#include "view/draw_queue.h"
 #include "view/frame_stream.h"
+#include "view/growing_pool.h"
 #include "view/page.h"
 #include "view/request_guard.h"
 #include "view/stream_record.h"
@@ -28,14 +34,17 @@
 namespace prt {
 namespace {
 
-/// Seconds a connection may take to send its request or to read a response before it is
-/// dropped: a stalled client holds one pool thread at most this long.
+/// Seconds a connection may take to send its request (view/deadline_server.h) or to read a
+/// response before it is dropped.
 constexpr int kTimeoutSeconds = 5;
-/// The largest request body accepted: the page sends none.
-constexpr std::size_t kMaxBody = 1024;
-/// Threads serving connections: a page keeps one or two busy, so 32 leave room for 30 stalled
-/// clients before another waits for a timeout.
-constexpr std::size_t kPoolThreads = 32;
+/// Threads serving connections at most (view/growing_pool.h): made as connections come, each
+/// held by one connection while it lasts, so that clients that wait leave threads for the page.
+constexpr std::size_t kMaxThreads = 256;
+/// Requested frames (/frame, /frame.png) waiting for their turn at most, and the bytes the
+/// frames asked for may hold until sent (view/draw_queue.h): four of the largest raw frames
+/// (4096^2 RGB, 48 MiB) and more.
+constexpr std::size_t kWaitingRequests = 4;
+constexpr std::size_t kHeldFrameBytes = std::size_t(256) << 20;
 
 void Text(httplib::Response& res, int status, const std::string& text) {
   res.status = status;
@@ -47,8 +56,45 @@ struct Refused : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The parameter that carries the run's token (view/request_guard.h), and its header.
+constexpr const char* kTokenParam = "token";
+constexpr const char* kTokenHeader = "X-Prt-Token";
+
+/// A request's parameters but the token.
 std::vector<std::pair<std::string, std::string>> Query(const httplib::Request& req) {
-  return {req.params.begin(), req.params.end()};
+  std::vector<std::pair<std::string, std::string>> query;
+  for (const auto& [name, value] : req.params)
+    if (name != kTokenParam) query.emplace_back(name, value);
+  return query;
+}
+
+/// Every value of header `name`.
+std::vector<std::string> Values(const httplib::Request& req, const char* name) {
+  std::vector<std::string> values;
+  const auto [begin, end] = req.headers.equal_range(name);
+  for (auto it = begin; it != end; ++it) values.push_back(it->second);
+  return values;
+}
+
+/// A new run's token: 128 random bits in hexadecimal.
+std::string NewToken() {
+  std::random_device random;
+  std::string token;
+  for (int i = 0; i < 4; ++i) {
+    char part[9];
+    std::snprintf(part, sizeof part, "%08x", static_cast<unsigned>(random()));
+    token += part;
+  }
+  return token;
+}
+
+/// The page's index.html with the run's token in it, for the page's script to send.
+std::string PageWithToken(std::string_view html, const std::string& token) {
+  std::string page(html);
+  const std::string meta = "\n<meta name=\"prt-token\" content=\"" + token + "\">";
+  const std::size_t head = page.find("<head>");
+  page.insert(head == std::string::npos ? 0 : head + 6, meta);
+  return page;
 }
 
 /// The header the page puts on its stream requests. A page of another origin cannot send it
@@ -82,7 +128,7 @@ std::uint64_t Count(const std::string& name, const std::string& value) {
 /// The frame query of a stream request: its parameters but stream=, input= and shown=.
 std::vector<std::pair<std::string, std::string>> FrameParams(const httplib::Request& req) {
   std::vector<std::pair<std::string, std::string>> query;
-  for (const auto& [name, value] : req.params)
+  for (const auto& [name, value] : Query(req))
     if (name != "stream" && name != "input" && name != "shown") query.emplace_back(name, value);
   return query;
 }
@@ -135,32 +181,49 @@ class ViewServer::Streams {
 };
 
 struct ViewServer::Impl {
-  httplib::Server server;
+  DeadlineServer server{std::chrono::seconds(kTimeoutSeconds)};
   std::vector<std::string> hosts;
+  const std::string token = NewToken();
   Streams streams;
+  DrawQueue draws{kWaitingRequests, kHeldFrameBytes};
 };
 
 ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
     : impl_(std::make_unique<Impl>()), bind_(bind) {
-  httplib::Server& s = impl_->server;
+  DeadlineServer& s = impl_->server;
   s.set_read_timeout(kTimeoutSeconds, 0);
   s.set_write_timeout(kTimeoutSeconds, 0);
   s.set_payload_max_length(kMaxBody);
   s.set_keep_alive_max_count(10000);  // the page asks for frame after frame on one connection
-  // Each connection holds a pool thread while it is read or written: enough of them that clients
+  // Each connection holds a thread while it lasts: the pool grows with them, so that clients
   // which stall (each dropped after its timeout) leave threads for the others.
-  s.new_task_queue = [] { return new httplib::ThreadPool(kPoolThreads); };
+  s.new_task_queue = [] { return new GrowingPool(kMaxThreads); };
   // The library's default, SO_REUSEPORT, would let a second server share the port and take half
   // its connections: SO_REUSEADDR alone lets a restart take the port of one just ended, no more.
-  s.set_socket_options([](int sock) {
+  int listening = -1;
+  s.set_socket_options([&listening](int sock) {
     int yes = 1;
     ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
-  });  // the page asks for frame after frame on one connection
+    listening = sock;
+  });
   s.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
-    const std::string why = RefusedRequest(req.method, req.get_header_value("Host"), req.get_header_value("Origin"),
-                                           req.get_header_value("Sec-Fetch-Site"), impl_->hosts);
-    if (why.empty()) return httplib::Server::HandlerResponse::Unhandled;
-    Text(res, 403, "refused: " + why);
+    RequestHead head;
+    head.method = req.method;
+    head.path = req.path;
+    head.hosts = Values(req, "Host");
+    head.origins = Values(req, "Origin");
+    head.content_lengths = Values(req, "Content-Length");
+    head.transfer_encodings = Values(req, "Transfer-Encoding");
+    head.fetch_site = req.get_header_value("Sec-Fetch-Site");
+    head.token = req.has_header(kTokenHeader) ? req.get_header_value(kTokenHeader) : req.get_param_value(kTokenParam);
+    head.params.assign(req.params.begin(), req.params.end());
+    const Refusal refusal = Refuse(head, impl_->hosts, impl_->token);
+    if (refusal.status == 0) return httplib::Server::HandlerResponse::Unhandled;
+    if (refusal.close) {
+      res.set_header("Connection", "close");
+      DeadlineServer::CloseAfterResponse();
+    }
+    Text(res, refusal.status, refusal.why);
     return httplib::Server::HandlerResponse::Handled;
   });
   // Anything a handler throws is the request's fault or the scene's: an answer, never an end.
@@ -170,6 +233,9 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
         handler(req, res);
       } catch (const Refused& e) {
         Text(res, 403, e.what());
+      } catch (const Busy& e) {
+        res.set_header("Retry-After", "1");
+        Text(res, 503, e.what());
       } catch (const NotReady& e) {
         Text(res, 409, e.what());
       } catch (const Error& e) {
@@ -179,29 +245,42 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
       }
     };
   };
-  s.Get(R"(/|/[A-Za-z0-9_.-]+\.(html|js))", guarded([](const httplib::Request& req, httplib::Response& res) {
+  s.Get(R"(/|/[A-Za-z0-9_.-]+\.(html|js))", guarded([this](const httplib::Request& req, httplib::Response& res) {
           const std::optional<PageFile> file = FindPageFile(req.path);
           if (!file) return Text(res, 404, "not found: " + req.path);
-          res.set_content(std::string(file->body), file->type);
+          const bool html = std::string(file->type).rfind("text/html", 0) == 0;
+          res.set_content(html ? PageWithToken(file->body, impl_->token) : std::string(file->body), file->type);
           res.set_header("Cache-Control", "no-store");
         }));
   s.Get("/state", guarded([&backend](const httplib::Request&, httplib::Response& res) {
           res.set_content(backend.StateJson(), "application/json");
           res.set_header("Cache-Control", "no-store");
         }));
-  const auto frame = [&backend](const httplib::Request& req, bool png, httplib::Response& res) {
+  // A requested frame: drawn in its turn (view/draw_queue.h), its bytes reserved until sent.
+  const auto frame = [this, &backend](const httplib::Request& req, bool png, httplib::Response& res) {
     const FrameRequest request = ParseFrameRequest(Query(req), backend.Defaults(), backend.Limits());
+    std::shared_ptr<void> hold;
     double ms = 0.0;
-    const Image8 image = backend.Frame(request, &ms);
+    Image8 image;
+    {
+      const DrawQueue::Turn turn =
+          impl_->draws.Request(std::size_t(3) * request.draw.width * request.draw.height, &hold);
+      image = backend.Frame(request, &ms);
+    }
     res.set_header("X-Prt-Size", std::to_string(image.width) + "x" + std::to_string(image.height));
     res.set_header("X-Prt-Draw-Ms", std::to_string(ms));
     res.set_header("Cache-Control", "no-store");
-    if (png) {
-      res.set_header("Content-Disposition", "attachment; filename=\"prt-view.png\"");
-      res.set_content(EncodePng(image), "image/png");
-    } else {
-      res.set_content(std::string(image.rgb.begin(), image.rgb.end()), "application/octet-stream");
-    }
+    if (png) res.set_header("Content-Disposition", "attachment; filename=\"prt-view.png\"");
+    auto body = std::make_shared<const std::string>(png ? EncodePng(image)
+                                                        : std::string(image.rgb.begin(), image.rgb.end()));
+    image = Image8();
+    const std::size_t size = body->size();
+    res.set_content_provider(
+        size, png ? "image/png" : "application/octet-stream",
+        [body, hold](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+          return sink.write(body->data() + offset, length);
+        },
+        [body, hold](bool) {});
   };
   s.Get("/frame", guarded([frame](const httplib::Request& req, httplib::Response& res) { frame(req, false, res); }));
   s.Get("/frame.png", guarded([frame](const httplib::Request& req, httplib::Response& res) { frame(req, true, res); }));
@@ -241,7 +320,11 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
                   std::string record;
                   try {
                     double ms = 0.0;
-                    const Image8 image = backend.Frame(job.request, &ms);
+                    Image8 image;
+                    {
+                      const DrawQueue::Turn turn = this->impl_->draws.Page();
+                      image = backend.Frame(job.request, &ms);
+                    }
                     record = FrameRecord(image, job.frame, job.input, ms, !job.request.interactive);
                   } catch (const std::exception& e) {  // NotReady, Error: the page shows why
                     record = ErrorRecord(job.frame, job.input, e.what());
@@ -258,12 +341,12 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
            const std::shared_ptr<FrameStream> stream = impl_->streams.Find(StreamName(req));
            if (!stream) return Text(res, 404, "stream: not open (it ended: the page opens another)");
            if (req.has_param("shown")) stream->Shown(Count("shown", req.get_param_value("shown")));
-           const std::vector<std::pair<std::string, std::string>> frame = FrameParams(req);
+           const std::vector<std::pair<std::string, std::string>> wanted = FrameParams(req);
            if (req.has_param("input")) {
              const std::uint64_t input = Count("input", req.get_param_value("input"));
-             stream->Want(ParseFrameRequest(frame, backend.Defaults(), backend.Limits()), input);
-           } else if (!frame.empty()) {
-             throw Error(frame.front().first + ": a frame parameter without input= (expected input=N with them)");
+             stream->Want(ParseFrameRequest(wanted, backend.Defaults(), backend.Limits()), input);
+           } else if (!wanted.empty()) {
+             throw Error(wanted.front().first + ": a frame parameter without input= (expected input=N with them)");
            }
            res.status = 204;
          }));
@@ -274,7 +357,7 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
   s.Post("/compute", guarded([&backend](const httplib::Request& req, httplib::Response& res) {
            FrameRequest request = backend.Defaults();
            std::vector<std::pair<std::string, std::string>> query;
-           for (const auto& [name, value] : req.params) {
+           for (const auto& [name, value] : Query(req)) {
              if (name != "basis" && name != "mode") throw Error(name + ": unknown parameter (expected basis, mode)");
              query.emplace_back(name, value);
            }
@@ -284,7 +367,7 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
          }));
   s.Post("/reference", guarded([&backend](const httplib::Request& req, httplib::Response& res) {
            std::vector<std::pair<std::string, std::string>> query;
-           for (const auto& [name, value] : req.params) {
+           for (const auto& [name, value] : Query(req)) {
              if (name != "mode" && name != "env") throw Error(name + ": unknown parameter (expected mode, env)");
              query.emplace_back(name, value);
            }
@@ -306,20 +389,35 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
   s.Options(".*", not_allowed);
   s.Post(".*", not_allowed);  // after /compute, /reference and /input, which match first
   s.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
-    if (res.body.empty()) Text(res, res.status, std::to_string(res.status) + ": " + req.method + " " + req.path);
+    if (DeadlineServer::RequestExpired()) {
+      res.set_header("Connection", "close");
+      return Text(res, 408, "request: not whole within " + std::to_string(kTimeoutSeconds) + " s of its first byte (closed)");
+    }
+    if (res.body.empty()) Text(res, res.status, std::to_string(res.status) + ": " + req.method + " " + Escaped(req.path));
   });
 
   port_ = port == 0 ? s.bind_to_any_port(bind) : (s.bind_to_port(bind, port) ? port : -1);
+  // The library listens with a backlog of 5: a crowd connecting at once overflowed it, and the
+  // connections past it waited a second for their SYN to be sent again. Listening again on the
+  // bound socket only sets a longer backlog.
+  if (port_ > 0 && listening >= 0) ::listen(listening, SOMAXCONN);
+  s.set_socket_options(nullptr);
   if (port_ <= 0)
     throw Error("--bind " + bind + " --port " + std::to_string(port) +
                 ": cannot listen there (the port is taken, or the address is not this machine's)");
-  impl_->hosts = AllowedHosts(bind, port_);
+  impl_->hosts = AllowedHosts(bind, port_, IsWildcard(bind) ? ThisMachine() : MachineNames{});
 }
 
 ViewServer::~ViewServer() { Stop(); }
 
+const std::string& ViewServer::Token() const { return impl_->token; }
+
+const std::vector<std::string>& ViewServer::Hosts() const { return impl_->hosts; }
+
 std::string ViewServer::Address() const {
-  const std::string host = bind_.find(':') != std::string::npos ? "[" + bind_ + "]" : bind_;
+  // A wildcard bind is reached here through the loopback address.
+  const std::string bind = bind_ == "0.0.0.0" ? "127.0.0.1" : bind_ == "::" ? "::1" : bind_;
+  const std::string host = bind.find(':') != std::string::npos ? "[" + bind + "]" : bind;
   return "http://" + host + ":" + std::to_string(port_) + "/";
 }
 
@@ -332,6 +430,7 @@ void ViewServer::Serve() {
 void ViewServer::Stop() {
   stopping_ = true;
   impl_->streams.StopAll();
+  impl_->draws.Stop();
   // The library's stop() does nothing before its listening loop has started: a Serve already
   // entered is waited for until it listens (or returns), one entered later sees stopping_.
   while (serving_ && !impl_->server.is_running()) std::this_thread::sleep_for(std::chrono::milliseconds(1));

@@ -22,16 +22,21 @@
 ///   GET  /error?QUERY     the frame's setting's error against that reference, as JSON (409
 ///                         until it is measured)
 ///
-/// Every request passes view/request_guard.h first (403). A bad query is 400 with the reason, a
-/// frame of a transport not computed yet 409, a body 413, any other method 405, and the server
-/// goes on. Each connection is served by a pool thread with 5 s read and write timeouts, so a
-/// client that stalls or disappears holds one thread for at most that long and never the others;
-/// the backend draws one frame at a time, and a frame's bytes are sent after its lock is left.
+/// Every request passes view/request_guard.h first (its Host, Origin, token and framing: 403,
+/// 400, 411, 413). A bad query is 400 with the reason, a frame of a transport not computed yet
+/// 409, a frame asked for while four wait 503 (view/draw_queue.h), any other method 405, and the
+/// server goes on. Each request must arrive whole within 5 s of its first byte (408 and closed:
+/// view/deadline_server.h) and each write completes within 5 s, so a client that stalls,
+/// trickles or disappears holds its connection's thread for seconds; threads are made as
+/// connections come (view/growing_pool.h), so such clients never keep the page waiting. The
+/// backend draws one frame at a time, the page's frames first, and a frame's bytes are sent after
+/// its turn is left.
 
 #include <atomic>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "core/image.h"
 #include "view/frame_request.h"
@@ -67,7 +72,7 @@ class ViewBackend {
   virtual std::string Command(const FrameRequest& request) const = 0;
 };
 
-/// Streams open at once: a page keeps one; more would each hold a pool thread (kPoolThreads).
+/// Streams open at once: a page keeps one; each holds a server thread while it lasts.
 inline constexpr std::size_t kMaxStreams = 8;
 
 class ViewServer {
@@ -79,8 +84,13 @@ class ViewServer {
   ViewServer& operator=(const ViewServer&) = delete;
 
   int port() const { return port_; }
-  /// http://ADDRESS:PORT/ (an IPv6 address in brackets).
+  /// http://ADDRESS:PORT/ (an IPv6 address in brackets; a wildcard bind's loopback address).
   std::string Address() const;
+  /// The Host values served (view/request_guard.h): for a wildcard bind, this machine's names.
+  const std::vector<std::string>& Hosts() const;
+  /// The run's token, which every request but the page's files and /state carries (the page has
+  /// it from the page served at /).
+  const std::string& Token() const;
   /// Serves until Stop() (at once when Stop came first).
   void Serve();
   /// Ends Serve, from any thread, whether or not Serve has started listening yet.

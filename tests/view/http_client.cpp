@@ -2,6 +2,9 @@
 
 #include <chrono>
 #include <cstdlib>
+#include <map>
+#include <mutex>
+#include <string>
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -76,10 +79,39 @@ HttpReply SendRaw(int port, const std::string& raw) {
   return reply;
 }
 
+namespace {
+std::mutex token_mutex;
+std::map<int, std::string> tokens;  // by port
+}  // namespace
+
+void UseToken(int port, const std::string& token) {
+  std::lock_guard<std::mutex> lock(token_mutex);
+  tokens[port] = token;
+}
+
+std::string TokenHeader(int port) {
+  std::lock_guard<std::mutex> lock(token_mutex);
+  const auto it = tokens.find(port);
+  return it == tokens.end() ? "" : "X-Prt-Token: " + it->second + "\r\n";
+}
+
+std::string FetchToken(int port) {
+  const HttpReply page = Request(port, "/");
+  const std::string tag = "<meta name=\"prt-token\" content=\"";
+  const std::size_t at = page.body.find(tag);
+  REQUIRE_MESSAGE(at != std::string::npos, "the page at / has no token (status " << page.status << ")");
+  const std::size_t begin = at + tag.size(), end = page.body.find('"', begin);
+  REQUIRE(end != std::string::npos);
+  const std::string token = page.body.substr(begin, end - begin);
+  UseToken(port, token);
+  return token;
+}
+
 HttpReply Request(int port, const std::string& target, const std::string& method, const std::string& extra,
                   const std::string& body) {
-  std::string raw = method + " " + target + " HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\n" + extra +
-                    "Connection: close\r\n";
+  const std::string token = extra.find("X-Prt-Token:") == std::string::npos ? TokenHeader(port) : "";
+  std::string raw = method + " " + target + " HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\n" + token +
+                    extra + "Connection: close\r\n";
   if (!body.empty() || method != "GET") raw += "Content-Length: " + std::to_string(body.size()) + "\r\n";
   return SendRaw(port, raw + "\r\n" + body);
 }

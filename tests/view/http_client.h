@@ -26,8 +26,17 @@ bool StillOpen(int fd);
 /// server closes the connection or 30 s pass.
 HttpReply SendRaw(int port, const std::string& raw);
 
-/// A GET (or `method`) of `target` with the Host the server expects and `extra` header lines
-/// ("Name: value\r\n" each), Connection: close.
+/// The run's token (view/request_guard.h) that requests to the server on `port` carry from now
+/// on: Request and the stream client send it as X-Prt-Token, unless `extra` names one itself.
+void UseToken(int port, const std::string& token);
+/// "X-Prt-Token: TOKEN\r\n" for the server on `port`, or "" when it has none.
+std::string TokenHeader(int port);
+/// The token written into the page served at / on `port` (its <meta name="prt-token">), used from
+/// now on; REQUIREs one.
+std::string FetchToken(int port);
+
+/// A GET (or `method`) of `target` with the Host the server expects, the run's token (UseToken)
+/// and `extra` header lines ("Name: value\r\n" each), Connection: close.
 HttpReply Request(int port, const std::string& target, const std::string& method = "GET",
                   const std::string& extra = "", const std::string& body = "");
 

@@ -32,7 +32,7 @@ std::string StreamRecord::Rgb() const {
 StreamClient::StreamClient(int port, const std::string& name, const std::string& query, std::uint64_t input) {
   fd_ = Connect(port);
   const std::string raw = "GET /stream?stream=" + name + "&input=" + std::to_string(input) + (query.empty() ? "" : "&") +
-                          query + " HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\nX-Prt-Stream: 1\r\n\r\n";
+                          query + " HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\nX-Prt-Stream: 1\r\n" + TokenHeader(port) + "\r\n";
   REQUIRE(::send(fd_, raw.data(), raw.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(raw.size()));
   while (raw_.find("\r\n\r\n") == std::string::npos)
     if (!Fill(30.0)) break;

@@ -77,6 +77,7 @@ TEST_SUITE("view") {
   TEST_CASE("threads: clients at once get their own frames, the page and the state; the server stops while they ask") {
     CountingBackend backend;
     ViewServer server(backend, "127.0.0.1", 0);
+    test::UseToken(server.port(), server.Token());
     std::thread serving([&] { server.Serve(); });
     constexpr int kClients = 6, kRounds = 8;
     std::atomic<int> wrong{0}, answered{0};
@@ -117,6 +118,7 @@ TEST_SUITE("view") {
   TEST_CASE("threads: streams draw while their inputs and acknowledgements come on other threads; Stop ends them at once") {
     CountingBackend backend;
     ViewServer server(backend, "127.0.0.1", 0);
+    test::UseToken(server.port(), server.Token());
     std::thread serving([&] { server.Serve(); });
     constexpr int kPages = 4, kInputs = 12;
     std::atomic<int> wrong{0}, disordered{0};
@@ -169,6 +171,7 @@ TEST_SUITE("view") {
     CountingBackend scene;
     LateBackend late;
     ViewServer server(late, "127.0.0.1", 0);
+    test::UseToken(server.port(), server.Token());
     std::thread serving([&] { server.Serve(); });
     std::atomic<bool> ready{false};
     std::atomic<int> wrong{0}, early{0}, served{0};
@@ -207,6 +210,7 @@ TEST_SUITE("view") {
     for (const bool stop_first : {true, false}) {
       CAPTURE(stop_first);
       ViewServer server(backend, "127.0.0.1", 0);
+      test::UseToken(server.port(), server.Token());
       if (stop_first) server.Stop();
       std::promise<void> served;
       std::future<void> done = served.get_future();

@@ -79,6 +79,7 @@ void ViewProcess::Start(std::vector<std::string> all, const std::string& log, co
     pid_ = -1;
     FAIL("prt view printed no address (stdout '" << line << "'; its stderr is in " << log << ")");
   }
+  FetchToken(port_);
   // It serves from then on, and its scene once the first transport is computed: /state says
   // "starting" until then (view/late_backend.h). The tests start from a ready scene.
   while (wait_ready && std::chrono::steady_clock::now() < deadline) {

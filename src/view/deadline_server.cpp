@@ -1,0 +1,159 @@
+#include "view/deadline_server.h"
+
+#include <algorithm>
+#include <atomic>
+#include <array>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include <netdb.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace prt {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+
+/// The numeric address and port of `sock`'s `peer` (getpeername) or own end (getsockname).
+void Address(int sock, bool peer, std::string& ip, int& port) {
+  sockaddr_storage addr{};
+  socklen_t len = sizeof addr;
+  const int got = peer ? ::getpeername(sock, reinterpret_cast<sockaddr*>(&addr), &len)
+                       : ::getsockname(sock, reinterpret_cast<sockaddr*>(&addr), &len);
+  std::array<char, NI_MAXHOST> host{};
+  std::array<char, NI_MAXSERV> serv{};
+  if (got != 0 || ::getnameinfo(reinterpret_cast<sockaddr*>(&addr), len, host.data(), host.size(), serv.data(),
+                                serv.size(), NI_NUMERICHOST | NI_NUMERICSERV) != 0)
+    return;
+  ip = host.data();
+  port = std::atoi(serv.data());
+}
+
+/// A connection's socket as the library reads and writes it: reads buffered (the library reads
+/// a request's line and headers a byte at a time), each read bounded by the read timeout and by
+/// the current request's deadline, each write by the write timeout.
+class DeadlineStream final : public httplib::Stream {
+ public:
+  DeadlineStream(int sock, Clock::duration read_timeout, Clock::duration write_timeout,
+                 const std::atomic<socket_t>& server_socket)
+      : sock_(sock), read_timeout_(read_timeout), write_timeout_(write_timeout), server_socket_(server_socket) {}
+
+  /// A request begins: its reads must be done by `deadline`.
+  void Begin(Clock::time_point deadline) {
+    deadline_ = deadline;
+    expired_ = false;
+  }
+  bool Expired() const { return expired_; }
+  /// The connection ends after this request's answer.
+  void CloseAfter() const { close_ = true; }
+  bool Closing() const { return close_ || expired_; }
+  bool Buffered() const { return begin_ < end_; }
+
+  /// Waits until the socket has `events` (POLLIN, POLLOUT) or `until`, or the server stops:
+  /// true when it has them.
+  bool Wait(short events, Clock::time_point until) const {
+    for (;;) {
+      if (server_socket_ == INVALID_SOCKET) return false;
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(until - Clock::now());
+      if (left.count() < 0) return false;
+      pollfd p{sock_, events, 0};
+      const int n = ::poll(&p, 1, static_cast<int>(std::min(left, DeadlineServer::kStopSlice).count()));
+      if (n > 0) return (p.revents & (events | POLLHUP | POLLERR)) != 0;
+      if (n < 0 && errno != EINTR) return false;
+    }
+  }
+
+  bool is_readable() const override {
+    if (Buffered()) return true;
+    const Clock::time_point until = std::min(Clock::now() + read_timeout_, deadline_);
+    if (Wait(POLLIN, until)) return true;
+    if (Clock::now() >= deadline_) expired_ = true;
+    return false;
+  }
+  bool is_writable() const override { return Wait(POLLOUT, Clock::now() + write_timeout_); }
+
+  ssize_t read(char* ptr, size_t size) override {
+    if (!Buffered()) {
+      if (!is_readable()) return -1;
+      const ssize_t n = Receive(buffer_.data(), buffer_.size());
+      if (n <= 0) return n;
+      begin_ = 0;
+      end_ = static_cast<std::size_t>(n);
+    }
+    const std::size_t n = std::min(size, end_ - begin_);
+    std::memcpy(ptr, buffer_.data() + begin_, n);
+    begin_ += n;
+    return static_cast<ssize_t>(n);
+  }
+  ssize_t write(const char* ptr, size_t size) override {
+    if (!is_writable()) return -1;
+    for (;;) {
+      const ssize_t n = ::send(sock_, ptr, size, MSG_NOSIGNAL);
+      if (n >= 0 || errno != EINTR) return n;
+    }
+  }
+  void get_remote_ip_and_port(std::string& ip, int& port) const override { Address(sock_, true, ip, port); }
+  void get_local_ip_and_port(std::string& ip, int& port) const override { Address(sock_, false, ip, port); }
+  socket_t socket() const override { return sock_; }
+
+ private:
+  ssize_t Receive(char* into, std::size_t size) const {
+    for (;;) {
+      const ssize_t n = ::recv(sock_, into, size, 0);
+      if (n >= 0 || errno != EINTR) return n;
+    }
+  }
+
+  const int sock_;
+  const Clock::duration read_timeout_, write_timeout_;
+  const std::atomic<socket_t>& server_socket_;
+  Clock::time_point deadline_ = Clock::time_point::max();
+  mutable bool expired_ = false, close_ = false;
+  std::array<char, 4096> buffer_{};
+  std::size_t begin_ = 0, end_ = 0;
+};
+
+/// The stream of the connection this thread serves, if any.
+thread_local const DeadlineStream* current_stream = nullptr;
+
+}  // namespace
+
+bool DeadlineServer::RequestExpired() { return current_stream != nullptr && current_stream->Expired(); }
+
+void DeadlineServer::CloseAfterResponse() {
+  if (current_stream != nullptr) current_stream->CloseAfter();
+}
+
+bool DeadlineServer::process_and_close_socket(socket_t sock) {
+  const auto seconds = [](time_t s, time_t us) {
+    return std::chrono::duration_cast<Clock::duration>(std::chrono::seconds(s) + std::chrono::microseconds(us));
+  };
+  DeadlineStream stream(sock, seconds(read_timeout_sec_, read_timeout_usec_),
+                        seconds(write_timeout_sec_, write_timeout_usec_), svr_sock_);
+  bool ok = false;
+  for (std::size_t count = keep_alive_max_count_; count > 0; --count) {
+    // The next request: bytes already read, or its first byte within the keep-alive timeout.
+    if (!stream.Buffered() && !stream.Wait(POLLIN, Clock::now() + std::chrono::seconds(keep_alive_timeout_sec_)))
+      break;
+    stream.Begin(Clock::now() + request_deadline_);
+    bool closed = false;
+    // The library reads the request through `stream`; past its deadline a read fails, and the
+    // error handler sees RequestExpired().
+    struct Current {  // this thread's stream, for the handlers, while the request is served
+      explicit Current(const DeadlineStream* s) { current_stream = s; }
+      ~Current() { current_stream = nullptr; }
+    } current(&stream);
+    ok = process_request(stream, count == 1, closed, nullptr);
+    if (!ok || closed || stream.Closing()) break;
+  }
+  ::shutdown(sock, SHUT_RDWR);
+  ::close(sock);
+  return ok;
+}
+
+}  // namespace prt

@@ -1,0 +1,42 @@
+#pragma once
+/// \file
+/// The HTTP library's server (cpp-httplib 0.11), its connections read by prt's own stream so
+/// that each request must arrive whole within a deadline. The library's read timeout applies to
+/// each read and starts again with every byte: a client that sends one header line every few
+/// seconds holds its connection, and a thread, for as long as it goes on, and 40 such clients
+/// kept `prt view`'s page from its own state. Here the line, headers and body of a request must
+/// all arrive within `request_deadline` of its first byte; a connection past it gets 408 and is
+/// closed. Between requests a connection waits up to the library's keep-alive timeout for the
+/// next one. Waits are sliced so that a stopped server's connections end within kStopSlice.
+///
+/// Everything else (parsing, routing, responses) is the library's: this replaces only its
+/// per-connection loop, through the hook the library gives for it (process_and_close_socket,
+/// which its TLS server overrides the same way).
+
+#include <chrono>
+
+#include <httplib.h>
+
+namespace prt {
+
+class DeadlineServer : public httplib::Server {
+ public:
+  explicit DeadlineServer(std::chrono::milliseconds request_deadline) : request_deadline_(request_deadline) {}
+
+  /// True on a thread serving a request that did not arrive whole within its deadline: for the
+  /// error handler, which answers it with 408.
+  static bool RequestExpired();
+  /// Called by a handler of this thread's request: its connection is closed after the answer
+  /// (the bytes after a request refused for its framing cannot be trusted to start the next).
+  static void CloseAfterResponse();
+
+  /// How often a wait looks whether the server has been stopped.
+  static constexpr std::chrono::milliseconds kStopSlice{50};
+
+ private:
+  bool process_and_close_socket(socket_t sock) override;
+
+  const std::chrono::milliseconds request_deadline_;
+};
+
+}  // namespace prt

@@ -1,0 +1,52 @@
+#include "view/growing_pool.h"
+
+#include <utility>
+
+namespace prt {
+
+void GrowingPool::enqueue(std::function<void()> fn) {
+  std::unique_lock<std::mutex> lock(mutex_);
+  if (stopping_) {  // no thread left to run it: a connection is still closed by its job
+    lock.unlock();
+    fn();
+    return;
+  }
+  jobs_.push_back(std::move(fn));
+  // Every idle thread may already be woken for an earlier job: a new one for each job beyond.
+  if (jobs_.size() > idle_ && threads_.size() < max_threads_) threads_.emplace_back([this] { Work(); });
+  wake_.notify_one();
+}
+
+void GrowingPool::shutdown() {
+  std::vector<std::thread> threads;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+    threads.swap(threads_);
+  }
+  wake_.notify_all();
+  for (std::thread& t : threads) t.join();
+}
+
+std::size_t GrowingPool::Threads() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return threads_.size();
+}
+
+void GrowingPool::Work() {
+  for (;;) {
+    std::function<void()> job;
+    {
+      std::unique_lock<std::mutex> lock(mutex_);
+      ++idle_;
+      wake_.wait(lock, [this] { return stopping_ || !jobs_.empty(); });
+      --idle_;
+      if (jobs_.empty()) return;  // stopping, and nothing left to run
+      job = std::move(jobs_.front());
+      jobs_.pop_front();
+    }
+    job();
+  }
+}
+
+}  // namespace prt

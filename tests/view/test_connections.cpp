@@ -1,0 +1,337 @@
+// The threads tier of src/view's connections (tests/README.md, "Tiers"): prt view's server in
+// this process before a stand-in scene, facing the clients its users met: connections that
+// trickle their request a line at a time, a crowd asking for large frames at once, requests an
+// attacker's page could make, and the HTTP edges a browser never sends. The clock is read only
+// to bound how long an answer may take (kAnswered: a thousand times what it takes here).
+#include <doctest/doctest.h>
+
+#include <atomic>
+#include <chrono>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include "core/error.h"
+#include "tests/threads_util.h"
+#include "tests/view/http_client.h"
+#include "view/draw_queue.h"
+#include "view/request_guard.h"
+#include "view/view_server.h"
+
+namespace prt {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+/// How long /state may take while the server is under load: it takes a millisecond alone; the
+/// users' report saw 10 s and 14 s.
+constexpr std::chrono::milliseconds kAnswered{1000};
+
+/// A scene whose frames take `draw_ms` each, one colour per frame (its width): counts its draws
+/// and the most it was asked to draw at once.
+class SlowBackend : public ViewBackend {
+ public:
+  explicit SlowBackend(int draw_ms) : draw_ms_(draw_ms) {
+    limits_.bases = {"sh"};
+    limits_.modes = {"shadowed"};
+    defaults_.basis = "sh";
+    defaults_.mode = "shadowed";
+    defaults_.draw.width = 16;
+    defaults_.draw.height = 8;
+    defaults_.draw.ssaa = 1;
+  }
+  const ViewLimits& Limits() const override { return limits_; }
+  const FrameRequest& Defaults() const override { return defaults_; }
+  std::string StateJson() const override { return "{\"frames\":" + std::to_string(frames_.load()) + "}"; }
+  Image8 Frame(const FrameRequest& request, double* draw_ms) override {
+    const int now = ++drawing_;
+    for (int most = most_.load(); now > most && !most_.compare_exchange_weak(most, now);) {
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(draw_ms_));
+    Image8 image;
+    image.width = request.draw.width;
+    image.height = request.draw.height;
+    image.rgb.assign(std::size_t(3) * image.width * image.height, std::uint8_t(request.draw.width));
+    *draw_ms = draw_ms_;
+    --drawing_;
+    ++frames_;
+    return image;
+  }
+  void Compute(const std::string&, const std::string&) override {}
+  void MeasureReference(const FrameRequest&) override {}
+  std::string ErrorJson(const FrameRequest&) override { throw NotReady("not measured"); }
+  std::string Command(const FrameRequest&) const override { return "prt render\n"; }
+
+  int most_at_once() const { return most_; }
+  int frames() const { return frames_; }
+
+ private:
+  const int draw_ms_;
+  ViewLimits limits_;
+  FrameRequest defaults_;
+  std::atomic<int> drawing_{0}, most_{0}, frames_{0};
+};
+
+/// A server on a free loopback port, serving on a thread of its own until destroyed.
+struct Served {
+  explicit Served(ViewBackend& backend, const std::string& bind = "127.0.0.1")
+      : server(backend, bind, 0), serving([this] { server.Serve(); }) {
+    test::UseToken(server.port(), server.Token());
+  }
+  ~Served() {
+    server.Stop();
+    serving.join();
+  }
+  ViewServer server;
+  std::thread serving;
+};
+
+/// The milliseconds `request` took.
+template <class F>
+long long Millis(F&& request) {
+  const auto start = Clock::now();
+  request();
+  return std::chrono::duration_cast<std::chrono::milliseconds>(Clock::now() - start).count();
+}
+
+/// What the server has sent on `fd` so far (without waiting).
+std::string Received(int fd) {
+  std::string all;
+  char buffer[4096];
+  for (;;) {
+    pollfd p{fd, POLLIN, 0};
+    if (::poll(&p, 1, 0) <= 0) break;
+    const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
+    if (n <= 0) break;
+    all.append(buffer, static_cast<std::size_t>(n));
+  }
+  return all;
+}
+
+bool Send(int fd, const std::string& bytes) {
+  return ::send(fd, bytes.data(), bytes.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(bytes.size());
+}
+
+}  // namespace
+
+TEST_SUITE("view") {
+  TEST_CASE("threads: 40 clients trickling their headers a line a second leave /state answered at once, and each is cut off at its request's deadline") {
+    SlowBackend backend(0);
+    Served s(backend);
+    const int port = s.server.port();
+    constexpr int kTricklers = 40;  // more than the 32 threads of the server's old pool
+    std::vector<int> fds;
+    for (int i = 0; i < kTricklers; ++i) {
+      fds.push_back(test::Connect(port));
+      REQUIRE(Send(fds.back(), "GET /state HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\n"));
+    }
+    // A line a second on each: within the library's 5 s read timeout, which every byte restarts.
+    std::atomic<bool> trickling{true};
+    std::thread trickler([&] {
+      for (int line = 0; trickling && line < 14; ++line) {
+        for (const int fd : fds) Send(fd, "X-Line-" + std::to_string(line) + ": 1\r\n");
+        std::this_thread::sleep_for(std::chrono::seconds(1));
+      }
+    });
+    // The page's state, asked four times a second while they trickle.
+    long long slowest = 0;
+    int answered = 0, asked = 0;
+    for (const auto end = Clock::now() + std::chrono::seconds(4); Clock::now() < end; ++asked) {
+      const long long ms = Millis([&] { answered += test::Request(port, "/state").status == 200; });
+      MESSAGE("state ms " << ms);
+      slowest = std::max(slowest, ms);
+      std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    }
+    CHECK(answered == asked);
+    CHECK(slowest < kAnswered.count());
+    // Each request had 5 s from its first byte: by 9 s every trickler got 408 and was closed,
+    // though its lines still come.
+    std::this_thread::sleep_for(std::chrono::seconds(5));
+    int cut = 0;
+    for (const int fd : fds) {
+      const std::string reply = Received(fd);
+      cut += reply.rfind("HTTP/1.1 408", 0) == 0 && !test::StillOpen(fd);
+    }
+    CHECK(cut == kTricklers);
+    trickling = false;
+    trickler.join();
+    for (const int fd : fds) ::close(fd);
+  }
+
+  TEST_CASE("threads: 50 clients asking for frames at once: one drawn at a time, four waiting, the rest told 503 at once, /state answered throughout") {
+    SlowBackend backend(150);
+    Served s(backend);
+    const int port = s.server.port();
+    constexpr int kClients = 50;
+    std::atomic<int> drawn{0}, busy{0}, other{0};
+    std::atomic<bool> crowd{true};
+    long long slowest = 0;
+    std::thread state([&] {
+      while (crowd) {
+        slowest = std::max(slowest, Millis([&] { CHECK(test::Request(port, "/state").status == 200); }));
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      }
+    });
+    test::OnThreads(kClients, [&](int c) {
+      const int width = 16 + c;
+      const test::HttpReply frame = test::Request(port, "/frame?size=" + std::to_string(width) + "x8");
+      if (frame.status == 200 && frame.body == std::string(std::size_t(3) * width * 8, char(width)))
+        ++drawn;
+      else if (frame.status == 503 && frame.Header("Retry-After") == "1")
+        ++busy;
+      else
+        ++other;
+    });
+    crowd = false;
+    state.join();
+    CHECK(other == 0);
+    CHECK(drawn + busy == kClients);
+    CHECK(drawn >= 1);
+    CHECK(busy >= 1);  // 50 at once are more than one drawing and kWaitingRequests waiting
+    CHECK(backend.most_at_once() == 1);
+    CHECK(slowest < kAnswered.count());
+  }
+
+  TEST_CASE("threads: DrawQueue: one turn at a time, the page's frames first, requests in order, at most N waiting, bytes held until sent") {
+    DrawQueue queue(2, 100);
+    std::vector<std::string> order;
+    std::mutex order_mutex;
+    const auto note = [&](const std::string& what) {
+      std::lock_guard<std::mutex> lock(order_mutex);
+      order.push_back(what);
+    };
+    std::shared_ptr<void> first_hold;
+    DrawQueue::Turn first = queue.Request(60, &first_hold);
+    CHECK(queue.Reserved() == 60);
+    // Two requests wait (a third is refused), then a page frame: the page goes first when the
+    // turn is given back, then the requests in the order they came.
+    std::shared_ptr<void> hold_a, hold_b;
+    std::thread a([&] {
+      DrawQueue::Turn t = queue.Request(30, &hold_a);
+      note("a");
+    });
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    std::thread b([&] {
+      DrawQueue::Turn t = queue.Request(30, &hold_b);
+      note("b");
+    });
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    std::shared_ptr<void> refused;
+    CHECK_THROWS_AS(queue.Request(1, &refused), Busy);
+    std::thread page([&] {
+      DrawQueue::Turn t = queue.Page();
+      note("page");
+    });
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    first.Release();
+    page.join();
+    a.join();  // 60 + 30 <= 100: drawn while the first frame's bytes are still held
+    // b's 30 would pass 100 with the first's 60 and a's 30 held: it waits for a send to end.
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    {
+      std::lock_guard<std::mutex> lock(order_mutex);
+      CHECK(order == std::vector<std::string>{"page", "a"});
+    }
+    first_hold.reset();
+    b.join();
+    CHECK(order == std::vector<std::string>{"page", "a", "b"});
+    CHECK(queue.Reserved() == 60);
+    hold_a.reset();
+    hold_b.reset();
+    CHECK(queue.Reserved() == 0);
+    // A frame larger than the whole budget is drawn alone, and a stopped queue gives no turn.
+    std::shared_ptr<void> big;
+    { DrawQueue::Turn t = queue.Request(500, &big); }
+    big.reset();
+    queue.Stop();
+    CHECK_THROWS_AS(queue.Page(), Busy);
+    CHECK_THROWS_AS(queue.Request(1, &big), Busy);
+  }
+
+  TEST_CASE("threads: only the page prt served draws: a request without the run's token is refused, with it served") {
+    SlowBackend backend(0);
+    Served s(backend);
+    const int port = s.server.port();
+    const std::string token = s.server.Token();
+    CHECK(token.size() == 32);
+    // The page carries it; an <img> of another page of this machine does not know it.
+    CHECK(test::SendRaw(port, "GET / HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\nConnection: close\r\n\r\n")
+              .body.find("<meta name=\"prt-token\" content=\"" + token + "\">") != std::string::npos);
+    const std::string host = "Host: 127.0.0.1:" + std::to_string(port) + "\r\n";
+    const auto raw = [&](const std::string& target, const std::string& extra = "") {
+      return test::SendRaw(port, "GET " + target + " HTTP/1.1\r\n" + host + extra + "Connection: close\r\n\r\n");
+    };
+    const test::HttpReply img = raw("/frame.png?size=8x8", "Sec-Fetch-Site: same-site\r\n");
+    CHECK(img.status == 403);
+    CHECK(img.body.find("no token") != std::string::npos);
+    CHECK(raw("/frame?size=8x8", "X-Prt-Token: " + std::string(32, '0') + "\r\n").status == 403);
+    CHECK(raw("/frame?size=8x8&token=" + token.substr(0, 31)).status == 403);
+    CHECK(raw("/command?token=").status == 403);
+    CHECK(raw("/frame?size=8x8", "X-Prt-Token: " + token + "\r\n").status == 200);
+    CHECK(raw("/frame?size=8x8&token=" + token).status == 200);  // a download link's way
+    CHECK(raw("/command?token=" + token).status == 200);
+    // The page's files and its state need none.
+    CHECK(raw("/view.js").status == 200);
+    CHECK(raw("/state").status == 200);
+    CHECK(backend.frames() == 2);
+  }
+
+  TEST_CASE("threads: HTTP edges: two Hosts, a Host in capitals, POST without length, a body on a GET, a %00 in a value") {
+    SlowBackend backend(0);
+    Served s(backend);
+    const int port = s.server.port();
+    const std::string p = std::to_string(port), token = "X-Prt-Token: " + s.server.Token() + "\r\n";
+    // Two Host headers: refused, not the first taken.
+    const test::HttpReply two =
+        test::SendRaw(port, "GET /state HTTP/1.1\r\nHost: 127.0.0.1:" + p + "\r\nHost: evil.example:" + p + "\r\n\r\n");
+    CHECK(two.status == 400);
+    CHECK(two.body.find("two Host headers") != std::string::npos);
+    // Host names have no case.
+    CHECK(test::SendRaw(port, "GET /state HTTP/1.1\r\nHost: LOCALHOST:" + p + "\r\nConnection: close\r\n\r\n").status == 200);
+    // A POST without Content-Length: 411, with the reason.
+    const test::HttpReply post = test::SendRaw(port, "POST /compute?basis=sh&mode=shadowed HTTP/1.1\r\nHost: 127.0.0.1:" +
+                                                         p + "\r\nOrigin: http://127.0.0.1:" + p + "\r\n" + token + "\r\n");
+    CHECK(post.status == 411);
+    CHECK(post.body.find("Content-Length") != std::string::npos);
+    // A GET with a 2 KiB body: 413, and the connection closed, its body never read as a request.
+    const std::string body(2048, 'x');
+    const test::HttpReply big = test::SendRaw(port, "GET /state HTTP/1.1\r\nHost: 127.0.0.1:" + p +
+                                                        "\r\nContent-Length: 2048\r\n\r\n" + body);
+    CHECK(big.status == 413);
+    CHECK(big.head.find("Connection: close") != std::string::npos);
+    const test::HttpReply small = test::SendRaw(port, "GET /state HTTP/1.1\r\nHost: 127.0.0.1:" + p +
+                                                          "\r\nContent-Length: 5\r\n\r\nGET /");
+    CHECK(small.status == 400);
+    CHECK(small.body.find("a GET with a body") != std::string::npos);
+    // A %00 in a value: the whole value in the message, escaped.
+    const test::HttpReply nul = test::Request(port, "/frame?view=radi%00ance");
+    CHECK(nul.status == 400);
+    CHECK(nul.body.find("view=radi\\x00ance") != std::string::npos);
+    CHECK(backend.frames() == 0);
+  }
+
+  TEST_CASE("threads: a server bound to every address answers under this machine's addresses and name") {
+    SlowBackend backend(0);
+    Served s(backend, "0.0.0.0");
+    const int port = s.server.port();
+    CHECK(s.server.Address() == "http://127.0.0.1:" + std::to_string(port) + "/");
+    const MachineNames machine = ThisMachine();
+    REQUIRE(!machine.hostname.empty());
+    const auto state = [&](const std::string& host) {
+      return test::SendRaw(port, "GET /state HTTP/1.1\r\nHost: " + host + ":" + std::to_string(port) +
+                                     "\r\nConnection: close\r\n\r\n").status;
+    };
+    CHECK(state("127.0.0.1") == 200);
+    CHECK(state("localhost") == 200);
+    CHECK(state(machine.hostname) == 200);
+    for (const std::string& address : machine.addresses)
+      if (address.find(':') == std::string::npos) CHECK(state(address) == 200);
+    CHECK(state("evil.example") == 403);
+  }
+}
+
+}  // namespace prt
