@@ -1,9 +1,12 @@
 // `prt view` as a user's browser and an attacker's page meet it, without a browser: what it
 // serves and refuses, that its frames are the frames its render command line draws, that a
 // stalled or vanished client stalls no one, and that SIGTERM and SIGINT end it cleanly.
+#include <cctype>
 #include <chrono>
 #include <csignal>
+#include <sstream>
 #include <thread>
+#include <utility>
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
@@ -16,6 +19,7 @@
 #include "io/png_io.h"
 #include "tests/test_process.h"
 #include "tests/view/view_process.h"
+#include "view/request_guard.h"
 
 namespace fs = std::filesystem;
 
@@ -420,6 +424,43 @@ TEST_CASE("prt view listens before its first transport: the page at once with th
   const int status = view.Stop(SIGTERM);
   CHECK(WIFSIGNALED(status));
   CHECK(WTERMSIG(status) == SIGTERM);
+}
+
+TEST_CASE("prt view --bind: loopback names serve this machine only, a wildcard every address of it, each said") {
+  const std::string dir = ScratchDir("view_bind");
+  // The embedded demo scene, still starting: the summary's serving line comes first.
+  const auto serving = [&](const std::string& bind) {
+    const std::string log = dir + "/" + bind + ".txt";
+    ViewProcess view = ViewProcess::Starting({"--port", "0", "--size", "64x48", "--bind", bind}, log);
+    const int port = view.port();
+    std::string line;
+    for (std::istringstream in(ReadFile(log)); std::getline(in, line);)
+      if (line.find("view: serving") != std::string::npos) break;
+    return std::make_pair(std::move(view), line + " (port " + std::to_string(port) + ")");
+  };
+  {
+    const auto [local, line] = serving("localhost");  // a loopback name: no warning
+    INFO(line);
+    CHECK(line.find("to this machine only") != std::string::npos);
+    CHECK(line.find("any machine") == std::string::npos);
+  }
+  const auto [any, line] = serving("0.0.0.0");
+  INFO(line);
+  CHECK(any.address() == "http://127.0.0.1:" + std::to_string(any.port()) + "/");
+  CHECK(line.find("any machine that reaches it may open the page") != std::string::npos);
+  const MachineNames machine = ThisMachine();
+  std::string name = machine.hostname;
+  for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  CHECK(line.find(name + ":" + std::to_string(any.port())) != std::string::npos);
+  // Answering under the machine's own name and each of its IPv4 addresses.
+  const auto state = [&](const std::string& host) {
+    return SendRaw(any.port(), "GET /state HTTP/1.1\r\nHost: " + host + ":" + std::to_string(any.port()) +
+                                   "\r\nConnection: close\r\n\r\n").status;
+  };
+  CHECK(state("127.0.0.1") == 200);
+  CHECK(state(machine.hostname) == 200);
+  for (const std::string& address : machine.addresses)
+    if (address.find(':') == std::string::npos) CHECK(state(address) == 200);
 }
 
 TEST_CASE("prt view: --port, --bind and its other options are checked before any work") {

@@ -70,8 +70,10 @@ void ViewProcess::Start(std::vector<std::string> all, const std::string& log, co
   }
   ::close(out[0]);
   address_ = line;
-  const std::string prefix = "http://127.0.0.1:";
-  if (line.rfind(prefix, 0) == 0) port_ = std::atoi(line.c_str() + prefix.size());
+  // http://HOST:PORT/ (HOST 127.0.0.1 unless --bind names another).
+  const std::size_t colon = line.rfind(':');
+  if (line.rfind("http://", 0) == 0 && colon != std::string::npos && line.back() == '/')
+    port_ = std::atoi(line.c_str() + colon + 1);
   if (port_ <= 0) {
     int status = 0;
     ::kill(pid_, SIGKILL);
