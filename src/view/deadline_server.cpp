@@ -35,8 +35,9 @@ void Address(int sock, bool peer, std::string& ip, int& port) {
 }
 
 /// A connection's socket as the library reads and writes it: reads buffered (the library reads
-/// a request's line and headers a byte at a time), each read bounded by the read timeout and by
-/// the current request's deadline, each write by the write timeout.
+/// a request's line and headers a byte at a time), each read bounded by the read timeout, by the
+/// current request's deadline and by its bytes (kMaxRequestBytes); each write sent whole within
+/// the write timeout plus its size at kMinWriteRate, or failed.
 class DeadlineStream final : public httplib::Stream {
  public:
   DeadlineStream(int sock, Clock::duration read_timeout, Clock::duration write_timeout,
@@ -46,12 +47,14 @@ class DeadlineStream final : public httplib::Stream {
   /// A request begins: its reads must be done by `deadline`.
   void Begin(Clock::time_point deadline) {
     deadline_ = deadline;
-    expired_ = false;
+    expired_ = overflowed_ = false;
+    read_ = 0;
   }
   bool Expired() const { return expired_; }
+  bool Overflowed() const { return overflowed_; }
   /// The connection ends after this request's answer.
   void CloseAfter() const { close_ = true; }
-  bool Closing() const { return close_ || expired_; }
+  bool Closing() const { return close_ || expired_ || overflowed_; }
   bool Buffered() const { return begin_ < end_; }
 
   /// Waits until the socket has `events` (POLLIN, POLLOUT) or `until`, or the server stops:
@@ -78,6 +81,11 @@ class DeadlineStream final : public httplib::Stream {
   bool is_writable() const override { return Wait(POLLOUT, Clock::now() + write_timeout_); }
 
   ssize_t read(char* ptr, size_t size) override {
+    if (read_ >= DeadlineServer::kMaxRequestBytes) {
+      overflowed_ = true;
+      return -1;
+    }
+    size = std::min(size, DeadlineServer::kMaxRequestBytes - read_);
     if (!Buffered()) {
       if (!is_readable()) return -1;
       const ssize_t n = Receive(buffer_.data(), buffer_.size());
@@ -88,14 +96,24 @@ class DeadlineStream final : public httplib::Stream {
     const std::size_t n = std::min(size, end_ - begin_);
     std::memcpy(ptr, buffer_.data() + begin_, n);
     begin_ += n;
+    read_ += n;
     return static_cast<ssize_t>(n);
   }
+  /// Sends all of `ptr` by its deadline, or fails: a client that reads a little now and then
+  /// cannot keep a response's thread (and the frame it holds) for ever.
   ssize_t write(const char* ptr, size_t size) override {
-    if (!is_writable()) return -1;
-    for (;;) {
-      const ssize_t n = ::send(sock_, ptr, size, MSG_NOSIGNAL);
-      if (n >= 0 || errno != EINTR) return n;
+    const auto rate = std::chrono::duration<double>(double(size) / DeadlineServer::kMinWriteRate);
+    const Clock::time_point until = Clock::now() + write_timeout_ + std::chrono::duration_cast<Clock::duration>(rate);
+    std::size_t sent = 0;
+    while (sent < size) {
+      if (!Wait(POLLOUT, until)) return -1;
+      // Not blocking: the library set a send timeout on the socket, which a blocking send of a
+      // large buffer would wait out on each call.
+      const ssize_t n = ::send(sock_, ptr + sent, size - sent, MSG_NOSIGNAL | MSG_DONTWAIT);
+      if (n < 0 && errno != EINTR && errno != EAGAIN && errno != EWOULDBLOCK) return -1;
+      if (n > 0) sent += static_cast<std::size_t>(n);
     }
+    return static_cast<ssize_t>(size);
   }
   void get_remote_ip_and_port(std::string& ip, int& port) const override { Address(sock_, true, ip, port); }
   void get_local_ip_and_port(std::string& ip, int& port) const override { Address(sock_, false, ip, port); }
@@ -114,9 +132,17 @@ class DeadlineStream final : public httplib::Stream {
   const std::atomic<socket_t>& server_socket_;
   Clock::time_point deadline_ = Clock::time_point::max();
   mutable bool expired_ = false, close_ = false;
+  bool overflowed_ = false;
+  std::size_t read_ = 0;  ///< bytes of the current request read
   std::array<char, 4096> buffer_{};
   std::size_t begin_ = 0, end_ = 0;
 };
+
+/// An answer written by hand, to a request cut off in its request line (the library writes none).
+std::string Answer(const std::string& status, const std::string& text) {
+  return "HTTP/1.1 " + status + "\r\nConnection: close\r\nContent-Type: text/plain; charset=utf-8\r\nContent-Length: " +
+         std::to_string(text.size() + 1) + "\r\n\r\n" + text + "\n";
+}
 
 /// The stream of the connection this thread serves, if any.
 thread_local const DeadlineStream* current_stream = nullptr;
@@ -124,6 +150,8 @@ thread_local const DeadlineStream* current_stream = nullptr;
 }  // namespace
 
 bool DeadlineServer::RequestExpired() { return current_stream != nullptr && current_stream->Expired(); }
+
+bool DeadlineServer::RequestTooLarge() { return current_stream != nullptr && current_stream->Overflowed(); }
 
 void DeadlineServer::CloseAfterResponse() {
   if (current_stream != nullptr) current_stream->CloseAfter();
@@ -149,6 +177,13 @@ bool DeadlineServer::process_and_close_socket(socket_t sock) {
       ~Current() { current_stream = nullptr; }
     } current(&stream);
     ok = process_request(stream, count == 1, closed, nullptr);
+    // Cut off in its request line, a request gets no answer from the library: it gets this one.
+    if (!ok && (stream.Expired() || stream.Overflowed())) {
+      const std::string answer = stream.Expired()
+                                     ? Answer("408 Request Timeout", "request: not whole within its deadline (closed)")
+                                     : Answer("431 Request Header Fields Too Large", "request: over 64 KiB (closed)");
+      stream.write(answer.data(), answer.size());
+    }
     if (!ok || closed || stream.Closing()) break;
   }
   ::shutdown(sock, SHUT_RDWR);

@@ -5,8 +5,9 @@
 /// each read and starts again with every byte: a client that sends one header line every few
 /// seconds holds its connection, and a thread, for as long as it goes on, and 40 such clients
 /// kept `prt view`'s page from its own state. Here the line, headers and body of a request must
-/// all arrive within `request_deadline` of its first byte; a connection past it gets 408 and is
-/// closed. Between requests a connection waits up to the library's keep-alive timeout for the
+/// all arrive within `request_deadline` of its first byte, and be at most kMaxRequestBytes; a
+/// connection past either gets 408 (431) and is closed. Each write of a response must be sent
+/// within the write timeout plus its size at kMinWriteRate. Between requests a connection waits up to the library's keep-alive timeout for the
 /// next one. Waits are sliced so that a stopped server's connections end within kStopSlice.
 ///
 /// Everything else (parsing, routing, responses) is the library's: this replaces only its
@@ -14,6 +15,7 @@
 /// which its TLS server overrides the same way).
 
 #include <chrono>
+#include <cstddef>
 
 #include <httplib.h>
 
@@ -26,12 +28,20 @@ class DeadlineServer : public httplib::Server {
   /// True on a thread serving a request that did not arrive whole within its deadline: for the
   /// error handler, which answers it with 408.
   static bool RequestExpired();
+  /// True on a thread serving a request of more than kMaxRequestBytes (431 and closed).
+  static bool RequestTooLarge();
   /// Called by a handler of this thread's request: its connection is closed after the answer
   /// (the bytes after a request refused for its framing cannot be trusted to start the next).
   static void CloseAfterResponse();
 
   /// How often a wait looks whether the server has been stopped.
   static constexpr std::chrono::milliseconds kStopSlice{50};
+  /// A request's line, headers and body at most: the deadline bounds a request's time, this its
+  /// memory (the library keeps every header line it reads).
+  static constexpr std::size_t kMaxRequestBytes = 64 * 1024;
+  /// Bytes a second a response's write goes at least, after the write timeout: a 48 MiB frame
+  /// may take 5 s + 48 s, a client reading a few bytes now and then is cut off.
+  static constexpr double kMinWriteRate = 1024.0 * 1024.0;
 
  private:
   bool process_and_close_socket(socket_t sock) override;

@@ -20,6 +20,9 @@ DrawQueue::Turn DrawQueue::Page() {
 }
 
 DrawQueue::Turn DrawQueue::Request(std::size_t bytes, std::shared_ptr<void>* hold) {
+  // Made before the turn is taken, handed over after the lock is left: nothing can throw with
+  // the turn taken, and a reservation `*hold` held already is released outside the lock.
+  auto reservation = std::make_shared<Reservation>(this, 0);
   std::unique_lock<std::mutex> lock(mutex_);
   if (stopped_) throw Busy("busy: the server is stopping");
   if (next_ticket_ - first_ticket_ >= waiting_requests_)
@@ -34,8 +37,11 @@ DrawQueue::Turn DrawQueue::Request(std::size_t bytes, std::shared_ptr<void>* hol
   ++first_ticket_;
   drawing_ = true;
   reserved_ += bytes;
-  *hold = std::make_shared<Reservation>(this, bytes);
-  return Turn(this);
+  reservation->bytes = bytes;
+  lock.unlock();
+  Turn turn(this);
+  *hold = std::move(reservation);
+  return turn;
 }
 
 void DrawQueue::Stop() {
@@ -44,6 +50,11 @@ void DrawQueue::Stop() {
     stopped_ = true;
   }
   changed_.notify_all();
+}
+
+DrawQueue::Waiting DrawQueue::Waiters() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return {pages_waiting_, static_cast<std::size_t>(next_ticket_ - first_ticket_)};
 }
 
 std::size_t DrawQueue::Reserved() const {

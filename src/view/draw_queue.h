@@ -61,6 +61,11 @@ class DrawQueue {
 
   /// Bytes reserved now by requested frames (for tests).
   std::size_t Reserved() const;
+  /// Frames waiting for their turn now (for tests).
+  struct Waiting {
+    std::size_t pages = 0, requests = 0;
+  };
+  Waiting Waiters() const;
 
  private:
   /// A requested frame's bytes, reserved until it is destroyed.

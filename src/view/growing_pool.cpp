@@ -1,5 +1,6 @@
 #include "view/growing_pool.h"
 
+#include <system_error>
 #include <utility>
 
 namespace prt {
@@ -13,7 +14,21 @@ void GrowingPool::enqueue(std::function<void()> fn) {
   }
   jobs_.push_back(std::move(fn));
   // Every idle thread may already be woken for an earlier job: a new one for each job beyond.
-  if (jobs_.size() > idle_ && threads_.size() < max_threads_) threads_.emplace_back([this] { Work(); });
+  if (jobs_.size() > idle_ && threads_.size() < max_threads_) {
+    try {
+      threads_.emplace_back([this] { Work(); });
+    } catch (const std::system_error&) {
+      // No thread to be had (a limit of the system): the job waits for one of those there are,
+      // or, with none, runs here and now (its connection answered and closed).
+      if (threads_.empty()) {
+        std::function<void()> job = std::move(jobs_.back());
+        jobs_.pop_back();
+        lock.unlock();
+        job();
+        return;
+      }
+    }
+  }
   wake_.notify_one();
 }
 

@@ -103,7 +103,25 @@ std::string RefusedRequest(const std::string& method, const std::string& host_he
 
 bool ServedWithoutToken(const std::string& path) { return path == "/state" || FindPageFile(path).has_value(); }
 
+namespace {
+
+Refusal Check(const RequestHead& h, const std::vector<std::string>& allowed_hosts, const std::string& token);
+
+}  // namespace
+
 Refusal Refuse(const RequestHead& h, const std::vector<std::string>& allowed_hosts, const std::string& token) {
+  Refusal refusal = Check(h, allowed_hosts, token);
+  // A refused request's body is never read: what follows it cannot be a request.
+  const bool body = !h.transfer_encodings.empty() ||
+                    std::any_of(h.content_lengths.begin(), h.content_lengths.end(),
+                                [](const std::string& v) { return v.find_first_not_of('0') != std::string::npos; });
+  if (refusal.status != 0 && body) refusal.close = true;
+  return refusal;
+}
+
+namespace {
+
+Refusal Check(const RequestHead& h, const std::vector<std::string>& allowed_hosts, const std::string& token) {
   if (h.hosts.size() > 1) return {400, "two Host headers (expected one)", true};
   if (h.origins.size() > 1) return {400, "two Origin headers (expected one)", true};
   const std::string host = h.hosts.empty() ? "" : h.hosts.front(), origin = h.origins.empty() ? "" : h.origins.front();
@@ -113,6 +131,7 @@ Refusal Refuse(const RequestHead& h, const std::vector<std::string>& allowed_hos
   if (!h.transfer_encodings.empty())
     return {400, "Transfer-Encoding: " + Escaped(h.transfer_encodings.front()) + ": refused (the page sends no body)", true};
   if (h.content_lengths.size() > 1) return {400, "two Content-Length headers (expected one)", true};
+  if (!h.ranges.empty()) return {416, "Range: " + Escaped(h.ranges.front()) + ": refused (the page asks for whole frames)", true};
   if (h.content_lengths.empty()) {
     if (h.method == "POST") return {411, "a POST without Content-Length (expected Content-Length: 0: no body)", true};
   } else {
@@ -123,7 +142,7 @@ Refusal Refuse(const RequestHead& h, const std::vector<std::string>& allowed_hos
     const unsigned long long length = std::stoull(value);
     if (length > kMaxBody)
       return {413, "a body of " + value + " bytes: refused (the page sends none; at most " + std::to_string(kMaxBody) + ")", true};
-    if (length > 0 && (h.method == "GET" || h.method == "HEAD"))
+    if (length > 0 && h.method != "POST")
       return {400, "a " + h.method + " with a body of " + value + " bytes: refused (expected none)", true};
   }
   if (!ServedWithoutToken(h.path) && !SameToken(h.token, token))
@@ -134,6 +153,8 @@ Refusal Refuse(const RequestHead& h, const std::vector<std::string>& allowed_hos
       return {400, Escaped(name) + "=" + Escaped(value) + ": a control character, refused (expected printable text)", false};
   return {};
 }
+
+}  // namespace
 
 std::string Escaped(const std::string& text) {
   std::string out;

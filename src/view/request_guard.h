@@ -20,10 +20,13 @@
 ///            prt served draws frames, even from a page of this machine.
 ///
 /// and the request's framing, before the HTTP library reads a body the page never sends: two
-/// Host, Origin or Content-Length headers (400), a body on a GET (400: its bytes would be read
-/// as the next request), a Transfer-Encoding (400), a POST without Content-Length (411), a body
-/// over kMaxBody bytes (413), all closing the connection; and a parameter whose name or value
-/// holds a control character (400, the value shown escaped: `%00` would cut the message short).
+/// Host, Origin or Content-Length headers (400), a body on anything but a POST (400: the library
+/// would leave its bytes to be read as the next request), a Transfer-Encoding (400), a POST
+/// without Content-Length (411), a body over kMaxBody bytes (413), a Range (416: the library
+/// does not bound a range by the response's length), all closing the connection; and a parameter
+/// whose name or value holds a control character (400, the value shown escaped: `%00` would cut
+/// the message short). Any refused request that declares a body closes its connection too: the
+/// body is never read.
 
 #include <cstddef>
 #include <string>
@@ -61,7 +64,7 @@ std::string RefusedRequest(const std::string& method, const std::string& host, c
 /// A request as the guard reads it: its line and every value of the headers it looks at.
 struct RequestHead {
   std::string method, path;
-  std::vector<std::string> hosts, origins, content_lengths, transfer_encodings;
+  std::vector<std::string> hosts, origins, content_lengths, transfer_encodings, ranges;
   std::string fetch_site;
   std::string token;  ///< X-Prt-Token, else the token= parameter ("" when neither)
   std::vector<std::pair<std::string, std::string>> params;

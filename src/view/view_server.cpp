@@ -214,6 +214,7 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
     head.origins = Values(req, "Origin");
     head.content_lengths = Values(req, "Content-Length");
     head.transfer_encodings = Values(req, "Transfer-Encoding");
+    head.ranges = Values(req, "Range");
     head.fetch_site = req.get_header_value("Sec-Fetch-Site");
     head.token = req.has_header(kTokenHeader) ? req.get_header_value(kTokenHeader) : req.get_param_value(kTokenParam);
     head.params.assign(req.params.begin(), req.params.end());
@@ -392,6 +393,10 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
     if (DeadlineServer::RequestExpired()) {
       res.set_header("Connection", "close");
       return Text(res, 408, "request: not whole within " + std::to_string(kTimeoutSeconds) + " s of its first byte (closed)");
+    }
+    if (DeadlineServer::RequestTooLarge()) {
+      res.set_header("Connection", "close");
+      return Text(res, 431, "request: over " + std::to_string(DeadlineServer::kMaxRequestBytes / 1024) + " KiB (closed)");
     }
     if (res.body.empty()) Text(res, res.status, std::to_string(res.status) + ": " + req.method + " " + Escaped(req.path));
   });

@@ -141,9 +141,7 @@ TEST_SUITE("view") {
     long long slowest = 0;
     int answered = 0, asked = 0;
     for (const auto end = Clock::now() + std::chrono::seconds(4); Clock::now() < end; ++asked) {
-      const long long ms = Millis([&] { answered += test::Request(port, "/state").status == 200; });
-      MESSAGE("state ms " << ms);
-      slowest = std::max(slowest, ms);
+      slowest = std::max(slowest, Millis([&] { answered += test::Request(port, "/state").status == 200; }));
       std::this_thread::sleep_for(std::chrono::milliseconds(250));
     }
     CHECK(answered == asked);
@@ -157,6 +155,14 @@ TEST_SUITE("view") {
       cut += reply.rfind("HTTP/1.1 408", 0) == 0 && !test::StillOpen(fd);
     }
     CHECK(cut == kTricklers);
+    // A request line trickled a byte a second: cut off at the deadline too, with an answer.
+    const int line = test::Connect(port);
+    for (int i = 0; i < 7 && test::StillOpen(line); ++i) {
+      Send(line, "G");
+      std::this_thread::sleep_for(std::chrono::seconds(1));
+    }
+    CHECK(Received(line).rfind("HTTP/1.1 408", 0) == 0);
+    ::close(line);
     trickling = false;
     trickler.join();
     for (const int fd : fds) ::close(fd);
@@ -204,6 +210,19 @@ TEST_SUITE("view") {
       std::lock_guard<std::mutex> lock(order_mutex);
       order.push_back(what);
     };
+    const auto noted = [&] {
+      std::lock_guard<std::mutex> lock(order_mutex);
+      return order;
+    };
+    // Until the queue has `pages` and `requests` waiting (a liveness bound of a minute).
+    const auto wait_for = [&](std::size_t pages, std::size_t requests) {
+      for (const auto end = Clock::now() + std::chrono::minutes(1); Clock::now() < end;) {
+        const DrawQueue::Waiting w = queue.Waiters();
+        if (w.pages == pages && w.requests == requests) return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      }
+      return false;
+    };
     std::shared_ptr<void> first_hold;
     DrawQueue::Turn first = queue.Request(60, &first_hold);
     CHECK(queue.Reserved() == 60);
@@ -214,31 +233,28 @@ TEST_SUITE("view") {
       DrawQueue::Turn t = queue.Request(30, &hold_a);
       note("a");
     });
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    REQUIRE(wait_for(0, 1));
     std::thread b([&] {
       DrawQueue::Turn t = queue.Request(30, &hold_b);
       note("b");
     });
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    REQUIRE(wait_for(0, 2));
     std::shared_ptr<void> refused;
     CHECK_THROWS_AS(queue.Request(1, &refused), Busy);
     std::thread page([&] {
       DrawQueue::Turn t = queue.Page();
       note("page");
     });
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    REQUIRE(wait_for(1, 2));
     first.Release();
     page.join();
     a.join();  // 60 + 30 <= 100: drawn while the first frame's bytes are still held
     // b's 30 would pass 100 with the first's 60 and a's 30 held: it waits for a send to end.
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    {
-      std::lock_guard<std::mutex> lock(order_mutex);
-      CHECK(order == std::vector<std::string>{"page", "a"});
-    }
+    CHECK(wait_for(0, 1));
+    CHECK(noted() == std::vector<std::string>{"page", "a"});
     first_hold.reset();
     b.join();
-    CHECK(order == std::vector<std::string>{"page", "a", "b"});
+    CHECK(noted() == std::vector<std::string>{"page", "a", "b"});
     CHECK(queue.Reserved() == 60);
     hold_a.reset();
     hold_b.reset();
@@ -307,6 +323,22 @@ TEST_SUITE("view") {
                                                           "\r\nContent-Length: 5\r\n\r\nGET /");
     CHECK(small.status == 400);
     CHECK(small.body.find("a GET with a body") != std::string::npos);
+    // A Range: refused (the library would not bound it by the frame's length).
+    const test::HttpReply range = test::Request(port, "/frame?size=8x8", "GET", "Range: bytes=100-200000\r\n");
+    CHECK(range.status == 416);
+    CHECK(range.body.size() < 200);
+    // A request refused for its Origin with a body: its body is never read as a request.
+    const test::HttpReply smuggled = test::SendRaw(
+        port, "POST /compute HTTP/1.1\r\nHost: 127.0.0.1:" + p + "\r\nOrigin: http://evil.example\r\n" + token +
+                  "Content-Length: 40\r\n\r\nGET /frame?size=9x9 HTTP/1.1\r\nHost: x\r\n\r\n");
+    CHECK(smuggled.status == 403);
+    CHECK(smuggled.head.find("Connection: close") != std::string::npos);
+    CHECK(smuggled.body.find("HTTP/1.1") == std::string::npos);  // one answer, not two
+    // 70 KiB of headers: 431, and closed.
+    std::string headers;
+    for (int i = 0; i < 1100; ++i) headers += "X-Filler-" + std::to_string(i) + ": " + std::string(50, 'a') + "\r\n";
+    const test::HttpReply huge = test::SendRaw(port, "GET /state HTTP/1.1\r\nHost: 127.0.0.1:" + p + "\r\n" + headers + "\r\n");
+    CHECK(huge.status == 431);
     // A %00 in a value: the whole value in the message, escaped.
     const test::HttpReply nul = test::Request(port, "/frame?view=radi%00ance");
     CHECK(nul.status == 400);
