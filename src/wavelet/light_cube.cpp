@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -67,17 +68,51 @@ Cells GatherNodes(const Environment& env, const CubeGrid& fine) {
   return cells;
 }
 
+/// Per cell, the least radiance of each channel among the cells within `reach` of it along each
+/// side on its face (empty cells left out): the light around the cell without what stands out.
+std::vector<glm::dvec3> Floor(const Cells& cells, int size, int reach) {
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  const std::size_t per_face = static_cast<std::size_t>(size) * size;
+  std::vector<glm::dvec3> radiance(cells.energy.size(), glm::dvec3(kNone)), rows(radiance.size());
+  for (std::size_t c = 0; c < radiance.size(); ++c)
+    if (cells.solid_angle[c] > 0.0) radiance[c] = cells.energy[c] / cells.solid_angle[c];
+  // A square's least value: the least along each row, then along each column of those.
+  const auto least = [size, reach](const std::vector<glm::dvec3>& in, std::vector<glm::dvec3>& out,
+                                    std::size_t face_start, bool along_rows) {
+    const auto at = [&](int line, int i) {
+      return face_start + (along_rows ? std::size_t(line) * size + i : std::size_t(i) * size + line);
+    };
+    for (int line = 0; line < size; ++line)
+      for (int i = 0; i < size; ++i) {
+        glm::dvec3 m(kNone);
+        for (int j = std::max(0, i - reach); j <= std::min(size - 1, i + reach); ++j) m = glm::min(m, in[at(line, j)]);
+        out[at(line, i)] = m;
+      }
+  };
+  std::vector<glm::dvec3> floor(radiance.size());
+  for (int f = 0; f < 6; ++f) {
+    least(radiance, rows, f * per_face, true);
+    least(rows, floor, f * per_face, false);
+  }
+  return floor;
+}
+
 }  // namespace
 
-LightCube::LightCube(const Environment& env, const CubeGrid& grid, int fine) : grid_(grid), spread_(grid) {
+LightCube::LightCube(const Environment& env, const CubeGrid& grid, int fine) : grid_(grid), lerp_(grid) {
   if (fine <= 0) fine = std::max(1, std::min(kFineCells, kMaxCellFace / grid.size()));
   const CubeGrid cells_grid(grid.size() * fine);
   const Cells cells = GatherNodes(env, cells_grid);
+  const std::vector<glm::dvec3> floor = Floor(cells, cells_grid.size(), fine);
   for (std::size_t c = 0; c < cells_grid.texels(); ++c) {
     if (cells.solid_angle[c] <= 0.0) continue;
     const glm::dvec3 m = glm::length(cells.bright[c]) > 0.0 ? cells.bright[c] : cells.moment[c];
     const glm::dvec3 centroid = glm::length(m) > 0.0 ? glm::normalize(m) : cells_grid.Direction(c);
-    pieces_.push_back({centroid, cells.solid_angle[c], cells.energy[c]});
+    // The cell's light as its floor over its whole solid angle plus what rises above it (at
+    // most the whole; never below 0, the floor being a least value).
+    const glm::dvec3 base = glm::min(cells.energy[c], cells.solid_angle[c] * floor[c]);
+    pieces_.push_back({centroid, cells.solid_angle[c], base, cells.energy[c] - base});
+    base_energy_ += base;
     energy_ += cells.energy[c];
   }
   // Each disk cut into rings even in cos theta and sectors even in azimuth: equal solid angles,
@@ -97,7 +132,7 @@ LightCube::LightCube(const Environment& env, const CubeGrid& grid, int fine) : g
       const double cz = 1.0 - (r + 0.5) * dz, sz = std::sqrt(std::max(0.0, 1.0 - cz * cz));
       for (int s = 0; s < sectors; ++s) {
         const double phi = 2.0 * kPi * (s + 0.5) / sectors;
-        pieces_.push_back({sz * std::cos(phi) * x + sz * std::sin(phi) * y + cz * z, 0.0, energy});
+        pieces_.push_back({sz * std::cos(phi) * x + sz * std::sin(phi) * y + cz * z, 0.0, glm::dvec3(0.0), energy});
         energy_ += energy;
       }
     }
@@ -106,48 +141,53 @@ LightCube::LightCube(const Environment& env, const CubeGrid& grid, int fine) : g
 
 void LightCube::Resample(const glm::dmat3& turn, CubeRgb& out) const {
   const std::size_t texels = grid_.texels();
-  // The pieces in kChunks fixed runs, each spread into its own sums, then the runs added in
+  // The pieces in kChunks fixed runs, each shared into its own sums, then the runs added in
   // order: the same bits for any thread count.
   constexpr std::size_t kChunks = 16;
-  struct Sums {
-    std::vector<glm::dvec3> energy;
-    std::vector<double> area;
+  struct Sum {
+    glm::dvec3 base{0.0}, rise{0.0};
+    double area = 0.0;
   };
-  std::vector<Sums> sums(kChunks);
+  std::vector<std::vector<Sum>> sums(kChunks);
   const std::size_t per = (pieces_.size() + kChunks - 1) / kChunks;
   ParallelFor(kChunks, 1, [&](std::size_t begin, std::size_t end) {
-    std::uint32_t to[kMaxSpread];
-    double w[kMaxSpread];
+    std::uint32_t to[4];
+    double w[4];
     for (std::size_t k = begin; k < end; ++k) {
-      Sums& s = sums[k];
-      s.energy.assign(texels, glm::dvec3(0.0));
-      s.area.assign(texels, 0.0);
+      std::vector<Sum>& s = sums[k];
+      s.assign(texels, Sum{});
       for (std::size_t p = k * per; p < std::min(pieces_.size(), (k + 1) * per); ++p) {
         const Piece& piece = pieces_[p];
-        const int n = spread_.Spread(turn * piece.dir, to, w);
+        const int n = lerp_.Weights(turn * piece.dir, to, w);
         for (int i = 0; i < n; ++i) {
-          s.energy[to[i]] += w[i] * piece.energy;
-          s.area[to[i]] += w[i] * piece.solid_angle;
+          Sum& t = s[to[i]];
+          t.base += w[i] * piece.base;
+          t.rise += w[i] * piece.rise;
+          t.area += w[i] * piece.solid_angle;
         }
       }
     }
   });
-  for (auto& c : out.c) c.assign(texels, 0.0);
+  // Each texel: its floor's mean radiance over the solid angle it gathered, plus what rises
+  // above it over its own solid angle.
+  CubeRgb base;
+  for (int c = 0; c < 3; ++c) out.c[c].assign(texels, 0.0), base.c[c].assign(texels, 0.0);
   glm::dvec3 got(0.0);
   for (std::size_t t = 0; t < texels; ++t) {
-    glm::dvec3 energy(0.0);
-    double area = 0.0;
-    for (const Sums& s : sums) energy += s.energy[t], area += s.area[t];
-    if (area <= 0.0) continue;
+    Sum total;
+    for (const std::vector<Sum>& s : sums) total.base += s[t].base, total.rise += s[t].rise, total.area += s[t].area;
     for (int c = 0; c < 3; ++c) {
-      out.c[c][t] = energy[c] / area;
-      got[c] += grid_.SolidAngle(t) * out.c[c][t];
+      if (total.area > 0.0) base.c[c][t] = total.base[c] / total.area;
+      out.c[c][t] = total.rise[c] / grid_.SolidAngle(t);
+      got[c] += grid_.SolidAngle(t) * base.c[c][t];
     }
   }
-  // One factor per channel: the total back to the environment's integral.
-  for (int c = 0; c < 3; ++c)
-    if (got[c] > 0.0)
-      for (double& v : out.c[c]) v *= energy_[c] / got[c];
+  // One factor per channel: the floor's total back to the environment's (what rises above it
+  // is kept exactly already).
+  for (int c = 0; c < 3; ++c) {
+    const double factor = got[c] > 0.0 ? base_energy_[c] / got[c] : 0.0;
+    for (std::size_t t = 0; t < texels; ++t) out.c[c][t] += factor * base.c[c][t];
+  }
 }
 
 glm::dvec3 CubeIntegral(const CubeGrid& grid, const CubeRgb& rgb) {
