@@ -344,18 +344,27 @@ TEST_CASE("prt view: more stalled clients than a small pool has threads stall no
   // Served while every stalled connection is still open: not by waiting for their timeouts,
   // and they were not refused at once either.
   for (const int fd : stalled) CHECK(StillOpen(fd));
-  // The server closes each stalled connection once its read timeout (5 s) has passed: a recv
-  // that returns 0 (closed), well before the 20 s this waits for all of them together (a
-  // timeout of minutes would not be).
+  // The server answers each stalled connection 408 and closes it once its request's deadline
+  // (5 s) has passed: the answer, then a recv that returns 0 (closed), well before the 20 s
+  // this waits for all of them together (a timeout of minutes would not be).
   const auto deadline = start + std::chrono::seconds(20);
   for (const int fd : stalled) {
-    pollfd p{fd, POLLIN, 0};
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    const bool closed = ::poll(&p, 1, static_cast<int>(std::max<long>(0, left.count()))) == 1 && [&] {
-      char c = 0;
-      return ::recv(fd, &c, 1, 0) <= 0;
-    }();
+    std::string answer;
+    bool closed = false;
+    for (;;) {
+      pollfd p{fd, POLLIN, 0};
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+      if (::poll(&p, 1, static_cast<int>(std::max<long>(0, left.count()))) != 1) break;
+      char buffer[512];
+      const ssize_t n = ::recv(fd, buffer, sizeof buffer, 0);
+      if (n <= 0) {
+        closed = true;
+        break;
+      }
+      answer.append(buffer, static_cast<std::size_t>(n));
+    }
     CHECK(closed);
+    CHECK(answer.rfind("HTTP/1.1 408", 0) == 0);
     ::close(fd);
   }
 }
