@@ -20,6 +20,7 @@
 #include "tests/threads_util.h"
 #include "tests/view/http_client.h"
 #include "view/draw_queue.h"
+#include "view/growing_pool.h"
 #include "view/request_guard.h"
 #include "view/view_server.h"
 
@@ -266,6 +267,37 @@ TEST_SUITE("view") {
     queue.Stop();
     CHECK_THROWS_AS(queue.Page(), Busy);
     CHECK_THROWS_AS(queue.Request(1, &big), Busy);
+  }
+
+  TEST_CASE("threads: GrowingPool: a thread for each job waiting, up to its maximum; shutdown runs what is queued") {
+    constexpr int kMax = 6;
+    std::atomic<int> running{0}, most{0}, ran{0};
+    std::atomic<bool> release{false};
+    {
+      GrowingPool pool(kMax);
+      for (int i = 0; i < 10; ++i)
+        pool.enqueue([&] {
+          const int now = ++running;
+          for (int m = most.load(); now > m && !most.compare_exchange_weak(m, now);) {
+          }
+          while (!release) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+          --running;
+          ++ran;
+        });
+      // Six jobs run at once, each on a thread of its own; four wait for one of them.
+      for (const auto end = Clock::now() + std::chrono::minutes(1); most < kMax && Clock::now() < end;)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      CHECK(most == kMax);
+      CHECK(pool.Threads() == std::size_t(kMax));
+      release = true;
+      pool.shutdown();  // the four queued jobs run before the threads end
+      CHECK(ran == 10);
+      CHECK(most == kMax);
+      // After shutdown a job still runs (it closes its connection), here and now.
+      bool inline_ran = false;
+      pool.enqueue([&] { inline_ran = true; });
+      CHECK(inline_ran);
+    }
   }
 
   TEST_CASE("threads: only the page prt served draws: a request without the run's token is refused, with it served") {
