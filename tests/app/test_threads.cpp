@@ -14,36 +14,13 @@
 #include <vector>
 
 #include "app/view_scene.h"
+#include "tests/app/small_view_setup.h"
 #include "tests/threads_util.h"
 
 namespace prt {
 namespace {
 
-/// The small scene under the sky, SH lmax 2 with few directions: a transport in milliseconds.
-ViewSetup SmallSetup(const std::string& name) {
-  ViewSetup setup;
-  setup.scene.mesh = test::WriteSmallScene(test::ScratchDir(name));
-  setup.scene.lmax = 2;
-  setup.scene.samples = 32;
-  setup.scene.hidden_samples = 32;
-  setup.draw.width = 48;
-  setup.draw.height = 36;
-  setup.draw.ssaa = 1;
-  setup.envs = {setup.scene.env};
-  setup.cache = "none";
-  setup.reference_samples = 16;
-  return setup;
-}
-
-/// Waits (at most a minute: a broken build must not hang the suite) until `ready()` is true.
-template <class F>
-bool WaitFor(F&& ready) {
-  for (int i = 0; i < 6000; ++i) {
-    if (ready()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  return false;
-}
+ViewSetup SmallSetup(const std::string& name) { return test::SmallViewSetup(name, 2, 16); }
 
 }  // namespace
 
@@ -73,7 +50,7 @@ TEST_SUITE("app") {
     CHECK(differing == 0);  // the same request draws the same bytes, whoever draws it
 
     // The mode computed in the background: refused until ready, then drawn.
-    const bool ready = WaitFor([&] {
+    const bool ready = test::WaitFor([&] {
       try {
         scene.Frame(bounced, &ms);
         return true;
@@ -82,7 +59,7 @@ TEST_SUITE("app") {
       }
     });
     CHECK(ready);
-    const bool measured = WaitFor([&] {
+    const bool measured = test::WaitFor([&] {
       try {
         return scene.ErrorJson(shadowed).find("\"error\":") != std::string::npos;
       } catch (const NotReady&) {
@@ -110,7 +87,7 @@ TEST_SUITE("app") {
     });
     for (const FrameRequest& r : requests) {
       CAPTURE(r.mode);
-      const bool finished = WaitFor([&] {
+      const bool finished = test::WaitFor([&] {
         try {
           return scene.ErrorJson(r).find("\"error\":") != std::string::npos;  // the transport's and the reference's
         } catch (const NotReady&) {

@@ -12,6 +12,7 @@
 
 #include "app/commands.h"
 #include "app/view_scene.h"
+#include "tests/app/small_view_setup.h"
 #include "io/png_io.h"
 #include "tests/test_support.h"
 #include "view/frame_request.h"
@@ -19,23 +20,7 @@
 namespace prt {
 namespace {
 
-/// The small scene under the sky, SH lmax 3 with few directions: a transport in milliseconds.
-/// The mesh is repeated in the command line as the user typed it.
-ViewSetup SmallSetup(const std::string& name) {
-  ViewSetup setup;
-  setup.scene.mesh = test::WriteSmallScene(test::ScratchDir(name));
-  setup.scene.lmax = 3;
-  setup.scene.samples = 32;
-  setup.scene.hidden_samples = 32;
-  setup.draw.width = 48;
-  setup.draw.height = 36;
-  setup.draw.ssaa = 1;
-  setup.envs = {setup.scene.env};
-  setup.cache = "none";
-  setup.reference_samples = 64;
-  setup.kept_tokens = {"--mesh", setup.scene.mesh};
-  return setup;
-}
+ViewSetup SmallSetup(const std::string& name) { return test::SmallViewSetup(name, 3, 64); }
 
 /// The words of a command line as a shell reads them (ShellWord's single quotes undone).
 std::vector<std::string> Words(const std::string& line) {
@@ -76,21 +61,11 @@ Image8 RenderedFrame(const std::string& command, const std::string& dir) {
   return ReadPng(test::FramePath(dir, 0, 1));
 }
 
-/// Waits (at most a minute: a broken build must not hang the suite) until `ready()` is true.
-template <class F>
-bool WaitFor(F&& ready) {
-  for (int i = 0; i < 6000; ++i) {
-    if (ready()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  return false;
-}
-
 /// The scene's error figure for `request`, once its reference is measured.
 std::string MeasuredError(ViewScene& scene, const FrameRequest& request) {
   scene.MeasureReference(request);
   std::string json;
-  const bool measured = WaitFor([&] {
+  const bool measured = test::WaitFor([&] {
     try {
       json = scene.ErrorJson(request);
       return true;

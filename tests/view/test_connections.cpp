@@ -19,6 +19,7 @@
 #include "core/error.h"
 #include "tests/threads_util.h"
 #include "tests/view/http_client.h"
+#include "tests/view/stand_in_backend.h"
 #include "view/draw_queue.h"
 #include "view/growing_pool.h"
 #include "view/request_guard.h"
@@ -31,51 +32,6 @@ using Clock = std::chrono::steady_clock;
 /// How long /state may take while the server is under load: it takes a millisecond alone; the
 /// users' report saw 10 s and 14 s.
 constexpr std::chrono::milliseconds kAnswered{1000};
-
-/// A scene whose frames take `draw_ms` each, one colour per frame (its width): counts its draws
-/// and the most it was asked to draw at once.
-class SlowBackend : public ViewBackend {
- public:
-  explicit SlowBackend(int draw_ms) : draw_ms_(draw_ms) {
-    limits_.bases = {"sh"};
-    limits_.modes = {"shadowed"};
-    defaults_.basis = "sh";
-    defaults_.mode = "shadowed";
-    defaults_.draw.width = 16;
-    defaults_.draw.height = 8;
-    defaults_.draw.ssaa = 1;
-  }
-  const ViewLimits& Limits() const override { return limits_; }
-  const FrameRequest& Defaults() const override { return defaults_; }
-  std::string StateJson() const override { return "{\"frames\":" + std::to_string(frames_.load()) + "}"; }
-  Image8 Frame(const FrameRequest& request, double* draw_ms) override {
-    const int now = ++drawing_;
-    for (int most = most_.load(); now > most && !most_.compare_exchange_weak(most, now);) {
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(draw_ms_));
-    Image8 image;
-    image.width = request.draw.width;
-    image.height = request.draw.height;
-    image.rgb.assign(std::size_t(3) * image.width * image.height, std::uint8_t(request.draw.width));
-    *draw_ms = draw_ms_;
-    --drawing_;
-    ++frames_;
-    return image;
-  }
-  void Compute(const std::string&, const std::string&) override {}
-  void MeasureReference(const FrameRequest&) override {}
-  std::string ErrorJson(const FrameRequest&) override { throw NotReady("not measured"); }
-  std::string Command(const FrameRequest&) const override { return "prt render\n"; }
-
-  int most_at_once() const { return most_; }
-  int frames() const { return frames_; }
-
- private:
-  const int draw_ms_;
-  ViewLimits limits_;
-  FrameRequest defaults_;
-  std::atomic<int> drawing_{0}, most_{0}, frames_{0};
-};
 
 /// A server on a free loopback port, serving on a thread of its own until destroyed.
 struct Served {
@@ -121,7 +77,7 @@ bool Send(int fd, const std::string& bytes) {
 
 TEST_SUITE("view") {
   TEST_CASE("threads: 40 clients trickling their headers a line a second leave /state answered at once, and each is cut off at its request's deadline") {
-    SlowBackend backend(0);
+    test::StandInBackend backend(0);
     Served s(backend);
     const int port = s.server.port();
     constexpr int kTricklers = 40;  // more than the 32 threads of the server's old pool
@@ -170,7 +126,7 @@ TEST_SUITE("view") {
   }
 
   TEST_CASE("threads: 50 clients asking for frames at once: one drawn at a time, four waiting, the rest told 503 at once, /state answered throughout") {
-    SlowBackend backend(150);
+    test::StandInBackend backend(150);
     Served s(backend);
     const int port = s.server.port();
     constexpr int kClients = 50;
@@ -301,7 +257,7 @@ TEST_SUITE("view") {
   }
 
   TEST_CASE("threads: only the page prt served draws: a request without the run's token is refused, with it served") {
-    SlowBackend backend(0);
+    test::StandInBackend backend(0);
     Served s(backend);
     const int port = s.server.port();
     const std::string token = s.server.Token();
@@ -329,7 +285,7 @@ TEST_SUITE("view") {
   }
 
   TEST_CASE("threads: HTTP edges: two Hosts, a Host in capitals, POST without length, a body on a GET, a %00 in a value") {
-    SlowBackend backend(0);
+    test::StandInBackend backend(0);
     Served s(backend);
     const int port = s.server.port();
     const std::string p = std::to_string(port), token = "X-Prt-Token: " + s.server.Token() + "\r\n";
@@ -379,7 +335,7 @@ TEST_SUITE("view") {
   }
 
   TEST_CASE("threads: a server bound to every address answers under this machine's addresses and name") {
-    SlowBackend backend(0);
+    test::StandInBackend backend(0);
     Served s(backend, "0.0.0.0");
     const int port = s.server.port();
     CHECK(s.server.Address() == "http://127.0.0.1:" + std::to_string(port) + "/");

@@ -1,6 +1,6 @@
 // The threads tier of src/view (tests/README.md, "Tiers"): prt view's server in this process,
-// before a stand-in scene that counts what it is asked. The server's threads are the HTTP
-// library's pool, not prt's: clients on threads of their own ask at once for the page, the state
+// before a stand-in scene that counts what it is asked. The server's threads are made as
+// connections come (view/growing_pool.h) and run the HTTP library's handlers: clients on threads of their own ask at once for the page, the state
 // and frames (each frame checked against the request it answers), streams draw and send while
 // their pages' inputs arrive on other threads, the server is stopped while they ask and stream,
 // and ThreadSanitizer watches the handlers meet on the backend, the streams and the server.
@@ -18,64 +18,16 @@
 #include "core/error.h"
 #include "tests/threads_util.h"
 #include "tests/view/http_client.h"
+#include "tests/view/stand_in_backend.h"
 #include "tests/view/stream_client.h"
 #include "view/late_backend.h"
 #include "view/view_server.h"
 
 namespace prt {
-namespace {
-
-/// A scene of one colour per frame: the frame's bytes are its width, so a reply that answered
-/// another request shows. Counts its calls, as a real backend's state would change under them.
-class CountingBackend : public ViewBackend {
- public:
-  CountingBackend() {
-    limits_.bases = {"sh"};
-    limits_.modes = {"shadowed"};
-    defaults_.basis = "sh";
-    defaults_.mode = "shadowed";
-    defaults_.draw.width = 16;
-    defaults_.draw.height = 8;
-    defaults_.draw.ssaa = 1;
-  }
-  const ViewLimits& Limits() const override { return limits_; }
-  const FrameRequest& Defaults() const override { return defaults_; }
-  std::string StateJson() const override {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return "{\"frames\":" + std::to_string(frames_) + "}";
-  }
-  Image8 Frame(const FrameRequest& request, double* draw_ms) override {
-    Image8 image;
-    image.width = request.draw.width;
-    image.height = request.draw.height;
-    image.rgb.assign(std::size_t(3) * image.width * image.height, std::uint8_t(request.draw.width));
-    *draw_ms = 0.0;
-    std::lock_guard<std::mutex> lock(mutex_);
-    ++frames_;
-    return image;
-  }
-  void Compute(const std::string&, const std::string&) override {}
-  void MeasureReference(const FrameRequest&) override {}
-  std::string ErrorJson(const FrameRequest&) override { throw NotReady("not measured"); }
-  std::string Command(const FrameRequest&) const override { return "prt render\n"; }
-
-  int frames() const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return frames_;
-  }
-
- private:
-  ViewLimits limits_;
-  FrameRequest defaults_;
-  mutable std::mutex mutex_;
-  int frames_ = 0;
-};
-
-}  // namespace
 
 TEST_SUITE("view") {
   TEST_CASE("threads: clients at once get their own frames, the page and the state; the server stops while they ask") {
-    CountingBackend backend;
+    test::StandInBackend backend;
     ViewServer server(backend, "127.0.0.1", 0);
     test::UseToken(server.port(), server.Token());
     std::thread serving([&] { server.Serve(); });
@@ -116,7 +68,7 @@ TEST_SUITE("view") {
   }
 
   TEST_CASE("threads: streams draw while their inputs and acknowledgements come on other threads; Stop ends them at once") {
-    CountingBackend backend;
+    test::StandInBackend backend;
     ViewServer server(backend, "127.0.0.1", 0);
     test::UseToken(server.port(), server.Token());
     std::thread serving([&] { server.Serve(); });
@@ -168,7 +120,7 @@ TEST_SUITE("view") {
   }
 
   TEST_CASE("threads: a late backend answers 409 while starting and its scene once Ready is called from another thread") {
-    CountingBackend scene;
+    test::StandInBackend scene;
     LateBackend late;
     ViewServer server(late, "127.0.0.1", 0);
     test::UseToken(server.port(), server.Token());
@@ -206,7 +158,7 @@ TEST_SUITE("view") {
   }
 
   TEST_CASE("threads: a server stopped before it serves does not serve, whichever thread gets there first") {
-    CountingBackend backend;
+    test::StandInBackend backend;
     for (const bool stop_first : {true, false}) {
       CAPTURE(stop_first);
       ViewServer server(backend, "127.0.0.1", 0);
