@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <future>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -187,17 +188,40 @@ TEST_SUITE("view") {
     // turn is given back, then the requests in the order they came.
     std::shared_ptr<void> hold_a, hold_b;
     std::thread a([&] {
-      DrawQueue::Turn t = queue.Request(30, &hold_a);
-      note("a");
+      try {
+        DrawQueue::Turn t = queue.Request(30, &hold_a);
+        note("a");
+      } catch (const Busy&) {  // stopped: the test has failed already
+      }
     });
     REQUIRE(wait_for(0, 1));
     std::thread b([&] {
-      DrawQueue::Turn t = queue.Request(30, &hold_b);
-      note("b");
+      try {
+        DrawQueue::Turn t = queue.Request(30, &hold_b);
+        note("b");
+      } catch (const Busy&) {  // stopped: the test has failed already
+      }
     });
     REQUIRE(wait_for(0, 2));
+    // A third is refused at once; one that waits instead is ended by Stop, failing the test.
     std::shared_ptr<void> refused;
-    CHECK_THROWS_AS(queue.Request(1, &refused), Busy);
+    auto third = std::async(std::launch::async, [&] {
+      try {
+        DrawQueue::Turn t = queue.Request(1, &refused);
+        return std::string("drawn");
+      } catch (const Busy& e) {
+        return std::string(e.what());
+      }
+    });
+    if (third.wait_for(std::chrono::minutes(1)) != std::future_status::ready) {
+      queue.Stop();
+      first.Release();
+      a.join();
+      b.join();
+      FAIL_CHECK("a third request waited: " << third.get());
+      return;
+    }
+    CHECK(third.get().find("busy: 2 frames are waiting") == 0);
     std::thread page([&] {
       DrawQueue::Turn t = queue.Page();
       note("page");
