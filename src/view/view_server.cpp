@@ -40,11 +40,8 @@ constexpr int kTimeoutSeconds = 5;
 /// Threads serving connections at most (view/growing_pool.h): made as connections come, each
 /// held by one connection while it lasts, so that clients that wait leave threads for the page.
 constexpr std::size_t kMaxThreads = 256;
-/// Requested frames (/frame, /frame.png) waiting for their turn at most, and the bytes the
-/// frames asked for may hold until sent (view/draw_queue.h): four of the largest raw frames
-/// (4096^2 RGB, 48 MiB) and more.
+/// Requested frames (/frame, /frame.png) waiting for their turn at most (view/draw_queue.h).
 constexpr std::size_t kWaitingRequests = 4;
-constexpr std::size_t kHeldFrameBytes = std::size_t(256) << 20;
 
 void Text(httplib::Response& res, int status, const std::string& text) {
   res.status = status;
@@ -185,11 +182,13 @@ struct ViewServer::Impl {
   std::vector<std::string> hosts;
   const std::string token = NewToken();
   Streams streams;
-  DrawQueue draws{kWaitingRequests, kHeldFrameBytes};
+  DrawQueue draws;
+
+  explicit Impl(std::size_t held_frame_bytes) : draws(kWaitingRequests, held_frame_bytes) {}
 };
 
-ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port)
-    : impl_(std::make_unique<Impl>()), bind_(bind) {
+ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port, std::size_t held_frame_bytes)
+    : impl_(std::make_unique<Impl>(held_frame_bytes)), bind_(bind) {
   DeadlineServer& s = impl_->server;
   s.set_read_timeout(kTimeoutSeconds, 0);
   s.set_write_timeout(kTimeoutSeconds, 0);

@@ -33,6 +33,7 @@
 /// its turn is left.
 
 #include <atomic>
+#include <cstddef>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -72,13 +73,18 @@ class ViewBackend {
   virtual std::string Command(const FrameRequest& request) const = 0;
 };
 
+/// The bytes the frames asked for may hold until sent: five of the largest raw frames (4096^2
+/// RGB, 48 MiB).
+inline constexpr std::size_t kHeldFrameBytes = std::size_t(256) << 20;
+
 /// Streams open at once: a page keeps one; each holds a server thread while it lasts.
 inline constexpr std::size_t kMaxStreams = 8;
 
 class ViewServer {
  public:
-  /// Binds `bind`:`port` (0: any free port); throws Error when it cannot.
-  ViewServer(ViewBackend& backend, const std::string& bind, int port);
+  /// Binds `bind`:`port` (0: any free port); throws Error when it cannot. The frames asked for
+  /// by /frame and /frame.png hold at most `held_frame_bytes` until sent (view/draw_queue.h).
+  ViewServer(ViewBackend& backend, const std::string& bind, int port, std::size_t held_frame_bytes = kHeldFrameBytes);
   ~ViewServer();
   ViewServer(const ViewServer&) = delete;
   ViewServer& operator=(const ViewServer&) = delete;

@@ -249,6 +249,38 @@ TEST_SUITE("view") {
     CHECK_THROWS_AS(queue.Request(1, &big), Busy);
   }
 
+  TEST_CASE("threads: a requested frame holds its bytes until it is sent: the next one past the budget waits for a slow reader") {
+    // Frames of 48 MiB, more than the socket buffers take, and a budget of 64 MiB: while the
+    // first is unread, the second cannot be drawn.
+    test::StandInBackend backend(0);
+    ViewServer server(backend, "127.0.0.1", 0, std::size_t(64) << 20);
+    test::UseToken(server.port(), server.Token());
+    std::thread serving([&] { server.Serve(); });
+    const int port = server.port();
+    const std::string frame = "GET /frame?size=4096x4096 HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) +
+                              "\r\n" + test::TokenHeader(port) + "Connection: close\r\n\r\n";
+    const int slow = test::Connect(port);
+    REQUIRE(Send(slow, frame));
+    for (const auto end = Clock::now() + std::chrono::minutes(1); backend.frames() < 1 && Clock::now() < end;)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    REQUIRE(backend.frames() == 1);
+    auto second = std::async(std::launch::async, [&] { return test::SendRaw(port, frame).body.size(); });
+    // Not drawn while the first is unread (a second of looking; drawn at once were the first's
+    // bytes given back when drawn).
+    CHECK(second.wait_for(std::chrono::seconds(1)) == std::future_status::timeout);
+    CHECK(backend.frames() == 1);
+    // The first read whole: then the second is drawn and sent.
+    std::size_t got = 0;
+    char buffer[1 << 16];
+    for (ssize_t n; (n = ::recv(slow, buffer, sizeof buffer, 0)) > 0;) got += static_cast<std::size_t>(n);
+    ::close(slow);
+    CHECK(got > std::size_t(3) * 4096 * 4096);
+    CHECK(second.get() == std::size_t(3) * 4096 * 4096);
+    CHECK(backend.frames() == 2);
+    server.Stop();
+    serving.join();
+  }
+
   TEST_CASE("threads: GrowingPool: a thread for each job waiting, up to its maximum; shutdown runs what is queued") {
     constexpr int kMax = 6;
     std::atomic<int> running{0}, most{0}, ran{0};
