@@ -21,6 +21,7 @@
 #include "tests/threads_util.h"
 #include "tests/view/http_client.h"
 #include "tests/view/stand_in_backend.h"
+#include "tests/view/stream_client.h"
 #include "view/draw_queue.h"
 #include "view/growing_pool.h"
 #include "view/request_guard.h"
@@ -125,7 +126,7 @@ TEST_SUITE("view") {
     ::close(request_line);
   }
 
-  TEST_CASE("threads: 50 clients asking for frames at once: one drawn at a time, four waiting, the rest told 503 at once, /state answered throughout") {
+  TEST_CASE("threads: 50 clients asking for frames at once beside a page's stream: one drawn at a time, four waiting, the rest told 503 at once, /state answered throughout") {
     test::StandInBackend backend(150);
     Served s(backend);
     const int port = s.server.port();
@@ -137,6 +138,22 @@ TEST_SUITE("view") {
       while (crowd) {
         slowest = std::max(slowest, Millis([&] { CHECK(test::Request(port, "/state").status == 200); }));
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      }
+    });
+    // The page's own stream, a new input for each frame it shows, all through the crowd: its
+    // frames are drawn in turn with the crowd's, never beside them.
+    const std::string name(16, 'a');
+    test::StreamClient page(port, name, "size=12x8", 0);
+    REQUIRE(page.status() == 200);
+    std::atomic<int> page_frames{0};
+    std::thread pager([&] {
+      for (std::uint64_t input = 1; crowd; ++input) {
+        const test::StreamRecord r = page.Next(10.0);
+        if (r.kind.empty()) break;
+        if (r.kind != "PRTF") continue;
+        ++page_frames;
+        test::PostInput(port, name, "shown=" + std::to_string(r.frame) + "&input=" + std::to_string(input) +
+                                        "&size=12x8&quality=interactive&angle=" + std::to_string(input));
       }
     });
     test::OnThreads(kClients, [&](int c) {
@@ -151,6 +168,8 @@ TEST_SUITE("view") {
     });
     crowd = false;
     state.join();
+    pager.join();
+    CHECK(page_frames >= 2);
     CHECK(other == 0);
     CHECK(drawn + busy == kClients);
     CHECK(drawn >= 1);
