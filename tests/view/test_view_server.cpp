@@ -463,7 +463,10 @@ TEST_CASE("prt view --bind: loopback names serve this machine only, a wildcard e
   const MachineNames machine = ThisMachine();
   std::string name = machine.hostname;
   for (char& c : name) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  CHECK(line.find(name + ":" + std::to_string(any.port())) != std::string::npos);
+  const std::string p = std::to_string(any.port());
+  // Every name it answers under, listed one by one.
+  CHECK(line.find(" as 127.0.0.1:" + p + ", localhost:" + p + ", ") != std::string::npos);
+  CHECK(line.find(", " + name + ":" + p) != std::string::npos);
   // Answering under the machine's own name and each of its IPv4 addresses.
   const auto state = [&](const std::string& host) {
     return SendRaw(any.port(), "GET /state HTTP/1.1\r\nHost: " + host + ":" + std::to_string(any.port()) +
