@@ -137,6 +137,11 @@ def main():
             check(page.evaluate("prtView.camera") == home and
                   page.evaluate("prtView.lastQuery").find("eye=" + page.evaluate("fmt(prtView.home.camera.eye)").replace(",", "%2C")) >= 0,
                   "reset camera draws the first camera again")
+            drag(page, x0, y0, -6, 3, 5, "right", 2)
+            drawn = page.evaluate("prtView.framesDrawn")
+            page.evaluate("document.getElementById('resetcamera').click()")
+            b.settled(page, drawn)
+            check(page.evaluate("prtView.camera") == home, "a second reset, after another orbit, draws the first camera again")
 
             # The render command line follows every setting: stale (and saying so) at once, then
             # the line of the new setting.
