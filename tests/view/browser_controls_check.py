@@ -155,6 +155,14 @@ def main():
                 ok = eventually(page, fresh % ("c.value.includes('%s')" % said), timeout=10)
                 check(stale.startswith("stale") and ok,
                       "the command line follows %s=%s, stale until then ('%s')" % (control, value, stale))
+            # Two changes in one go, the second while the first's line is still being asked
+            # for: the box ends on the line of both.
+            page.evaluate("(() => { for (const [id, v] of [['exposure', '2.5'], ['tonemap', 'aces']]) {"
+                          " const c = document.getElementById(id); c.value = v; c.dispatchEvent(new Event('input'));"
+                          " c.dispatchEvent(new Event('change')); } })()")
+            ok = eventually(page, fresh % "c.value.includes(' --exposure 2.5 ') && c.value.includes(' --tonemap aces ')",
+                            timeout=10)
+            check(ok, "the command line follows a change made while the last one's line was being asked for")
             page.evaluate("window.lineBefore = document.getElementById('command').value")
             drag(page, x0, y0, 10, 0, 2, "right", 2)
             ok = eventually(page, fresh % "c.value !== window.lineBefore && c.value.includes(' --eye ')", timeout=10)
