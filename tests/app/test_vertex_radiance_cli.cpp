@@ -77,12 +77,15 @@ std::string WriteSmallScene(const std::string& dir, const std::string& name, boo
 }
 
 /// The OBJ's face count (its `f` lines: FormatObj writes triangles).
-std::size_t FaceLines(const std::string& obj) {
+/// The lines of `obj` that start with `prefix`.
+std::size_t LinesStarting(const std::string& obj, const std::string& prefix) {
   std::ifstream in(obj);
   std::size_t n = 0;
-  for (std::string line; std::getline(in, line);) n += line.rfind("f ", 0) == 0;
+  for (std::string line; std::getline(in, line);) n += line.rfind(prefix, 0) == 0;
   return n;
 }
+
+std::size_t FaceLines(const std::string& obj) { return LinesStarting(obj, "f "); }
 
 /// Runs `render` and returns its run summary; the run must succeed.
 std::string Render(const std::string& args) {
@@ -149,6 +152,7 @@ TEST_SUITE("app") {
       CHECK(summary.find("split: no edge longer than 0.5") != std::string::npos);
       CHECK(summary.find("vertices --max-edge added are not in it") != std::string::npos);
       const RadianceFile a = ReadRadiance(whole), b = ReadRadiance(split);
+      CHECK(a.count == static_cast<long>(LinesStarting(scene, "v ")));  // every vertex of the file is a face's corner
       CHECK(a.rows.size() == 3 * faces);
       CHECK(b.rows.size() == 3 * faces);
       CHECK(b.count == a.count);
