@@ -6,7 +6,10 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <netdb.h>
 #include <poll.h>
@@ -54,14 +57,17 @@ class DeadlineStream final : public httplib::Stream {
   bool Overflowed() const { return overflowed_; }
   /// The connection ends after this request's answer.
   void CloseAfter() const { close_ = true; }
+  /// `held` is kept until this request's answer has been written (or failed).
+  void Hold(std::shared_ptr<void> held) const { held_.push_back(std::move(held)); }
+  void ReleaseHeld() const { held_.clear(); }
   bool Closing() const { return close_ || expired_ || overflowed_; }
   bool Buffered() const { return begin_ < end_; }
 
-  /// Waits until the socket has `events` (POLLIN, POLLOUT) or `until`, or the server stops:
-  /// true when it has them.
-  bool Wait(short events, Clock::time_point until) const {
+  /// Waits until the socket has `events` (POLLIN, POLLOUT) or `until`, or, when `stoppable`, the
+  /// server stops: true when it has them.
+  bool Wait(short events, Clock::time_point until, bool stoppable) const {
     for (;;) {
-      if (server_socket_ == INVALID_SOCKET) return false;
+      if (stoppable && server_socket_ == INVALID_SOCKET) return false;
       const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(until - Clock::now());
       if (left.count() < 0) return false;
       pollfd p{sock_, events, 0};
@@ -74,11 +80,13 @@ class DeadlineStream final : public httplib::Stream {
   bool is_readable() const override {
     if (Buffered()) return true;
     const Clock::time_point until = std::min(Clock::now() + read_timeout_, deadline_);
-    if (Wait(POLLIN, until)) return true;
+    if (Wait(POLLIN, until, true)) return true;
     if (Clock::now() >= deadline_) expired_ = true;
     return false;
   }
-  bool is_writable() const override { return Wait(POLLOUT, Clock::now() + write_timeout_); }
+  // A response begun is sent whole, stopped server or not (a client must never take a cut-off
+  // body for the whole): its writes are bounded by their own deadlines, not by Stop.
+  bool is_writable() const override { return Wait(POLLOUT, Clock::now() + write_timeout_, false); }
 
   ssize_t read(char* ptr, size_t size) override {
     if (read_ >= DeadlineServer::kMaxRequestBytes) {
@@ -106,7 +114,7 @@ class DeadlineStream final : public httplib::Stream {
     const Clock::time_point until = Clock::now() + write_timeout_ + std::chrono::duration_cast<Clock::duration>(rate);
     std::size_t sent = 0;
     while (sent < size) {
-      if (!Wait(POLLOUT, until)) return -1;
+      if (!Wait(POLLOUT, until, false)) return -1;
       // Not blocking: the library set a send timeout on the socket, which a blocking send of a
       // large buffer would wait out on each call.
       const ssize_t n = ::send(sock_, ptr + sent, size - sent, MSG_NOSIGNAL | MSG_DONTWAIT);
@@ -132,6 +140,7 @@ class DeadlineStream final : public httplib::Stream {
   const std::atomic<socket_t>& server_socket_;
   Clock::time_point deadline_ = Clock::time_point::max();
   mutable bool expired_ = false, close_ = false;
+  mutable std::vector<std::shared_ptr<void>> held_;
   bool overflowed_ = false;
   std::size_t read_ = 0;  ///< bytes of the current request read
   std::array<char, 4096> buffer_{};
@@ -157,6 +166,10 @@ void DeadlineServer::CloseAfterResponse() {
   if (current_stream != nullptr) current_stream->CloseAfter();
 }
 
+void DeadlineServer::HoldUntilSent(std::shared_ptr<void> held) {
+  if (current_stream != nullptr) current_stream->Hold(std::move(held));
+}
+
 bool DeadlineServer::process_and_close_socket(socket_t sock) {
   const auto seconds = [](time_t s, time_t us) {
     return std::chrono::duration_cast<Clock::duration>(std::chrono::seconds(s) + std::chrono::microseconds(us));
@@ -166,7 +179,8 @@ bool DeadlineServer::process_and_close_socket(socket_t sock) {
   bool ok = false;
   for (std::size_t count = keep_alive_max_count_; count > 0; --count) {
     // The next request: bytes already read, or its first byte within the keep-alive timeout.
-    if (!stream.Buffered() && !stream.Wait(POLLIN, Clock::now() + std::chrono::seconds(keep_alive_timeout_sec_)))
+    if (!stream.Buffered() &&
+        !stream.Wait(POLLIN, Clock::now() + std::chrono::seconds(keep_alive_timeout_sec_), true))
       break;
     stream.Begin(Clock::now() + request_deadline_);
     bool closed = false;
@@ -177,6 +191,7 @@ bool DeadlineServer::process_and_close_socket(socket_t sock) {
       ~Current() { current_stream = nullptr; }
     } current(&stream);
     ok = process_request(stream, count == 1, closed, nullptr);
+    stream.ReleaseHeld();
     // Cut off in its request line, a request gets no answer from the library: it gets this one.
     if (!ok && (stream.Expired() || stream.Overflowed())) {
       const std::string answer = stream.Expired()

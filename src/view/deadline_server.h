@@ -7,8 +7,10 @@
 /// kept `prt view`'s page from its own state. Here the line, headers and body of a request must
 /// all arrive within `request_deadline` of its first byte, and be at most kMaxRequestBytes; a
 /// connection past either gets 408 (431) and is closed. Each write of a response must be sent
-/// within the write timeout plus its size at kMinWriteRate. Between requests a connection waits up to the library's keep-alive timeout for the
-/// next one. Waits are sliced so that a stopped server's connections end within kStopSlice.
+/// within the write timeout plus its size at kMinWriteRate, and a response begun is sent whole even
+/// when the server stops meanwhile. Between requests a connection waits up to the library's
+/// keep-alive timeout for the next one. Waits for a request are sliced so that a stopped server's
+/// idle connections end within kStopSlice.
 ///
 /// Everything else (parsing, routing, responses) is the library's: this replaces only its
 /// per-connection loop, through the hook the library gives for it (process_and_close_socket,
@@ -16,6 +18,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <memory>
 
 #include <httplib.h>
 
@@ -33,6 +36,9 @@ class DeadlineServer : public httplib::Server {
   /// Called by a handler of this thread's request: its connection is closed after the answer
   /// (the bytes after a request refused for its framing cannot be trusted to start the next).
   static void CloseAfterResponse();
+  /// Called by a handler of this thread's request: `held` is kept until its answer has been
+  /// written (a frame's byte reservation, view/draw_queue.h), then released.
+  static void HoldUntilSent(std::shared_ptr<void> held);
 
   /// How often a wait looks whether the server has been stopped.
   static constexpr std::chrono::milliseconds kStopSlice{50};

@@ -47,7 +47,7 @@ bool FrameStream::Stopped() const {
 
 FrameStream::Step FrameStream::Next(Job& job) {
   std::unique_lock<std::mutex> lock(mutex_);
-  const auto give_up = std::chrono::steady_clock::now() + kKeepAlive;
+  const auto give_up = std::chrono::steady_clock::now() + kKeepAliveAfter;
   for (;;) {
     if (stopped_) return Step::kStopped;
     const auto now = std::chrono::steady_clock::now();

@@ -40,7 +40,7 @@ inline constexpr std::chrono::milliseconds kStillDelay{120};
 inline constexpr std::uint64_t kFramesInFlight = 2;
 /// The longest a stream stays silent: then it sends a keep-alive record, so that a page that has
 /// gone is noticed (the write fails) and its thread freed.
-inline constexpr std::chrono::milliseconds kKeepAlive{2000};
+inline constexpr std::chrono::milliseconds kKeepAliveAfter{2000};
 /// How long a page may leave its full window unacknowledged before its stream ends.
 inline constexpr std::chrono::milliseconds kSilentPage{30000};
 
@@ -52,7 +52,7 @@ class FrameStream {
     std::uint64_t input = 0;
     std::uint64_t frame = 0;  ///< this frame's number in the stream, from 1
   };
-  /// What Next found: a job, nothing for kKeepAlive (send a keep-alive), or the stream stopped.
+  /// What Next found: a job, nothing for kKeepAliveAfter (send a keep-alive), or the stream stopped.
   enum class Step { kDraw, kKeepAlive, kStopped };
 
   /// The stream starts with `request` as input number `input`; `silent_page` is kSilentPage but
@@ -68,7 +68,7 @@ class FrameStream {
   void Stop();
   bool Stopped() const;
 
-  /// Waits until there is a frame to draw (into `job`), kKeepAlive has passed, or the stream is
+  /// Waits until there is a frame to draw (into `job`), kKeepAliveAfter has passed, or the stream is
   /// stopped (by Stop, or by the page's silence). The job's frame counts as sent.
   Step Next(Job& job);
 

@@ -271,16 +271,12 @@ ViewServer::ViewServer(ViewBackend& backend, const std::string& bind, int port, 
     res.set_header("X-Prt-Draw-Ms", std::to_string(ms));
     res.set_header("Cache-Control", "no-store");
     if (png) res.set_header("Content-Disposition", "attachment; filename=\"prt-view.png\"");
-    auto body = std::make_shared<const std::string>(png ? EncodePng(image)
-                                                        : std::string(image.rgb.begin(), image.rgb.end()));
+    // A plain body, not a content provider: the library's provider loop gives up at a stop, which
+    // would cut off a body whose length was already sent. The bytes stay reserved until sent.
+    res.body = png ? EncodePng(image) : std::string(image.rgb.begin(), image.rgb.end());
+    res.set_header("Content-Type", png ? "image/png" : "application/octet-stream");
     image = Image8();
-    const std::size_t size = body->size();
-    res.set_content_provider(
-        size, png ? "image/png" : "application/octet-stream",
-        [body, hold](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
-          return sink.write(body->data() + offset, length);
-        },
-        [body, hold](bool) {});
+    DeadlineServer::HoldUntilSent(std::move(hold));
   };
   s.Get("/frame", guarded([frame](const httplib::Request& req, httplib::Response& res) { frame(req, false, res); }));
   s.Get("/frame.png", guarded([frame](const httplib::Request& req, httplib::Response& res) { frame(req, true, res); }));

@@ -1,7 +1,7 @@
 // The threads tier of src/view's connections (tests/README.md, "Tiers"): prt view's server in
 // this process before a stand-in scene, facing the clients its users met: connections that
 // trickle their request a line at a time, a crowd asking for large frames at once, requests an
-// attacker's page could make, and the HTTP edges a browser never sends. The clock is read only
+// attacker's page could make, and the HTTP edges a browser never sends. The clock is read
 // only as liveness bounds and to order events (the page's state answered while every trickler
 // is still open, before any deadline could have freed a thread).
 #include <doctest/doctest.h>
@@ -288,6 +288,37 @@ TEST_SUITE("view") {
     CHECK(backend.frames() == 2);
     server.Stop();
     serving.join();
+  }
+
+  TEST_CASE("threads: a frame being sent when the server stops is sent whole") {
+    // A 48 MiB frame, more than the socket buffers take: its first bytes have arrived, the rest
+    // are still being written, when the server is stopped. The client then reads on: the whole
+    // body, never a cut-off one after a 200 (nor the connection closed at the stop).
+    test::StandInBackend backend(0);
+    ViewServer server(backend, "127.0.0.1", 0);
+    test::UseToken(server.port(), server.Token());
+    std::thread serving([&] { server.Serve(); });
+    const int port = server.port();
+    const int fd = test::Connect(port);
+    REQUIRE(Send(fd, "GET /frame?size=4096x4096 HTTP/1.1\r\nHost: 127.0.0.1:" + std::to_string(port) + "\r\n" +
+                         test::TokenHeader(port) + "Connection: close\r\n\r\n"));
+    std::string got;
+    char buffer[1 << 16];
+    pollfd p{fd, POLLIN, 0};
+    REQUIRE(::poll(&p, 1, 60000) == 1);  // liveness only: the answer has begun
+    const ssize_t first = ::recv(fd, buffer, sizeof buffer, 0);
+    REQUIRE(first > 0);
+    got.append(buffer, static_cast<std::size_t>(first));
+    server.Stop();
+    for (ssize_t n; (n = ::recv(fd, buffer, sizeof buffer, 0)) > 0;) got.append(buffer, static_cast<std::size_t>(n));
+    ::close(fd);
+    serving.join();
+    const std::size_t end = got.find("\r\n\r\n");
+    REQUIRE(end != std::string::npos);
+    CHECK(got.rfind("HTTP/1.1 200", 0) == 0);
+    const std::size_t size = std::size_t(3) * 4096 * 4096;
+    CHECK(got.size() - (end + 4) == size);
+    CHECK(got.find_first_not_of(char(4096 % 256), end + 4) == std::string::npos);
   }
 
   TEST_CASE("threads: GrowingPool: a thread for each job waiting, up to its maximum; shutdown runs what is queued") {
