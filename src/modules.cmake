@@ -15,6 +15,7 @@ set(PRT_MODULES
   "precompute: core texture sh geometry material env"
   "cpca: core sh geometry material precompute"
   "precompute_io: core texture sh geometry material precompute cpca"
+  "farm: core precompute precompute_io"
   "raster: core texture sh"
   "options: core"
   "basis: core sh geometry env precompute cpca raster options"
@@ -25,7 +26,7 @@ set(PRT_MODULES
   "render: core sh geometry io env raster basis video"
   "view: core io raster render"
   "report: core sh geometry io material env precompute cpca raster basis sh_basis bases render"
-  "app: core texture sh geometry io material env precompute cpca precompute_io raster options basis sh_basis bases video render view report"
+  "app: core texture sh geometry io material env precompute cpca precompute_io farm raster options basis sh_basis bases video render view report"
   "bench: core sh geometry io material env precompute cpca precompute_io raster options sh_basis wavelet render app"
   "cli: core options app bench"
 )

@@ -2,6 +2,7 @@
 
 #include "app/commands.h"
 #include "app/pipeline.h"
+#include "app/precompute_shard.h"
 #include "app/render_args.h"
 #include "core/atomic_file.h"
 #include "core/color.h"
@@ -59,6 +60,14 @@ CommandSpec PrecomputeSpec() {
       o.help = "with --material phong:N,KS, also write DIR/transfer_matrices_cpca.bin: the transfer matrices "
                "compressed by clustered PCA into C clusters of a mean and K principal matrices (layout in "
                "docs/CLI.md); off: only transfer_matrices.bin";
+  output.options.push_back(
+      {"--shard", "I/N",
+       "compute only vertex block I of N (0-based; blocks of whole vertices, balanced by work) and write it as "
+       "DIR/transport.cache.shard-IIIII-of-NNNNN, for a farm job: prt merge DIR then writes what one run writes. "
+       "auto: I and N from a Slurm array task (SLURM_ARRAY_TASK_ID with SLURM_ARRAY_TASK_COUNT, or the array's "
+       "MIN and MAX); auto/N: N given, I from SLURM_ARRAY_TASK_ID or a Kubernetes Indexed Job's "
+       "JOB_COMPLETION_INDEX. Not with interreflection yet (each bounce needs every vertex's previous one)",
+       "off: every vertex"});
   output.options.push_back(QuietOption());
   output.options[0].help = "output folder, created if missing; one run at a time; after a successful run it holds "
                            "this run's files, and what an earlier precompute wrote there and this one did not is "
@@ -97,10 +106,13 @@ CommandSpec PrecomputeSpec() {
           {scene, output}};
 }
 
-int RunPrecompute(const std::vector<std::string>& tokens) {
+int RunPrecompute(const std::vector<std::string>& tokens) { return Precompute(tokens, {}); }
+
+int Precompute(const std::vector<std::string>& tokens, const ShardedTransport& sharded) {
   Args args("precompute", tokens, PrecomputeSpec());
   const SceneOptions options = ReadSceneOptions(args);
   const auto out = args.String("--out");
+  const auto shard_option = args.String("--shard");
   const std::string cache_option = args.String("--cache", "");
   const bool replace = args.Flag("--replace");
   CpcaOptions cpca_option;
@@ -119,6 +131,18 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
   if (options.max_edge > 0.0)
     args.Fail("--max-edge: not with precompute (the course's transport.txt has three rows per face of the OBJ "
               "file, and split triangles are other faces; render and reference take it)");
+  if (shard_option) {
+    if (options.transport == "interreflection")
+      args.Fail("--shard: not with --transport interreflection yet (each bounce needs every vertex's previous "
+                "bounce: run it on one machine)");
+    ShardId shard;
+    try {
+      shard = ParseShard(*shard_option);
+    } catch (const Error& e) {
+      args.Fail(e.what());
+    }
+    return RunPrecomputeShard(options, shard, *out, WithoutShard(tokens));
+  }
   if (options.lmax != kCourseLmax)  // known from the options: said before any work
     Warn("lmax " + std::to_string(options.lmax) + ": these files will have " +
          std::to_string(CoeffCount(options.lmax)) +
@@ -140,7 +164,8 @@ int RunPrecompute(const std::vector<std::string>& tokens) {
   if (glossy) CheckMatrixMemory(mesh, TransportModeFromName(options.transport), options.lmax);
   const auto env = LoadSceneEnvironment(options, &folder);
   const ShRgb light = ComputeLight(*env, options);
-  Transport transport = ComputeSceneTransport(*options.basis, mesh, TransportOptionsOf(options), options.samples_from_rule, cache, nullptr, glossy);
+  Transport transport = ComputeSceneTransport(*options.basis, mesh, TransportOptionsOf(options), options.samples_from_rule,
+                                              cache, nullptr, glossy, sharded);
 
   WriteFileAtomic(folder.Output("light.txt"), FormatLightTxt(light));
   std::string wrote;

@@ -23,6 +23,7 @@ int RunReport(const std::vector<std::string>& tokens);
 int RunDiff(const std::vector<std::string>& tokens);
 int RunBasis(const std::vector<std::string>& tokens);
 int RunSampleFiles(const std::vector<std::string>& tokens);
+int RunMerge(const std::vector<std::string>& tokens);
 
 CommandSpec DemoSpec();
 CommandSpec RenderSpec();
@@ -34,5 +35,6 @@ CommandSpec ReportSpec();
 CommandSpec DiffSpec();
 CommandSpec BasisSpec();
 CommandSpec SampleFilesSpec();
+CommandSpec MergeSpec();
 
 }  // namespace prt

@@ -56,15 +56,16 @@ void UnshadowedTransferMatrix(const glm::dvec3& normal, int lmax, double* out) {
 }
 
 void ComputeTransferMatrices(const Mesh& mesh, const DirectionPlan* plan, const DirectResult* direct, int lmax,
-                             const std::vector<double>* hit_transfer, Transport& transport) {
+                             const std::vector<double>* hit_transfer, Transport& transport, const VertexBlock& block) {
   const int n = CoeffCount(lmax);
   const std::size_t nn = std::size_t(n) * n, nv = mesh.vertex_count();
   const int channels = transport.channels;
   transport.matrices.assign(nv * channels * nn, 0.0f);
-  Progress progress("transfer matrices", nv);
-  ParallelFor(nv, 32, [&](std::size_t begin, std::size_t end) {
+  const std::size_t first = std::min(block.begin, nv), last = std::min(block.end, nv);
+  Progress progress("transfer matrices", last - first);
+  ParallelFor(last - first, 32, [&](std::size_t begin, std::size_t end) {
     std::vector<double> m(channels * nn), y(n), lit(n);
-    for (std::size_t v = begin; v < end; ++v) {
+    for (std::size_t v = first + begin; v < first + end; ++v) {
       const glm::dvec3 normal(mesh.normals[v]);
       // As the direct transfer: a vertex none of whose directions is open gets exactly 0, not
       // the closed form minus its noisy estimate.

@@ -75,6 +75,7 @@ std::vector<glm::vec3> GlossyFromMatrices(const Mesh& mesh, const Transport& tra
 /// blocked directions and hits `direct` recorded (null: unshadowed, no pool); `hit_transfer`
 /// (BounceResult::before_last, transport.channels channels) with interreflection, else null.
 void ComputeTransferMatrices(const Mesh& mesh, const DirectionPlan* plan, const DirectResult* direct, int lmax,
-                             const std::vector<double>* hit_transfer, Transport& transport);
+                             const std::vector<double>* hit_transfer, Transport& transport,
+                             const VertexBlock& block = {});
 
 }  // namespace prt

@@ -33,7 +33,7 @@ void AddGlossy(const Mesh& mesh, const Bvh* bvh, const DirectionPlan* plan, cons
                TransportReport& r) {
   if (options.matrices) {
     const auto t0 = std::chrono::steady_clock::now();
-    ComputeTransferMatrices(mesh, plan, direct, options.lmax, hits, transport);
+    ComputeTransferMatrices(mesh, plan, direct, options.lmax, hits, transport, options.block);
     r.matrix_seconds = SecondsSince(t0);
     return;
   }
@@ -78,7 +78,7 @@ Transport ComputeTraced(const Mesh& mesh, const TransportOptions& options, Trans
   // Bounces gather from the hits; transfer matrices are built from them.
   const bool bounces = options.mode == TransportMode::kInterreflection;
   const bool keep_hits = bounces || (options.material.glossy && options.matrices);
-  DirectResult direct = ComputeDirect(mesh, bvh, plan, options.lmax, keep_hits);
+  DirectResult direct = ComputeDirect(mesh, bvh, plan, options.lmax, keep_hits, options.block);
   r.rays = direct.rays;
   r.basis_evaluations = direct.basis_evaluations;
   for (std::size_t v = 0; v < counted; ++v) r.closed_form_vertices += direct.unoccluded[v];
@@ -155,14 +155,16 @@ Transport ComputeTransport(const Mesh& mesh, const TransportOptions& options, Tr
   if (options.mode == TransportMode::kUnshadowed) {
     const auto t0 = std::chrono::steady_clock::now();
     transport.coeffs.resize(transport.vertices * count);
-    ParallelFor(transport.vertices, 256, [&](std::size_t begin, std::size_t end) {
+    const std::size_t first = std::min(options.block.begin, transport.vertices);
+    const std::size_t last = std::min(options.block.end, transport.vertices);
+    ParallelFor(last - first, 256, [&](std::size_t begin, std::size_t end) {
       std::vector<double> t(count);
-      for (std::size_t v = begin; v < end; ++v) {
+      for (std::size_t v = first + begin; v < first + end; ++v) {
         UnshadowedTransfer(options.lmax, glm::dvec3(mesh.normals[v]), t.data());
         for (int k = 0; k < count; ++k) transport.coeffs[v * count + k] = static_cast<float>(t[k]);
       }
     });
-    r.closed_form_vertices = transport.vertices;
+    r.closed_form_vertices = last - first;
     r.direct_seconds = SecondsSince(t0);
     if (options.material.glossy) AddGlossy(mesh, nullptr, nullptr, nullptr, options, nullptr, transport, r);
     return transport;

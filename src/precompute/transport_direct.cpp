@@ -239,7 +239,7 @@ void RunPass(const Mesh& mesh, const Bvh& bvh, const DirectionPool& pool, int lm
 }  // namespace
 
 DirectResult ComputeDirect(const Mesh& mesh, const Bvh& bvh, const DirectionPlan& plan, int lmax,
-                           bool keep_hits) {
+                           bool keep_hits, const VertexBlock& block) {
   const std::size_t nv = mesh.vertex_count();
   DirectResult result;
   result.transfer.resize(nv * CoeffCount(lmax));
@@ -250,7 +250,7 @@ DirectResult ComputeDirect(const Mesh& mesh, const Bvh& bvh, const DirectionPlan
   for (std::size_t p = 0; p < plan.pools.size(); ++p) {
     std::vector<std::uint32_t> vertices;
     vertices.reserve(nv);
-    for (std::size_t v = 0; v < nv; ++v)
+    for (std::size_t v = std::min(block.begin, nv); v < std::min(block.end, nv); ++v)
       if ((plan.pool_of.empty() ? 0 : plan.pool_of[v]) == p) vertices.push_back(static_cast<std::uint32_t>(v));
     const std::string label =
         plan.pools.size() == 1 ? what : what + (p == 0 ? ", vertices the camera sees" : ", vertices it does not");

@@ -11,6 +11,7 @@
 #include "geometry/mesh.h"
 #include "precompute/direction_pool.h"
 #include "precompute/hit_light.h"
+#include "precompute/transport_types.h"
 
 namespace prt {
 
@@ -27,7 +28,9 @@ struct DirectResult {
 
 /// Shadowed transfer of every vertex (control-variate estimator), each from the set of its pool
 /// in `plan`. With `keep_hits`, traces closest hits instead of any-hit rays and records them
-/// (VertexHit::dir indexes the vertex's set).
-DirectResult ComputeDirect(const Mesh& mesh, const Bvh& bvh, const DirectionPlan& plan, int lmax, bool keep_hits);
+/// (VertexHit::dir indexes the vertex's set). Only the vertices of `block` are computed; the
+/// others are left 0 (and unoccluded 0, sees_sky 0, no hits).
+DirectResult ComputeDirect(const Mesh& mesh, const Bvh& bvh, const DirectionPlan& plan, int lmax, bool keep_hits,
+                           const VertexBlock& block = {});
 
 }  // namespace prt

@@ -32,15 +32,16 @@ std::vector<double> ComputeGlossy(const Mesh& mesh, const Bvh* bvh, const Transp
   const LobeTransferTable table(lobe, o.lmax);
   std::vector<double> glossy(nv * stride, 0.0);
   std::atomic<std::uint64_t> rays{0};
-  Progress progress("glossy transfer", nv);
+  const std::size_t first = std::min(o.block.begin, nv), last = std::min(o.block.end, nv);
+  Progress progress("glossy transfer", last - first);
 
-  ParallelFor(nv, 32, [&](std::size_t begin, std::size_t end) {
+  ParallelFor(last - first, 32, [&](std::size_t begin, std::size_t end) {
     std::vector<double> t(count), y(count);
     LobeRays lobe_rays;
     std::vector<std::uint8_t> blocked(hit_transfer ? 0 : std::size_t(m));
     std::vector<std::optional<Hit>> hits(hit_transfer ? std::size_t(m) : 0);
     std::uint64_t local_rays = 0;
-    for (std::size_t v = begin; v < end; ++v) {
+    for (std::size_t v = first + begin; v < first + end; ++v) {
       const glm::dvec3 p(mesh.positions[v]), n(mesh.normals[v]);
       const glm::dvec3 r = LobeAxis(n, p, eye);
       table.Transfer(n, r, t.data());

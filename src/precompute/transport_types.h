@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,6 +37,15 @@ const char* TransportModeName(TransportMode mode);
 /// Every mode's word, in the enum's order.
 std::vector<std::string> TransportModeNames();
 
+/// A block of whole vertices [begin, end): what one shard of a farm job computes
+/// (farm/vertex_blocks.h). Every vertex by default.
+struct VertexBlock {
+  std::size_t begin = 0;
+  std::size_t end = std::numeric_limits<std::size_t>::max();
+  bool Has(std::size_t v) const { return v >= begin && v < end; }
+  bool All() const { return begin == 0 && end == std::numeric_limits<std::size_t>::max(); }
+};
+
 struct TransportOptions {
   TransportMode mode = TransportMode::kShadowed;
   int lmax = 2;
@@ -58,6 +68,10 @@ struct TransportOptions {
   /// Transfer matrices instead of the fixed-view vector G (a glossy material seen from a camera
   /// that moves; transfer_matrix.h).
   bool matrices = false;
+  /// The vertices computed; the others are left 0. Each vertex's transfer is its own (its
+  /// directions from hash(seed, v)), so a block's rows are those of the whole run to the bit.
+  /// Not in the cache key (a shard's rows belong to the whole run's transport).
+  VertexBlock block;
 };
 
 /// The lobe rays per vertex for `samples` pool directions: a quarter of them, at least 64

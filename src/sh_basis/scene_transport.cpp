@@ -94,7 +94,8 @@ std::string DirectionsText(bool from_rule, const TransportOptions& o, const Tran
 }  // namespace
 
 Transport ComputeSceneTransport(const Basis& sh, const Mesh& mesh, const TransportOptions& options, bool samples_from_rule,
-                                const CachePlan& cache, const Camera* camera, bool matrices) {
+                                const CachePlan& cache, const Camera* camera, bool matrices,
+                                const ShardedTransport& sharded) {
   TransportOptions topts = options;
   if (camera && !matrices) topts.eye = glm::dvec3(camera->eye);
   topts.matrices = matrices && options.material.glossy;
@@ -117,7 +118,21 @@ Transport ComputeSceneTransport(const Basis& sh, const Mesh& mesh, const Transpo
     t.material = topts.material;
     WarnIfMostlyBlocked(mesh, t, topts.mode);
   };
+  if (sharded.transport && sharded.key != steps.key)
+    throw Error("the shards were made from another mesh or other options than those read now (their cache key " +
+                Formatted("%016llx", static_cast<unsigned long long>(sharded.key)) + ", now " +
+                Formatted("%016llx", static_cast<unsigned long long>(steps.key)) +
+                ") (expected the same mesh, environment and options as the shards' tasks)");
   steps.compute = [&] {
+    if (sharded.transport) {
+      Summary("transport: " + std::string(TransportModeName(topts.mode)) + ", lmax " + std::to_string(topts.lmax) +
+              ", assembled from " + std::to_string(sharded.shards) + " shards (" +
+              std::to_string(sharded.transport->vertices) + " vertices), as one run computes it");
+      Transport t = *sharded.transport;
+      t.material = topts.material;
+      WarnIfMostlyBlocked(mesh, t, topts.mode);
+      return t;
+    }
     const auto t0 = std::chrono::steady_clock::now();
     TransportReport r;
     Transport transport = ComputeTransport(mesh, topts, &r);

@@ -23,9 +23,20 @@ namespace prt {
 /// With `matrices`, a glossy material gets transfer matrices instead (any view). `options.seen`
 /// marks the vertices the camera sees in some frame (render/seen_vertices.h; empty: all): they
 /// take --samples directions, the others --hidden-samples. `samples_from_rule`: the direction
-/// count is the sample rule's default, which the summary line says.
+/// count is the sample rule's default, which the summary line says. With `sharded`, the
+/// transport is the one its shards assembled (Error when they were made from another mesh or
+/// options than `mesh` and `options`), taken and cached as a computed one.
+/// The transport of a farm job, assembled from its shards (farm/assemble_shards.h), which
+/// ComputeSceneTransport takes in place of computing it.
+struct ShardedTransport {
+  const Transport* transport = nullptr;
+  std::uint64_t key = 0;  ///< the cache key the shards were made with
+  int shards = 0;
+};
+
 Transport ComputeSceneTransport(const Basis& sh, const Mesh& mesh, const TransportOptions& options, bool samples_from_rule,
-                                const CachePlan& cache, const Camera* camera = nullptr, bool matrices = false);
+                                const CachePlan& cache, const Camera* camera = nullptr, bool matrices = false,
+                                const ShardedTransport& sharded = {});
 
 /// Says on the run summary what the transfer matrices of `mesh` at `lmax` will take, and throws
 /// Error, naming the largest lmax that fits, when that is more than the memory available allows.

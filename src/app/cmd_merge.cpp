@@ -1,0 +1,88 @@
+// prt merge DIR: the last step of a farm job. The shards its tasks wrote into DIR (prt
+// precompute --shard I/N, app/precompute_shard.h) are checked and assembled
+// (farm/assemble_shards.h), and the precompute they were made by is run once more with that
+// transport: what needs every vertex (the course's files, the cache, the transfer matrices and
+// their clustered PCA) is written as one run on one machine writes it, byte for byte.
+#include <filesystem>
+
+#include "app/commands.h"
+#include "app/precompute_shard.h"
+#include "app/render_args.h"
+#include "bases/list.h"
+#include "core/atomic_file.h"
+#include "core/log.h"
+#include "farm/assemble_shards.h"
+#include "precompute_io/transport_shard.h"
+
+namespace prt {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// `command` with its --out folder replaced by `dir` (the folder may have been moved since).
+std::vector<std::string> WithOut(std::vector<std::string> command, const std::string& dir) {
+  for (std::size_t i = 0; i < command.size(); ++i) {
+    if (command[i] == "--out" && i + 1 < command.size()) command[i + 1] = dir;
+    else if (command[i].rfind("--out=", 0) == 0) command[i] = "--out=" + dir;
+  }
+  return command;
+}
+
+/// Removes the shard files of `cache_name` in `dir`, and the temporary files killed tasks left
+/// while writing one (all tasks have ended when the merge runs).
+void RemoveShards(const std::string& dir, const std::string& cache_name) {
+  std::error_code ec;
+  std::vector<fs::path> doomed;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir, ec)) {
+    std::string name = entry.path().filename().string();
+    if (AtomicFile::IsTemporaryName(name)) name = name.substr(1, name.rfind(AtomicFile::kTemporaryTag) - 1);
+    int index = 0, count = 0;
+    if (IsShardFileName(name, cache_name, index, count)) doomed.push_back(entry.path());
+  }
+  for (const fs::path& path : doomed) fs::remove(path, ec);
+}
+
+}  // namespace
+
+CommandSpec MergeSpec() {
+  return {"prt merge DIR",
+          "The last step of a farm job: checks the shards that prt precompute --shard I/N --out DIR wrote into DIR "
+          "(whole, made by the same command from the same mesh and options, every shard 0..N-1 present once), "
+          "assembles them, and writes into DIR what that precompute without --shard writes there: light.txt, "
+          "transport.txt, the cache and, for a glossy material, the transfer matrices, byte for byte as one run on "
+          "one machine writes them. A missing, damaged or foreign shard is refused with its name and reason before "
+          "anything is written. The shard files are removed once the merge has succeeded.",
+          {{"options",
+            {{"--keep-shards", "", "keep the shard files after a successful merge", "off: removed"}, QuietOption()}}}};
+}
+
+int RunMerge(const std::vector<std::string>& tokens) {
+  Args args("merge", tokens, MergeSpec());
+  const bool keep = args.Flag("--keep-shards");
+  SetQuiet(args.Flag("--quiet"));
+  const std::vector<std::string> dirs = args.TakePositionals();
+  args.Finish();
+  if (dirs.size() != 1) args.Fail("expected one folder, DIR (got " + std::to_string(dirs.size()) + ")");
+  const std::string& dir = dirs[0];
+  // The basis whose shards are there: its cache's name names them.
+  const Basis* basis = DefaultBasis();
+  for (const Basis* b : Bases()) {
+    std::error_code ec;
+    for (const fs::directory_entry& entry : fs::directory_iterator(dir, ec)) {
+      int index = 0, count = 0;
+      if (IsShardFileName(entry.path().filename().string(), b->CacheName(), index, count)) basis = b;
+    }
+  }
+  const AssembledShards shards = AssembleShards(dir, basis->CacheName());
+  Summary("merge: " + std::to_string(shards.count) + " shards in " + dir + ", whole and of one job (" +
+          std::to_string(shards.transport.vertices) + " vertices)");
+  ShardedTransport sharded{&shards.transport, shards.key, shards.count};
+  const int status = Precompute(WithOut(shards.command, dir), sharded);
+  if (status == 0 && !keep) {
+    RemoveShards(dir, basis->CacheName());
+    Summary("merge: removed the " + std::to_string(shards.count) + " shard files (--keep-shards keeps them)");
+  }
+  return status;
+}
+
+}  // namespace prt

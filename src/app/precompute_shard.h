@@ -1,0 +1,31 @@
+#pragma once
+/// \file
+/// `prt precompute --shard I/N`: one task of a farm job. It computes the transport of vertex
+/// block I of N (farm/vertex_blocks.h) and writes it as a shard file in the output folder
+/// (precompute_io/transport_shard.h), beside where the cache goes; `prt merge DIR`
+/// (cmd_merge.cpp) then writes what one `prt precompute` writes there. Many tasks write one
+/// folder at once, so a shard task takes no lock of it and writes nothing else there.
+
+#include <string>
+#include <vector>
+
+#include "app/scene_options.h"
+#include "farm/shard_id.h"
+#include "sh_basis/scene_transport.h"
+
+namespace prt {
+
+/// Computes and writes shard `shard` of the transport `options` ask for into `out`; `command`
+/// is the precompute's command line without --shard, recorded in the shard for the merge.
+/// Returns the exit code.
+int RunPrecomputeShard(const SceneOptions& options, const ShardId& shard, const std::string& out,
+                       const std::vector<std::string>& command);
+
+/// `prt precompute` with the command line `tokens`, its transport `sharded`'s when given (the
+/// merge of a farm job's shards) instead of computed. Returns the exit code.
+int Precompute(const std::vector<std::string>& tokens, const ShardedTransport& sharded);
+
+/// `tokens` without the `--shard VALUE` (or `--shard=VALUE`) in them.
+std::vector<std::string> WithoutShard(const std::vector<std::string>& tokens);
+
+}  // namespace prt

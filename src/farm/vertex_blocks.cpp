@@ -1,0 +1,41 @@
+#include "farm/vertex_blocks.h"
+
+#include <algorithm>
+#include <string>
+
+#include "core/error.h"
+
+namespace prt {
+
+std::vector<std::size_t> BlockBounds(const std::vector<std::uint64_t>& work, int count) {
+  const std::size_t n = work.size();
+  if (count < 1 || std::size_t(count) > n)
+    throw Error("--shard: " + std::to_string(count) + " shards for " + std::to_string(n) +
+                " vertices (expected at most one shard per vertex)");
+  std::vector<std::uint64_t> prefix(n + 1, 0);  // prefix[v]: the work of the vertices before v
+  for (std::size_t v = 0; v < n; ++v) prefix[v + 1] = prefix[v] + work[v];
+  const std::uint64_t total = prefix[n];
+  std::vector<std::size_t> bounds(std::size_t(count) + 1, 0);
+  bounds[std::size_t(count)] = n;
+  for (int i = 1; i < count; ++i) {
+    // The first vertex whose work starts at or past i W / N (a 128-bit product would be exact;
+    // total * i fits 64 bits for any mesh prt can hold: 2^32 vertices x 2^16 directions x 2^17).
+    const std::uint64_t target = (total * std::uint64_t(i) + std::uint64_t(count) - 1) / std::uint64_t(count);
+    std::size_t b = static_cast<std::size_t>(std::lower_bound(prefix.begin(), prefix.end(), target) - prefix.begin());
+    // Every block at least one vertex, and room left for the blocks after it.
+    b = std::max(b, bounds[std::size_t(i) - 1] + 1);
+    b = std::min(b, n - std::size_t(count - i));
+    bounds[std::size_t(i)] = b;
+  }
+  return bounds;
+}
+
+VertexBlock BlockOf(const std::vector<std::uint64_t>& work, int index, int count) {
+  const std::vector<std::size_t> bounds = BlockBounds(work, count);
+  VertexBlock block;
+  block.begin = bounds.at(std::size_t(index));
+  block.end = bounds.at(std::size_t(index) + 1);
+  return block;
+}
+
+}  // namespace prt
