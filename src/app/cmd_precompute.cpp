@@ -141,7 +141,7 @@ int Precompute(const std::vector<std::string>& tokens, const ShardedTransport& s
     } catch (const Error& e) {
       args.Fail(e.what());
     }
-    return RunPrecomputeShard(options, shard, *out, WithoutShard(tokens));
+    return RunPrecomputeShard(options, shard, *out, ShardCommand(tokens));
   }
   if (options.lmax != kCourseLmax)  // known from the options: said before any work
     Warn("lmax " + std::to_string(options.lmax) + ": these files will have " +

@@ -13,15 +13,16 @@
 
 namespace prt {
 
-std::vector<std::string> WithoutShard(const std::vector<std::string>& tokens) {
+std::vector<std::string> ShardCommand(const std::vector<std::string>& tokens) {
   std::vector<std::string> kept;
   for (std::size_t i = 0; i < tokens.size(); ++i) {
-    if (tokens[i] == "--shard") {
+    const std::string& t = tokens[i];
+    if (t == "--shard" || t == "--threads") {
       ++i;  // and its value
       continue;
     }
-    if (tokens[i].rfind("--shard=", 0) == 0) continue;
-    kept.push_back(tokens[i]);
+    if (t == "--quiet" || t.rfind("--shard=", 0) == 0 || t.rfind("--threads=", 0) == 0) continue;
+    kept.push_back(t);
   }
   return kept;
 }

@@ -25,7 +25,9 @@ int RunPrecomputeShard(const SceneOptions& options, const ShardId& shard, const 
 /// merge of a farm job's shards) instead of computed. Returns the exit code.
 int Precompute(const std::vector<std::string>& tokens, const ShardedTransport& sharded);
 
-/// `tokens` without the `--shard VALUE` (or `--shard=VALUE`) in them.
-std::vector<std::string> WithoutShard(const std::vector<std::string>& tokens);
+/// The command line a shard records for the merge: `tokens` without --shard, --threads and
+/// --quiet (each as `--name VALUE` or `--name=VALUE`), which change nothing in what is written:
+/// the tasks of one job may run on machines of any size.
+std::vector<std::string> ShardCommand(const std::vector<std::string>& tokens);
 
 }  // namespace prt

@@ -1,0 +1,150 @@
+// prt precompute --shard I/N and prt merge as a farm job runs them, as processes: the merged
+// folder holds every file one run writes, the same bytes; each refusal comes before anything
+// final is written; a task killed mid-shard leaves nothing a merge would take, and running it
+// again completes the set.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include "core/atomic_file.h"
+#include "tests/test_process.h"
+
+namespace prt {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Q;
+
+/// Every file of `dir` (hidden ones too) by name, with its bytes.
+std::map<std::string, std::string> Files(const std::string& dir) {
+  std::map<std::string, std::string> files;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
+    std::ifstream in(e.path(), std::ios::binary);
+    files[e.path().filename().string()] = std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  return files;
+}
+
+/// The task `index` of `count` of `options` into `dir`.
+test::RunResult Task(const std::string& options, const std::string& dir, int index, int count) {
+  return test::RunPrt("precompute" + options + " --out " + Q(dir) + " --shard " + std::to_string(index) + "/" +
+                      std::to_string(count) + " --quiet");
+}
+
+/// Runs `options` as `count` shards and a merge into `dir`; REQUIREs each to succeed.
+void Farm(const std::string& options, const std::string& dir, int count) {
+  for (int i = 0; i < count; ++i) {
+    const test::RunResult task = Task(options, dir, i, count);
+    REQUIRE_MESSAGE(task.exit_code == 0, task.err);
+  }
+  const test::RunResult merge = test::RunPrt("merge " + Q(dir) + " --quiet");
+  REQUIRE_MESSAGE(merge.exit_code == 0, merge.err);
+}
+
+}  // namespace
+
+TEST_SUITE("farm") {
+TEST_CASE("farm: shards and a merge write the folder one precompute writes, byte for byte, every mode and part") {
+  const std::string scene = test::SmallSceneOption("farm_bytes");  // 241 vertices: no count below divides it
+  const char* cases[] = {" --transport unshadowed", " --samples 128", " --lmax 3 --samples 64 --sampler stratified",
+                         " --samples 64 --material phong:10,0.15 --cpca 2,1"};
+  for (const char* options : cases) {
+    CAPTURE(options);
+    const std::string one = test::ScratchDir("farm_one"), farm = test::ScratchDir("farm_shards");
+    const test::RunResult run = test::RunPrt("precompute" + scene + options + " --out " + Q(one) + " --quiet");
+    REQUIRE_MESSAGE(run.exit_code == 0, run.err);
+    Farm(scene + options, farm, 3);
+    const auto expected = Files(one), got = Files(farm);
+    CHECK(expected.count("transport.cache") == 1);
+    CHECK(got.size() == expected.size());  // the shard files removed
+    for (const auto& [name, bytes] : expected) {
+      CAPTURE(name);
+      REQUIRE(got.count(name) == 1);
+      CHECK(got.at(name) == bytes);
+    }
+  }
+}
+
+TEST_CASE("farm: a shard count or index that cannot be, and interreflection, refused before any work") {
+  const std::string dir = test::ScratchDir("farm_refused");
+  const std::string scene = test::SmallSceneOption("farm_refused_scene");
+  test::RunResult r = Task(scene, dir, 3, 3);
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("prt: error: --shard 3/3: shard 3 of 3") == 0);
+  r = test::RunPrt("precompute" + scene + " --out " + Q(dir) + " --shard 0/2 --transport interreflection");
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("--shard: not with --transport interreflection") != std::string::npos);
+  r = test::RunCommand("env -u SLURM_ARRAY_TASK_ID -u JOB_COMPLETION_INDEX " + Q(test::PrtBinary()) + " precompute" + scene +
+                       " --out " + Q(dir) + " --shard auto");
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("no task index in the environment") != std::string::npos);
+  r = test::RunCommand("SLURM_ARRAY_TASK_ID=1 SLURM_ARRAY_TASK_COUNT=2 " + Q(test::PrtBinary()) + " precompute" + scene +
+                       " --out " + Q(dir) + " --shard auto");
+  CHECK(r.exit_code == 0);
+  CHECK(fs::exists(dir + "/transport.cache.shard-00001-of-00002"));
+  CHECK(r.err.find("SLURM_ARRAY_TASK_ID=1 of SLURM_ARRAY_TASK_COUNT=2") != std::string::npos);
+  // More shards than vertices: refused once the mesh is read, nothing written.
+  r = Task(scene, dir, 0, 242);
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("242 shards for 241 vertices") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir + "/transport.cache.shard-00000-of-00242"));
+}
+
+TEST_CASE("farm: an incomplete, foreign or stale set of shards is refused by merge with nothing final written") {
+  const std::string scene_dir = test::ScratchDir("farm_merge_scene");
+  const std::string scene = test::SmallSceneOption("farm_merge_scene");
+  const std::string dir = test::ScratchDir("farm_merge");
+  for (int i : {0, 2}) REQUIRE(Task(scene + " --samples 64", dir, i, 3).exit_code == 0);
+  test::RunResult r = test::RunPrt("merge " + Q(dir));
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("shard 1 of 3 missing") != std::string::npos);
+  // Shard 1 of a job with another seed: its command and its key differ.
+  REQUIRE(Task(scene + " --samples 64 --seed 9", dir, 1, 3).exit_code == 0);
+  r = test::RunPrt("merge " + Q(dir));
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("transport.cache.shard-00001-of-00003: made by another command than shard 0") != std::string::npos);
+  // The right shard 1: then the mesh file changes before the merge (a stale set).
+  REQUIRE(Task(scene + " --samples 64", dir, 1, 3).exit_code == 0);
+  const std::string mesh = scene.substr(scene.find('\'') + 1, scene.rfind('\'') - scene.find('\'') - 1);
+  std::ofstream(mesh, std::ios::app) << "v 0 0 5\nv 1 0 5\nv 0 1 5\nf -3 -2 -1\n";  // one more triangle
+  r = test::RunPrt("merge " + Q(dir));
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("the shards were made from another mesh or other options") != std::string::npos);
+  for (const char* final : {"light.txt", "transport.txt", "transport.cache", ".prt-outputs"}) {
+    CAPTURE(final);
+    CHECK_FALSE(fs::exists(dir + "/" + final));
+  }
+  CHECK(fs::exists(dir + "/transport.cache.shard-00001-of-00003"));  // kept for a retry
+}
+
+TEST_CASE("farm: a task killed mid-shard leaves no shard; run again, the set completes as one run") {
+  const std::string scene = test::SmallSceneOption("farm_killed_scene") + " --samples 65536";
+  const std::string dir = test::ScratchDir("farm_killed"), one = test::ScratchDir("farm_killed_one");
+  REQUIRE(Task(scene, dir, 0, 2).exit_code == 0);
+  // Task 1 stopped by SIGKILL, then by the scheduler's SIGTERM, each while it computes (on one
+  // thread it takes over a second here): the exit status says the signal ended it (so it was
+  // still running), and no file of it is left. --threads is not part of a shard's command.
+  for (const char* signal : {"KILL", "TERM"}) {
+    CAPTURE(signal);
+    const test::RunResult killed = test::RunCommand(
+        Q(test::PrtBinary()) + " precompute" + scene + " --out " + Q(dir) + " --shard 1/2 --threads 1 --quiet & pid=$!; sleep 0.3; kill -" +
+        signal + " $pid; wait $pid; echo status=$?");
+    CHECK(killed.out.find(std::string("status=") + (signal[0] == 'K' ? "137" : "143")) != std::string::npos);
+    for (const fs::directory_entry& e : fs::directory_iterator(dir))
+      CHECK(e.path().filename().string().find("shard-00001") == std::string::npos);
+  }
+  test::RunResult r = test::RunPrt("merge " + Q(dir));
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("shard 1 of 2 missing") != std::string::npos);
+  REQUIRE(Task(scene, dir, 1, 2).exit_code == 0);
+  REQUIRE(test::RunPrt("merge " + Q(dir) + " --quiet").exit_code == 0);
+  REQUIRE(test::RunPrt("precompute" + scene + " --out " + Q(one) + " --quiet").exit_code == 0);
+  CHECK(Files(dir) == Files(one));
+}
+
+}  // TEST_SUITE
+
+}  // namespace prt
