@@ -108,7 +108,7 @@ CommandSpec PrecomputeSpec() {
 
 int RunPrecompute(const std::vector<std::string>& tokens) { return Precompute(tokens, {}); }
 
-int Precompute(const std::vector<std::string>& tokens, const ShardedTransport& sharded) {
+int Precompute(const std::vector<std::string>& tokens, const ShardedTransport& sharded, bool check_only) {
   Args args("precompute", tokens, PrecomputeSpec());
   const SceneOptions options = ReadSceneOptions(args);
   const auto out = args.String("--out");
@@ -141,6 +141,7 @@ int Precompute(const std::vector<std::string>& tokens, const ShardedTransport& s
     } catch (const Error& e) {
       args.Fail(e.what());
     }
+    if (check_only) return 0;
     return RunPrecomputeShard(options, shard, *out, ShardCommand(tokens));
   }
   if (options.lmax != kCourseLmax)  // known from the options: said before any work

@@ -24,6 +24,7 @@ int RunDiff(const std::vector<std::string>& tokens);
 int RunBasis(const std::vector<std::string>& tokens);
 int RunSampleFiles(const std::vector<std::string>& tokens);
 int RunMerge(const std::vector<std::string>& tokens);
+int RunFarm(const std::vector<std::string>& tokens);
 
 CommandSpec DemoSpec();
 CommandSpec RenderSpec();
@@ -36,5 +37,6 @@ CommandSpec DiffSpec();
 CommandSpec BasisSpec();
 CommandSpec SampleFilesSpec();
 CommandSpec MergeSpec();
+CommandSpec FarmSpec();
 
 }  // namespace prt

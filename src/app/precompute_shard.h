@@ -22,8 +22,10 @@ int RunPrecomputeShard(const SceneOptions& options, const ShardId& shard, const 
                        const std::vector<std::string>& command);
 
 /// `prt precompute` with the command line `tokens`, its transport `sharded`'s when given (the
-/// merge of a farm job's shards) instead of computed. Returns the exit code.
-int Precompute(const std::vector<std::string>& tokens, const ShardedTransport& sharded);
+/// merge of a farm job's shards) instead of computed. Returns the exit code. `check_only`, with
+/// a --shard among `tokens`: the options are checked as a task would check them (a refusal
+/// thrown as its task would), nothing loaded or written (`prt farm`, before it submits).
+int Precompute(const std::vector<std::string>& tokens, const ShardedTransport& sharded, bool check_only = false);
 
 /// The command line a shard records for the merge: `tokens` without --shard, --threads and
 /// --quiet (each as `--name VALUE` or `--name=VALUE`), which change nothing in what is written:

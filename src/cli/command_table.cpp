@@ -10,6 +10,7 @@ const std::vector<Command>& Commands() {
       {"demo", "the main job on the embedded default scene", DemoSpec, RunDemo},
       {"render", "precompute (or reuse the cache), then write rotating-light frames", RenderSpec, RunRender},
       {"precompute", "write light.txt and transport.txt in the course's format", PrecomputeSpec, RunPrecompute},
+      {"farm", "run a command as a Slurm job of shards and a merge", FarmSpec, RunFarm},
       {"merge", "assemble a farm job's shards into what one precompute writes", MergeSpec, RunMerge},
       {"light", "print an environment's SH coefficients", LightSpec, RunLight},
       {"view", "serve a page that relights the scene live in a browser", ViewSpec, RunView},

@@ -1,0 +1,126 @@
+// prt farm slurm COMMAND [its options] --tasks N: a command as a Slurm job (farm/slurm_script.h):
+// its options checked here as each task would check them, then the job script written beside
+// the output folder and submitted with sbatch (or printed, --dry-run).
+#include <filesystem>
+
+#include "app/commands.h"
+#include "app/precompute_shard.h"
+#include "app/render_args.h"
+#include "core/atomic_file.h"
+#include "core/child_process.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "core/output_folder.h"
+#include "farm/shard_id.h"
+#include "farm/slurm_script.h"
+
+namespace prt {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The value of `name` in `tokens` (`--name VALUE` or `--name=VALUE`), removed from them; "" when absent.
+std::string Take(std::vector<std::string>& tokens, const std::string& name, bool flag = false) {
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    if (tokens[i] == name) {
+      std::string value = flag ? "1" : (i + 1 < tokens.size() ? tokens[i + 1] : "");
+      tokens.erase(tokens.begin() + std::ptrdiff_t(i), tokens.begin() + std::ptrdiff_t(flag || i + 1 >= tokens.size() ? i + 1 : i + 2));
+      if (value.empty()) throw UsageError(name + ": needs a value", "farm");
+      return value;
+    }
+    if (!flag && tokens[i].rfind(name + "=", 0) == 0) {
+      std::string value = tokens[i].substr(name.size() + 1);
+      tokens.erase(tokens.begin() + std::ptrdiff_t(i));
+      return value;
+    }
+  }
+  return "";
+}
+
+/// The words of `text` split at spaces.
+std::vector<std::string> Words(const std::string& text) {
+  std::vector<std::string> words;
+  std::string word;
+  for (char c : text + " ") {
+    if (c != ' ') word += c;
+    else if (!word.empty()) words.push_back(word), word.clear();
+  }
+  return words;
+}
+
+}  // namespace
+
+CommandSpec FarmSpec() {
+  return {"prt farm slurm COMMAND [its options] --tasks N [--sbatch \"OPTIONS\"] [--wait] [--dry-run]",
+          "Runs COMMAND (precompute) as a Slurm job: an array job of N tasks, each computing one block of the "
+          "vertices (prt precompute --shard auto), and a job that runs prt merge once every task has succeeded "
+          "(sbatch --dependency=afterok). The result in the command's --out DIR is what the command run on one "
+          "machine writes there, byte for byte. The jobs run in this folder with this prt binary, so every machine "
+          "of the cluster needs them at the same paths (a shared file system). The job script and the jobs' logs "
+          "go to DIR.farm/ beside DIR. COMMAND's options are checked here, before anything is submitted.",
+          {{"options",
+            {{"--tasks", "N", "the number of shards (array tasks), 1..100000, at most the mesh's vertex count", "required"},
+             {"--sbatch", "\"OPTIONS\"",
+              "options given to every sbatch, as one word (e.g. \"--partition=long --time=2:00:00 --mem-per-cpu=2G\")",
+              "none"},
+             {"--wait", "", "wait for the merge job and exit with its status (sbatch --wait)", "off: exit once submitted"},
+             {"--dry-run", "", "print the job script on stdout instead of submitting it", "off"},
+             QuietOption()}}}};
+}
+
+int RunFarm(const std::vector<std::string>& given) {
+  std::vector<std::string> tokens = given;
+  const auto usage = [](const std::string& message) { throw UsageError(message, "farm"); };
+  if (tokens.empty() || tokens[0] != "slurm")
+    usage("expected a scheduler, slurm, then a command (prt farm slurm precompute ... --tasks N)");
+  if (tokens.size() < 2 || tokens[1] != "precompute")
+    usage(std::string("farm slurm: ") + (tokens.size() < 2 ? "no command" : "'" + tokens[1] + "'") +
+          " (expected precompute; render and reference do not run as shards yet)");
+  SlurmJob job;
+  job.command = tokens[1];
+  tokens.erase(tokens.begin(), tokens.begin() + 2);
+  const std::string tasks = Take(tokens, "--tasks");
+  const bool wait = !Take(tokens, "--wait", true).empty();
+  const bool dry_run = !Take(tokens, "--dry-run", true).empty();
+  job.sbatch = Words(Take(tokens, "--sbatch"));
+  if (tasks.empty()) usage("--tasks N is required (the number of array tasks)");
+  for (const std::string& t : tokens)
+    if (t == "--shard" || t.rfind("--shard=", 0) == 0) usage("--shard: prt farm gives each task its own (--shard auto)");
+  try {
+    job.tasks = ParseShard("0/" + tasks).count;
+  } catch (const Error&) {
+    usage("--tasks " + tasks + ": expected a whole number 1.." + std::to_string(kMaxShards));
+  }
+  // The command's options, checked as each task will check them.
+  std::vector<std::string> check = tokens;
+  check.insert(check.end(), {"--shard", "0/" + std::to_string(job.tasks)});
+  Precompute(check, {}, true);
+  job.options = tokens;
+  job.out = Take(tokens, "--out");
+  job.wait = wait;
+  job.prt = fs::canonical("/proc/self/exe").string();
+  job.workdir = fs::current_path().string();
+  const std::string script = SlurmScript(job);
+  if (dry_run) {
+    std::fputs(script.c_str(), stdout);
+    return 0;
+  }
+  const std::optional<std::string> sbatch = FindProgram("sbatch");
+  if (!sbatch)
+    throw Error("sbatch: not found on PATH (expected Slurm's client tools, Debian's slurm-client; --dry-run prints the "
+                "job script instead)");
+  CreateFolder(FarmFolder(job.out));
+  const std::string path = FarmFolder(job.out) + "/submit.sh";
+  WriteFileAtomic(path, script);
+  Summary("farm: " + job.command + " as " + std::to_string(job.tasks) + " shards and a merge, submitted by " + path +
+          (wait ? "; waiting for the merge" : ""));
+  const ProgramResult run = RunProgram({"/bin/bash", path});
+  if (run.status != 0)
+    throw Error(path + ": " + (wait ? "the job" : "sbatch") + " failed (exit " + std::to_string(run.status) + "; logs in " +
+                FarmFolder(job.out) + "/)");
+  const std::string merge = run.out.substr(0, run.out.find('\n'));
+  Summary("farm: merge job " + merge + (wait ? " succeeded: " + job.out + " is written" : " submitted; it writes " + job.out));
+  return 0;
+}
+
+}  // namespace prt

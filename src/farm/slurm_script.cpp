@@ -1,0 +1,49 @@
+#include "farm/slurm_script.h"
+
+#include "core/shell_word.h"
+
+namespace prt {
+namespace {
+
+/// The words as one shell line.
+std::string Line(const std::vector<std::string>& words) {
+  std::string line;
+  for (const std::string& w : words) line += (line.empty() ? "" : " ") + ShellWord(w);
+  return line;
+}
+
+}  // namespace
+
+std::string FarmFolder(const std::string& out) {
+  std::string trimmed = out;
+  while (trimmed.size() > 1 && trimmed.back() == '/') trimmed.pop_back();
+  return trimmed + ".farm";
+}
+
+std::string SlurmScript(const SlurmJob& job) {
+  const std::string farm = FarmFolder(job.out);
+  std::vector<std::string> task = {job.prt, job.command};
+  task.insert(task.end(), job.options.begin(), job.options.end());
+  task.insert(task.end(), {"--shard", "auto", "--quiet"});
+  const std::string extra = job.sbatch.empty() ? "" : " " + Line(job.sbatch);
+  std::string s;
+  s += "#!/bin/bash\n";
+  s += "# Written by prt farm slurm: " + job.command + " as " + std::to_string(job.tasks) +
+       " shards of an array job, then prt merge once every shard has succeeded.\n";
+  s += "# Its result in " + job.out + " is what the same command run on one machine writes there.\n";
+  s += "set -euo pipefail\n";
+  s += "cd " + ShellWord(job.workdir) + "\n";
+  s += "mkdir -p " + ShellWord(farm) + "\n";
+  s += "shards=$(sbatch --parsable --job-name=prt-shards --array=0-" + std::to_string(job.tasks - 1) +
+       " --chdir=" + ShellWord(job.workdir) + " --output=" + ShellWord(farm + "/shard-%a.log") + extra + " --wrap " +
+       ShellWord(Line(task)) + ")\n";
+  s += "shards=${shards%%;*}  # the job id without the cluster's name\n";
+  s += "echo \"prt farm: shards: job $shards (" + std::to_string(job.tasks) + " tasks)\" >&2\n";
+  s += "merge=$(sbatch --parsable --job-name=prt-merge --dependency=afterok:$shards --kill-on-invalid-dep=yes --chdir=" +
+       ShellWord(job.workdir) + " --output=" + ShellWord(farm + "/merge.log") + extra +
+       (job.wait ? " --wait" : "") + " --wrap " + ShellWord(Line({job.prt, "merge", job.out, "--quiet"})) + ")\n";
+  s += "echo \"${merge%%;*}\"\n";
+  return s;
+}
+
+}  // namespace prt
