@@ -1,0 +1,118 @@
+// prt farm slurm as a process, before a stand-in sbatch on PATH that records its arguments and
+// answers job ids as Slurm's does ("ID;CLUSTER"): the script's two submissions, in order, the
+// merge depending on the shards' job; --dry-run submits nothing; options a task would refuse,
+// and a missing or failing sbatch, refused with nothing submitted. The real scheduler runs the
+// job in the slurm tier (test_slurm_farm.cpp).
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "tests/test_process.h"
+
+namespace prt {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Q;
+
+/// A folder holding a stand-in `sbatch` that appends its arguments, one call a line, to
+/// `dir/calls` and prints the next job id (101, 102, ...) with a cluster name; with `fail`, it
+/// exits 1 instead.
+std::string StandInSbatch(const std::string& dir, bool fail = false) {
+  fs::create_directories(dir + "/bin");
+  const std::string path = dir + "/bin/sbatch";
+  std::ofstream(path) << "#!/bin/bash\n"
+                      << "printf '%s\\n' \"$*\" >> " << Q(dir + "/calls") << "\n"
+                      << (fail ? "echo 'sbatch: error: invalid partition' >&2; exit 1\n" : "")
+                      << "n=$(( $(cat " << Q(dir + "/count") << " 2>/dev/null || echo 100) + 1 ))\n"
+                      << "echo $n > " << Q(dir + "/count") << "\n"
+                      << "echo \"$n;prt\"\n";
+  fs::permissions(path, fs::perms::owner_all);
+  return dir + "/bin";
+}
+
+std::vector<std::string> Calls(const std::string& dir) {
+  std::vector<std::string> calls;
+  std::ifstream in(dir + "/calls");
+  for (std::string line; std::getline(in, line);) calls.push_back(line);
+  return calls;
+}
+
+test::RunResult Farm(const std::string& bin, const std::string& arguments) {
+  return test::RunCommand("PATH=" + Q(bin) + ":/usr/bin:/bin " + Q(test::PrtBinary()) + " farm slurm " + arguments);
+}
+
+}  // namespace
+
+TEST_SUITE("farm") {
+TEST_CASE("farm slurm: the shards' array job, then the merge depending on it, submitted by the script it writes") {
+  const std::string dir = test::ScratchDir("farm_stub");
+  const std::string bin = StandInSbatch(dir);
+  const std::string out = dir + "/out";
+  const test::RunResult r = Farm(bin, "precompute" + test::SmallSceneOption("farm_stub_scene") + " --samples 64 --out " +
+                                          Q(out) + " --tasks 3 --sbatch '--partition=long --time=1:00:00'");
+  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+  const std::vector<std::string> calls = Calls(dir);
+  REQUIRE(calls.size() == 2);
+  CHECK(calls[0].find("--array=0-2 ") != std::string::npos);
+  CHECK(calls[0].find(" --partition=long --time=1:00:00 ") != std::string::npos);
+  CHECK(calls[0].find(" precompute --mesh ") != std::string::npos);
+  CHECK(calls[0].find(" --samples 64 --out " + out + " --shard auto --quiet") != std::string::npos);
+  CHECK(calls[1].find("--dependency=afterok:101 ") != std::string::npos);  // the shards' id, cluster name cut
+  CHECK(calls[1].find(" --kill-on-invalid-dep=yes ") != std::string::npos);
+  CHECK(calls[1].find(" merge " + out + " --quiet") != std::string::npos);
+  CHECK(calls[1].find("--wait") == std::string::npos);
+  CHECK(r.err.find("merge job 102 submitted") != std::string::npos);
+  CHECK(fs::exists(out + ".farm/submit.sh"));
+  CHECK_FALSE(fs::exists(out));  // the stand-in ran nothing
+
+  // --dry-run: the same script on stdout, nothing submitted or written.
+  const std::string dry = dir + "/dry";
+  const test::RunResult d = Farm(bin, "precompute --out " + Q(dry) + " --tasks 2 --dry-run");
+  CHECK(d.exit_code == 0);
+  CHECK(d.out.rfind("#!/bin/bash\n", 0) == 0);
+  CHECK(d.out.find("--array=0-1 ") != std::string::npos);
+  CHECK(Calls(dir).size() == 2);
+  CHECK_FALSE(fs::exists(dry + ".farm"));
+}
+
+TEST_CASE("farm slurm: what a task would refuse, a missing or failing sbatch, refused with nothing submitted") {
+  const std::string dir = test::ScratchDir("farm_stub_refused");
+  const std::string bin = StandInSbatch(dir);
+  const std::string out = " --out " + Q(dir + "/out");
+  struct Case {
+    std::string arguments, message;
+  };
+  const Case cases[] = {
+      {"precompute" + out + " --tasks 2 --transport interreflection", "not with --transport interreflection"},
+      {"precompute" + out, "--tasks N is required"},
+      {"precompute" + out + " --tasks 0", "--tasks 0: expected a whole number"},
+      {"precompute" + out + " --tasks 2 --shard 0/2", "--shard: prt farm gives each task its own"},
+      {"precompute --tasks 2", "--out DIR is required"},
+      {"precompute" + out + " --tasks 2 --lmax x", "--lmax"},
+      {"render" + out + " --tasks 2", "expected precompute"},
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.arguments);
+    const test::RunResult r = Farm(bin, c.arguments);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find(c.message) != std::string::npos);
+  }
+  CHECK(Calls(dir).empty());
+  // No sbatch on PATH, and one that fails: exit 1, saying which.
+  test::RunResult r =
+      test::RunCommand("PATH=" + Q(dir) + " " + Q(test::PrtBinary()) + " farm slurm precompute" + out + " --tasks 2");
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("sbatch: not found on PATH") != std::string::npos);
+  const std::string failing = test::ScratchDir("farm_stub_failing");
+  r = Farm(StandInSbatch(failing, true), "precompute" + out + " --tasks 2");
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("sbatch failed") != std::string::npos);
+  CHECK(Calls(failing).size() == 1);  // the script stops at the first failure
+}
+}  // TEST_SUITE
+
+}  // namespace prt

@@ -1,0 +1,79 @@
+// The job script of prt farm slurm (farm/slurm_script.h): one array job of N shard tasks, each
+// `--shard auto`, and a merge that depends on every task's success, both in the job's folder with
+// the same binary and the site's sbatch options, their logs beside the output folder.
+#include <doctest/doctest.h>
+
+#include <string>
+#include <vector>
+
+#include "farm/slurm_script.h"
+
+namespace prt {
+namespace {
+
+/// The script's line that starts with `start` (REQUIREd to be there once).
+std::string LineStarting(const std::string& script, const std::string& start) {
+  const std::size_t at = script.find("\n" + start);
+  REQUIRE(at != std::string::npos);
+  REQUIRE(script.find("\n" + start, at + 1) == std::string::npos);
+  return script.substr(at + 1, script.find('\n', at + 1) - at - 1);
+}
+
+SlurmJob Job() {
+  SlurmJob job;
+  job.prt = "/opt/prt/bin/prt";
+  job.workdir = "/home/me/my scans";
+  job.command = "precompute";
+  job.options = {"--mesh", "scan 1.obj", "--out", "out/scan", "--samples", "4096"};
+  job.out = "out/scan";
+  job.tasks = 16;
+  return job;
+}
+
+}  // namespace
+
+TEST_SUITE("farm") {
+TEST_CASE("slurm script: an array of N shard tasks, then the merge after all of them, in the job's folder") {
+  const std::string s = SlurmScript(Job());
+  CHECK(s.rfind("#!/bin/bash\n", 0) == 0);
+  CHECK(s.find("\nset -euo pipefail\n") != std::string::npos);
+  CHECK(LineStarting(s, "cd ") == "cd '/home/me/my scans'");
+  CHECK(LineStarting(s, "mkdir ") == "mkdir -p out/scan.farm");
+  const std::string shards = LineStarting(s, "shards=$(sbatch");
+  CHECK(shards.find(" --array=0-15 ") != std::string::npos);
+  CHECK(shards.find(" --chdir='/home/me/my scans' ") != std::string::npos);
+  CHECK(shards.find(" --output=out/scan.farm/shard-%a.log ") != std::string::npos);
+  // Each task: the same binary and options, its shard from the array.
+  CHECK(shards.find("--wrap '/opt/prt/bin/prt precompute --mesh '\\''scan 1.obj'\\'' --out out/scan --samples 4096 "
+                    "--shard auto --quiet')") != std::string::npos);
+  const std::string merge = LineStarting(s, "merge=$(sbatch");
+  CHECK(merge.find(" --dependency=afterok:$shards ") != std::string::npos);
+  CHECK(merge.find(" --kill-on-invalid-dep=yes ") != std::string::npos);
+  CHECK(merge.find(" --output=out/scan.farm/merge.log ") != std::string::npos);
+  CHECK(merge.find("--wrap '/opt/prt/bin/prt merge out/scan --quiet')") != std::string::npos);
+  CHECK(merge.find("--wait") == std::string::npos);
+  // The merge is submitted after the shards, whose id it names.
+  CHECK(s.find("shards=$(sbatch") < s.find("shards=${shards%%;*}"));
+  CHECK(s.find("shards=${shards%%;*}") < s.find("merge=$(sbatch"));
+  CHECK(s.substr(s.size() - 20) == "echo \"${merge%%;*}\"\n");
+}
+
+TEST_CASE("slurm script: the site's sbatch options on both jobs, --wait on the merge alone, one task, DIR/ trimmed") {
+  SlurmJob job = Job();
+  job.sbatch = {"--partition=long", "--time=2:00:00"};
+  job.wait = true;
+  job.tasks = 1;
+  job.out = "out/scan/";
+  const std::string s = SlurmScript(job);
+  const std::string shards = LineStarting(s, "shards=$(sbatch"), merge = LineStarting(s, "merge=$(sbatch");
+  CHECK(shards.find(" --array=0-0 ") != std::string::npos);
+  for (const std::string& line : {shards, merge}) CHECK(line.find(" --partition=long --time=2:00:00 ") != std::string::npos);
+  CHECK(shards.find("--wait") == std::string::npos);
+  CHECK(merge.find(" --wait --wrap ") != std::string::npos);
+  CHECK(FarmFolder("out/scan/") == "out/scan.farm");
+  CHECK(FarmFolder("/") == "/.farm");
+  CHECK(LineStarting(s, "mkdir ") == "mkdir -p out/scan.farm");
+}
+}  // TEST_SUITE
+
+}  // namespace prt
