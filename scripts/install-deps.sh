@@ -13,7 +13,9 @@ packages=(g++ cmake make ninja-build pkg-config
 # prt writes with Debian's cmark-gfm, GitHub's own Markdown renderer, to check every row keeps its
 # columns (prt itself never runs it). The tests of `prt view` drive Debian's chromium, headless,
 # from python3 over the DevTools Protocol (scripts/cdp.py), to check the page in a real browser.
-[ "${1:-}" = test ] && packages+=(ffmpeg cmark-gfm chromium python3)
+# The slurm tier runs prt farm against a real Slurm of one node: Debian's slurm-wlm (slurmctld,
+# slurmd, sbatch) and munge, which its test starts and stops itself.
+[ "${1:-}" = test ] && packages+=(ffmpeg cmark-gfm chromium python3 slurm-wlm munge)
 [ -n "${PRT_EXTRA_PACKAGES:-}" ] && read -r -a extra <<<"$PRT_EXTRA_PACKAGES" && packages+=("${extra[@]}")
 
 missing=()

@@ -3,6 +3,7 @@
 #   bash scripts/quickstart.sh demo   installs what is missing, builds, runs `prt demo`
 #   bash scripts/quickstart.sh test   installs what is missing, builds, runs every test: the
 #                                     default suite, then the README's commands (the readme
+#                                     tier), then prt farm on a real one-node Slurm (the slurm
 #                                     tier), each followed by its slowest tests and its tiers'
 #                                     seconds against their budgets (scripts/slowest-tests.sh);
 #                                     last, how many were skipped and why (skipped-tests.sh)
@@ -33,10 +34,14 @@ case "$what" in
         suite_log="$build/suite.log"
         status=0
         phase "suite (Release)" ctest --test-dir "$build" --output-on-failure --no-tests=error --parallel "$(nproc)" \
-          --label-exclude '^readme$' | tee "$suite_log" || status=$?
+          --label-exclude '^(readme|slurm)$' | tee "$suite_log" || status=$?
         if [ -f "$build/Testing/Temporary/LastTest.log" ]; then bash scripts/slowest-tests.sh "$build"; fi
         phase "readme (Release)" ctest --test-dir "$build" --output-on-failure --no-tests=error --parallel "$(nproc)" \
           --label-regex '^readme$' | tee -a "$suite_log" || status=$?
+        if [ -f "$build/Testing/Temporary/LastTest.log" ]; then bash scripts/slowest-tests.sh "$build" 5; fi
+        # prt farm against a real Slurm of one node, which its test starts and stops (the slurm tier).
+        phase "slurm (Release)" ctest --test-dir "$build" --output-on-failure --no-tests=error --parallel 1 \
+          --label-regex '^slurm$' | tee -a "$suite_log" || status=$?
         if [ -f "$build/Testing/Temporary/LastTest.log" ]; then bash scripts/slowest-tests.sh "$build" 5; fi
         # The last line: how many tests were skipped, and for want of what (CTest's "100% tests
         # passed" counts a skipped test as neither passed nor failed).

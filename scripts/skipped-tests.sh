@@ -3,7 +3,7 @@
 # One line: how many tests CTest's output (a run of the suite) reports as skipped, and what they
 # lack. A test is skipped, never passed, when what it compares with is absent (tests/README.md):
 # the course's files in ../shared/data (a user's clone does not have them), ffmpeg, cmark-gfm,
-# chromium and python3 (which drives it).
+# chromium and python3 (which drives it), and the slurm tier's root with Slurm's daemons.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 skipped=$(grep -c '(Skipped)$' "$1" || true)
@@ -20,6 +20,8 @@ command -v ffmpeg >/dev/null || lacking+=("ffmpeg")
 command -v cmark-gfm >/dev/null || lacking+=("cmark-gfm")
 command -v chromium >/dev/null || lacking+=("chromium")
 command -v python3 >/dev/null || lacking+=("python3")
+{ [ "$(id -u)" -eq 0 ] && command -v slurmctld >/dev/null && command -v slurmd >/dev/null && command -v munged >/dev/null &&
+  command -v sbatch >/dev/null && command -v sinfo >/dev/null; } || lacking+=("root with Slurm (slurm-wlm, munge)")
 reason="what they compare with"
 if [ ${#lacking[@]} -gt 0 ]; then
   reason=$(printf '%s, ' "${lacking[@]}")

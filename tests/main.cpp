@@ -13,7 +13,7 @@
 // The tests that need Debian's ffmpeg (test::NeedsFfmpeg()) follow the same two rules, with
 // PRT_REQUIRE_FFMPEG=1, and so do those that need Debian's cmark-gfm (test::NeedsCmarkGfm()),
 // with PRT_REQUIRE_CMARK_GFM=1, and those that need Debian's chromium (test::NeedsChromium()),
-// with PRT_REQUIRE_CHROMIUM=1.
+// with PRT_REQUIRE_CHROMIUM=1, and the slurm tier's (test::NeedsSlurm()), with PRT_REQUIRE_SLURM=1.
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
 
@@ -99,6 +99,10 @@ int main(int argc, char** argv) {
   }
   if (Required("PRT_REQUIRE_CMARK_GFM") && !prt::test::CmarkGfm()) {
     std::fprintf(stderr, "%s: PRT_REQUIRE_CMARK_GFM is set, but cmark-gfm is not on PATH\n", self);
+    return 1;
+  }
+  if (Required("PRT_REQUIRE_SLURM") && !prt::test::SlurmAvailable()) {
+    std::fprintf(stderr, "%s: PRT_REQUIRE_SLURM is set, but this is not root with slurmctld, slurmd, munged and sbatch on PATH\n", self);
     return 1;
   }
   if (Required("PRT_REQUIRE_CHROMIUM") && !prt::test::Chromium()) {

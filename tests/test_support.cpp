@@ -62,6 +62,13 @@ std::optional<std::string> Chromium() {
 
 doctest::skip NeedsChromium() { return doctest::skip(!Chromium().has_value()); }
 
+bool SlurmAvailable() {
+  return ::geteuid() == 0 && FindProgram("slurmctld") && FindProgram("slurmd") && FindProgram("munged") &&
+         FindProgram("sbatch") && FindProgram("sinfo");
+}
+
+doctest::skip NeedsSlurm() { return doctest::skip(!SlurmAvailable()); }
+
 std::string ErrorMessage(const std::function<void()>& run) {
   try {
     run();

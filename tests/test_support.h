@@ -57,6 +57,13 @@ std::optional<std::string> Chromium();
 /// The decorator of a test case that needs Chromium(): skipped, and counted as skipped by the
 /// runner, without it (PRT_REQUIRE_CHROMIUM=1, which CI sets, makes its absence an error).
 doctest::skip NeedsChromium();
+
+/// True when this machine can run the slurm tier's one-node Slurm (tests/farm/slurm_cluster.h):
+/// root, and slurmctld, slurmd, munged, sbatch and sinfo on PATH (Debian's slurm-wlm and munge).
+bool SlurmAvailable();
+/// The decorator of a test case that needs SlurmAvailable(): skipped, and counted as skipped by
+/// the runner, where it is false (PRT_REQUIRE_SLURM=1: the run fails instead).
+doctest::skip NeedsSlurm();
 /// The message of the prt::Error (core/error.h) that `run` throws; "" when it throws none.
 std::string ErrorMessage(const std::function<void()>& run);
 

@@ -42,7 +42,17 @@ std::string SlurmScript(const SlurmJob& job) {
   s += "merge=$(sbatch --parsable --job-name=prt-merge --dependency=afterok:$shards --kill-on-invalid-dep=yes --chdir=" +
        ShellWord(job.workdir) + " --output=" + ShellWord(farm + "/merge.log") + extra +
        (job.wait ? " --wait" : "") + " --wrap " + ShellWord(Line({job.prt, "merge", job.out, "--quiet"})) + ")\n";
-  s += "echo \"${merge%%;*}\"\n";
+  s += "merge=${merge%%;*}\n";
+  if (job.wait) {
+    // sbatch --wait exits 0 for a job cancelled before it ran (a failed shard cancels the merge):
+    // its state says whether it ran and succeeded.
+    s += "state=$(scontrol show job \"$merge\" -o | grep -o 'JobState=[A-Z_]*' || true)\n";
+    s += "if [ \"$state\" != JobState=COMPLETED ]; then\n";
+    s += "  echo \"prt farm: the merge job $merge ended ${state#JobState=} (a shard failed: see its log)\" >&2\n";
+    s += "  exit 1\n";
+    s += "fi\n";
+  }
+  s += "echo \"$merge\"\n";
   return s;
 }
 

@@ -28,7 +28,9 @@ struct SlurmJob {
 /// The folder of the jobs' logs and script: DIR.farm beside DIR.
 std::string FarmFolder(const std::string& out);
 
-/// The bash script that submits `job`; run, it prints the merge job's id on its last line.
+/// The bash script that submits `job`; run, it prints the merge job's id on its last line. With
+/// `wait`, it exits 1 unless the merge ran and succeeded (sbatch --wait alone exits 0 for a
+/// merge that a failed shard cancelled: the script asks scontrol for the job's state).
 std::string SlurmScript(const SlurmJob& job);
 
 }  // namespace prt

@@ -91,7 +91,7 @@ TEST_SUITE("app") {
         std::istringstream words(text.substr(at + 10, text.find(')', at) - at - 10));
         std::string tier;
         words >> tier;
-        CHECK((tier == "unit" || tier == "threads" || tier == "e2e" || tier == "readme"));
+        CHECK((tier == "unit" || tier == "threads" || tier == "e2e" || tier == "readme" || tier == "slurm"));
         for (std::string file; words >> file;) {
           if (file == "PROGRAM") {  // PROGRAM NAME: the tier's program of that name
             words >> file;
@@ -148,7 +148,7 @@ TEST_SUITE("app") {
       CHECK(smoke == wanted);
       // Its tiers' programs are not built yet: a failing placeholder each, so that a tier whose
       // program is missing fails instead of running nothing; and no other tier's.
-      for (const char* tier : {"unit", "threads", "e2e", "readme"}) {
+      for (const char* tier : {"unit", "threads", "e2e", "readme", "slurm"}) {
         CAPTURE(tier);
         const bool has = (";" + tiers + ";").find(std::string(";") + tier + ";") != std::string::npos;
         CHECK(tests.count(std::string("prt_") + tier + "_tests_NOT_BUILT") == (has ? 1u : 0u));

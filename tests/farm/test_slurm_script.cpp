@@ -55,7 +55,8 @@ TEST_CASE("slurm script: an array of N shard tasks, then the merge after all of 
   // The merge is submitted after the shards, whose id it names.
   CHECK(s.find("shards=$(sbatch") < s.find("shards=${shards%%;*}"));
   CHECK(s.find("shards=${shards%%;*}") < s.find("merge=$(sbatch"));
-  CHECK(s.substr(s.size() - 20) == "echo \"${merge%%;*}\"\n");
+  CHECK(s.substr(s.size() - 14) == "echo \"$merge\"\n");
+  CHECK(s.find("scontrol") == std::string::npos);
 }
 
 TEST_CASE("slurm script: the site's sbatch options on both jobs, --wait on the merge alone, one task, DIR/ trimmed") {
@@ -70,6 +71,9 @@ TEST_CASE("slurm script: the site's sbatch options on both jobs, --wait on the m
   for (const std::string& line : {shards, merge}) CHECK(line.find(" --partition=long --time=2:00:00 ") != std::string::npos);
   CHECK(shards.find("--wait") == std::string::npos);
   CHECK(merge.find(" --wait --wrap ") != std::string::npos);
+  // Waiting, the merge's state decides: sbatch --wait exits 0 for a job cancelled before it ran.
+  CHECK(s.find("scontrol show job \"$merge\"") > s.find("merge=$(sbatch"));
+  CHECK(s.find("if [ \"$state\" != JobState=COMPLETED ]; then") != std::string::npos);
   CHECK(FarmFolder("out/scan/") == "out/scan.farm");
   CHECK(FarmFolder("/") == "/.farm");
   CHECK(LineStarting(s, "mkdir ") == "mkdir -p out/scan.farm");

@@ -1,0 +1,65 @@
+// The slurm tier (tests/README.md, "Tiers"): prt farm slurm submits to a real Slurm of one node
+// (tests/farm/slurm_cluster.h), waits, and the output folder holds what one run writes, byte for
+// byte; a job one of whose tasks fails ends with the merge cancelled, a failing exit status and
+// nothing final written.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+
+#include "tests/farm/slurm_cluster.h"
+#include "tests/test_process.h"
+
+namespace prt {
+namespace {
+
+namespace fs = std::filesystem;
+using test::Q;
+
+std::map<std::string, std::string> Files(const std::string& dir) {
+  std::map<std::string, std::string> files;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
+    std::ifstream in(e.path(), std::ios::binary);
+    files[e.path().filename().string()] = std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  return files;
+}
+
+std::string Read(const std::string& path) {
+  std::ifstream in(path);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+}  // namespace
+
+TEST_SUITE("farm") {
+TEST_CASE("slurm: a precompute as shards and a merge on a real Slurm writes what one run writes; a failed task fails the job" *
+          test::NeedsSlurm()) {
+  const std::string dir = test::ScratchDir("slurm_farm");
+  test::OneNodeSlurm slurm(dir + "/cluster");
+  const std::string scene = test::SmallSceneOption("slurm_farm_scene") + " --samples 64 --material phong:10,0.15 --cpca 2,1";
+  const std::string one = dir + "/one", farmed = dir + "/farmed";
+  REQUIRE(test::RunPrt("precompute" + scene + " --out " + Q(one) + " --quiet").exit_code == 0);
+  test::RunResult r = test::RunCommand(slurm.Env() + " " + Q(test::PrtBinary()) + " farm slurm precompute" + scene +
+                                       " --out " + Q(farmed) + " --tasks 3 --wait");
+  REQUIRE_MESSAGE(r.exit_code == 0, r.err << slurm.Logs());
+  CHECK(r.err.find("succeeded") != std::string::npos);
+  CHECK(Files(farmed) == Files(one));
+  for (int i = 0; i < 3; ++i) CHECK(fs::exists(farmed + ".farm/shard-" + std::to_string(i) + ".log"));
+  CHECK(fs::exists(farmed + ".farm/merge.log"));
+
+  // More tasks than a tetrahedron has vertices: every task refuses once it has read the mesh,
+  // so the merge is cancelled, --wait fails, and nothing final is written.
+  const std::string failed = dir + "/failed";
+  r = test::RunCommand(slurm.Env() + " " + Q(test::PrtBinary()) + " farm slurm precompute " + test::QuickScene() +
+                       " --out " + Q(failed) + " --tasks 5 --wait");
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("the job failed") != std::string::npos);
+  CHECK_FALSE(fs::exists(failed + "/transport.txt"));
+  CHECK(Read(failed + ".farm/shard-0.log").find("at most one shard per vertex") != std::string::npos);
+}
+}  // TEST_SUITE
+
+}  // namespace prt
