@@ -20,8 +20,9 @@ command -v ffmpeg >/dev/null || lacking+=("ffmpeg")
 command -v cmark-gfm >/dev/null || lacking+=("cmark-gfm")
 command -v chromium >/dev/null || lacking+=("chromium")
 command -v python3 >/dev/null || lacking+=("python3")
-{ [ "$(id -u)" -eq 0 ] && command -v slurmctld >/dev/null && command -v slurmd >/dev/null && command -v munged >/dev/null &&
-  command -v sbatch >/dev/null && command -v sinfo >/dev/null; } || lacking+=("root with Slurm (slurm-wlm, munge)")
+{ [ "$EUID" -eq 0 ] && command -v slurmctld >/dev/null && command -v slurmd >/dev/null && command -v munged >/dev/null &&
+  command -v sbatch >/dev/null && command -v sinfo >/dev/null; } ||
+  lacking+=("$([ "$EUID" -eq 0 ] || echo "root with ")Slurm (slurm-wlm, munge)")
 reason="what they compare with"
 if [ ${#lacking[@]} -gt 0 ]; then
   reason=$(printf '%s, ' "${lacking[@]}")

@@ -15,14 +15,56 @@
 namespace prt {
 namespace {
 
-/// Sum of the band-0 coefficient over vertices and channels: the bounce's energy.
-double Energy(const std::vector<double>& t, int count) {
+}  // namespace
+
+double BounceEnergy(const std::vector<double>& t, int count) {
   double sum = 0.0;
   for (std::size_t i = 0; i < t.size(); i += count) sum += t[i];
   return sum;
 }
 
-}  // namespace
+std::vector<double> BounceZero(const std::vector<double>& direct, std::size_t vertices, int channels, int count) {
+  const std::size_t stride = static_cast<std::size_t>(channels) * count;
+  std::vector<double> current(vertices * stride);
+  for (std::size_t v = 0; v < vertices; ++v)
+    for (int c = 0; c < channels; ++c)
+      std::copy(direct.begin() + v * count, direct.begin() + (v + 1) * count, current.begin() + v * stride + c * count);
+  return current;
+}
+
+std::uint64_t FrontHits(const std::vector<std::vector<VertexHit>>& hits, const VertexBlock& block) {
+  std::uint64_t front = 0;
+  for (std::size_t v = std::min(block.begin, hits.size()); v < std::min(block.end, hits.size()); ++v)
+    for (const VertexHit& h : hits[v]) front += h.front;
+  return front;
+}
+
+void BounceRows(const Mesh& mesh, const DirectionPlan& plan, const std::vector<std::vector<VertexHit>>& hits,
+                const std::vector<double>& current, int channels, int count, const VertexBlock& block,
+                std::vector<double>& next, const std::string& label) {
+  const std::size_t nv = mesh.vertex_count();
+  const std::size_t stride = static_cast<std::size_t>(channels) * count;
+  const bool textured = mesh.textured();
+  const std::size_t first = std::min(block.begin, nv), last = std::min(block.end, nv);
+  Progress progress(label, last - first);
+  ParallelFor(last - first, 64, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = first + begin; v < first + end; ++v) {
+      const glm::dvec3 n(mesh.normals[v]);
+      const std::size_t directions = plan.PoolOf(v).size();  // the camera's vertices take more
+      const double vertex_weight = 4.0 / double(directions);     // (4 pi / N) * (1 / pi)
+      double* out = next.data() + v * stride;
+      for (const VertexHit& h : hits[v]) {
+        if (!h.front) continue;  // the unlit back of a surface reflects nothing
+        const double cosine = glm::dot(n, plan.Direction(v, h.dir));
+        const glm::vec3 albedo = textured ? HitAlbedo(mesh, v, h.triangle, h.u, h.v, directions) : glm::vec3(0.f);
+        for (int c = 0; c < channels; ++c)
+          AddHitLight(mesh, h.triangle, h.u, h.v, current, channels, count, c, vertex_weight * cosine, out + c * count,
+                      textured ? &albedo : nullptr);
+      }
+    }
+    progress.Advance(end - begin);
+  });
+}
 
 // Declared in hit_light.h; defined here, where the bounces' loop calls them.
 glm::vec3 HitAlbedo(const Mesh& mesh, std::size_t vertex, std::uint32_t triangle, float u, float v,
@@ -60,47 +102,24 @@ BounceResult AddBounces(const Mesh& mesh, const DirectionPlan& plan, const Direc
   const std::size_t stride = static_cast<std::size_t>(channels) * count;
 
   // Bounce 0 is the direct transfer, the same for every channel.
-  std::vector<double> current(nv * stride);
-  for (std::size_t v = 0; v < nv; ++v)
-    for (int c = 0; c < channels; ++c)
-      std::copy(direct.transfer.begin() + v * count, direct.transfer.begin() + (v + 1) * count,
-                current.begin() + v * stride + c * count);
+  std::vector<double> current = BounceZero(direct.transfer, nv, channels, count);
   result.transfer = current;
   if (keep_before_last) result.before_last = current;
-  const double direct_energy = Energy(current, count);
-  const bool textured = mesh.textured();
+  const double direct_energy = BounceEnergy(current, count);
 
-  std::size_t front_hits = 0;
-  for (std::size_t v = 0; v < std::min(counted, nv); ++v)
-    for (const VertexHit& h : direct.hits[v]) front_hits += h.front;
-  if (front_hits == 0) {
+  VertexBlock own;
+  own.end = counted;
+  if (FrontHits(direct.hits, own) == 0) {
     report.bounce_stop = "no bounce pass: no vertex sees any lit surface of the mesh";
     return result;
   }
   report.bounce_stop = "all " + std::to_string(options.bounces) + " bounces computed";
   for (int bounce = 1; bounce <= options.bounces; ++bounce) {
     std::vector<double> next(nv * stride, 0.0);
-    Progress progress("bounce " + std::to_string(bounce), nv);
-    ParallelFor(nv, 64, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t v = begin; v < end; ++v) {
-        const glm::dvec3 n(mesh.normals[v]);
-        const std::size_t directions = plan.PoolOf(v).size();  // the camera's vertices take more
-        const double vertex_weight = 4.0 / double(directions);     // (4 pi / N) * (1 / pi)
-        double* out = next.data() + v * stride;
-        for (const VertexHit& h : direct.hits[v]) {
-          if (!h.front) continue;  // the unlit back of a surface reflects nothing
-          const double cosine = glm::dot(n, plan.Direction(v, h.dir));
-          const glm::vec3 albedo = textured ? HitAlbedo(mesh, v, h.triangle, h.u, h.v, directions) : glm::vec3(0.f);
-          for (int c = 0; c < channels; ++c)
-            AddHitLight(mesh, h.triangle, h.u, h.v, current, channels, count, c, vertex_weight * cosine,
-                        out + c * count, textured ? &albedo : nullptr);
-        }
-      }
-      progress.Advance(end - begin);
-    });
+    BounceRows(mesh, plan, direct.hits, current, channels, count, VertexBlock{}, next, "bounce " + std::to_string(bounce));
     if (keep_before_last) result.before_last = result.transfer;
     for (std::size_t i = 0; i < next.size(); ++i) result.transfer[i] += next[i];
-    const double share = direct_energy > 0.0 ? Energy(next, count) / direct_energy : 0.0;
+    const double share = direct_energy > 0.0 ? BounceEnergy(next, count) / direct_energy : 0.0;
     report.bounce_share.push_back(share);
     if (share < options.bounce_tolerance && bounce < options.bounces) {
       char why[160];

@@ -4,7 +4,9 @@
 /// bounce's transfer at the hit points the direct pass recorded. Internal to precompute/.
 
 #include <cstddef>
+#include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "geometry/mesh.h"
@@ -21,6 +23,24 @@ struct BounceResult {
   /// hit point: its light through bounce B - 1); filled only when asked for.
   std::vector<double> before_last;
 };
+
+/// Sum of the band-0 coefficient over vertices and channels: a bounce's energy.
+double BounceEnergy(const std::vector<double>& t, int count);
+
+/// Bounce 0: the direct transfer of each of `vertices` (count coefficients each), the same for
+/// every one of `channels`.
+std::vector<double> BounceZero(const std::vector<double>& direct, std::size_t vertices, int channels, int count);
+
+/// The hits of `block`'s vertices on the lit side of a surface: none, and no bounce has light.
+std::uint64_t FrontHits(const std::vector<std::vector<VertexHit>>& hits, const VertexBlock& block);
+
+/// One bounce at the vertices of `block`: into their rows of `next` (every vertex's size, zero
+/// there), what each gathers of `current` (the bounce before, every vertex) at its `hits` (those
+/// of the block's vertices at least). AddBounces runs it for every vertex, a farm task for its
+/// block: the same operations in the same order at each vertex, so the same bits.
+void BounceRows(const Mesh& mesh, const DirectionPlan& plan, const std::vector<std::vector<VertexHit>>& hits,
+                const std::vector<double>& current, int channels, int count, const VertexBlock& block,
+                std::vector<double>& next, const std::string& label);
 
 /// Adds up to options.bounces bounces to `direct`; records each bounce's share in `report`.
 /// None when none of the first `counted` vertices (the output's; the rest only send light,

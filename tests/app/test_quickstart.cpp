@@ -67,7 +67,7 @@ std::string RunQuickstart(const std::string& what, std::string* out = nullptr) {
 }  // namespace
 
 TEST_SUITE("app") {
-  TEST_CASE("quick start: demo builds only the prt program, test builds everything, runs the default suite then the readme tier, and names the slowest tests and each tier's seconds") {
+  TEST_CASE("quick start: demo builds only the prt program, test builds everything, runs the default suite, the readme tier, then the slurm tier, and names the slowest tests and each tier's seconds") {
     const std::string demo = RunQuickstart("demo");
     CAPTURE(demo);
     CHECK(demo.find("--target prt\n") != std::string::npos);
@@ -89,11 +89,14 @@ TEST_SUITE("app") {
     CHECK(all.find("cmake --build") != std::string::npos);
     CHECK(all.find(" -G Ninja ") != std::string::npos);  // a new build folder: Ninja
     CHECK(all.find("--target") == std::string::npos);  // every target: the tests too
-    // The default suite, then the README's commands: two runs of ctest.
-    const auto suite = all.find("--label-exclude ^readme$"), readme = all.find("--label-regex ^readme$");
+    // The default suite, then the README's commands, then the slurm tier: three runs of ctest.
+    const auto suite = all.find("--label-exclude ^(readme|slurm)$"), readme = all.find("--label-regex ^readme$"),
+               slurm = all.find("--label-regex ^slurm$");
     CHECK(suite != std::string::npos);
     CHECK(readme != std::string::npos);
     CHECK(suite < readme);
+    CHECK(readme < slurm);
+    CHECK(slurm != std::string::npos);
     CHECK(all.find("prt demo") == std::string::npos);
     // Each tier's seconds in the run, against its Release budget of tests/README.md.
     const auto table = printed.find("Tiers of this run (Release pass");
