@@ -11,7 +11,10 @@
 #include "bases/list.h"
 #include "core/atomic_file.h"
 #include "core/log.h"
+#include "core/error.h"
+#include "farm/assemble_bounces.h"
 #include "farm/assemble_shards.h"
+#include "precompute_io/bounce_shard.h"
 #include "precompute_io/transport_shard.h"
 
 namespace prt {
@@ -42,6 +45,60 @@ void RemoveShards(const std::string& dir, const std::string& cache_name) {
   for (const fs::path& path : doomed) fs::remove(path, ec);
 }
 
+/// True when `dir` holds a file of a stage of interreflection (a bounce shard or state).
+bool HasBounceFiles(const std::string& dir, const std::string& cache_name) {
+  std::error_code ec;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name == BounceStateName(cache_name) || name.rfind(cache_name + ".bounce-", 0) == 0) return true;
+  }
+  return false;
+}
+
+/// Removes interreflection's stage files of `cache_name` in `dir`: the state, and the shards of
+/// stages `from` on (with the temporaries of killed tasks).
+void RemoveBounceFiles(const std::string& dir, const std::string& cache_name, int from, int to, bool state) {
+  for (int stage = from; stage <= to; ++stage) RemoveShards(dir, BounceStageName(cache_name, stage));
+  std::error_code ec;
+  if (state) fs::remove(dir + "/" + BounceStateName(cache_name), ec);
+}
+
+/// The next stage of interreflection's bounces merged (farm/assemble_bounces.h): the state
+/// updated for the tasks' next stage, or, once the bounces end, the precompute run with their
+/// transport and the stage files removed.
+int MergeBounces(const std::string& dir, const std::string& cache_name, bool keep) {
+  const std::string state_path = dir + "/" + BounceStateName(cache_name);
+  std::optional<BounceState> state;
+  std::error_code ec;
+  if (fs::exists(state_path, ec)) {
+    std::string why;
+    state = ReadBounceState(state_path, why);
+    if (!state) throw Error(state_path + ": " + why + " (expected the bounce state the last prt merge wrote)");
+  }
+  const int stage = state ? state->stage + 1 : 0;
+  const AssembledStage assembled = AssembleStage(dir, cache_name, stage);
+  const BounceState merged = MergeStage(state, assembled);
+  Summary("merge: bounce stage " + std::to_string(stage) + " (" + (stage == 0 ? std::string("the direct pass") : "bounce " + std::to_string(stage)) +
+          ") of " + std::to_string(assembled.files.size()) + " shards in " + dir + ", whole and of one job");
+  if (!merged.done) {
+    WriteBounceState(state_path, merged);
+    if (stage > 0 && !keep) RemoveBounceFiles(dir, cache_name, stage, stage, false);
+    Summary("merge: bounce " + std::to_string(stage + 1) + " of " + std::to_string(assembled.first.bounces) +
+            " next: run the same tasks again, then prt merge " + dir);
+    return 0;
+  }
+  int lmax = 0;
+  while ((lmax + 1) * (lmax + 1) < merged.coefficients) ++lmax;
+  const Transport transport = BouncedTransport(merged, lmax);
+  Summary("merge: bounces: " + merged.stop);
+  const int status = Precompute(WithOut(merged.command, dir), {&transport, merged.key, merged.shards});
+  if (status == 0 && !keep) {
+    RemoveBounceFiles(dir, cache_name, 0, stage, true);
+    Summary("merge: removed the bounce stages' shard files and state (--keep-shards keeps them)");
+  }
+  return status;
+}
+
 }  // namespace
 
 CommandSpec MergeSpec() {
@@ -53,12 +110,18 @@ CommandSpec MergeSpec() {
           "one machine writes them. A missing, damaged or foreign shard is refused with its name and reason before "
           "anything is written. The shard files are removed once the merge has succeeded.",
           {{"options",
-            {{"--keep-shards", "", "keep the shard files after a successful merge", "off: removed"}, QuietOption()}}}};
+            {{"--keep-shards", "", "keep the shard files after a successful merge", "off: removed"},
+             {"--bounce-stage", "",
+              "a merge of a bounce after the first (prt farm's chain): when the bounces ended before it and DIR holds "
+              "the transport, there is nothing to merge, and that is success",
+              "off: no shards is an error"},
+             QuietOption()}}}};
 }
 
 int RunMerge(const std::vector<std::string>& tokens) {
   Args args("merge", tokens, MergeSpec());
   const bool keep = args.Flag("--keep-shards");
+  const bool after_bounces = args.Flag("--bounce-stage");
   SetQuiet(args.Flag("--quiet"));
   const std::vector<std::string> dirs = args.TakePositionals();
   args.Finish();
@@ -72,6 +135,15 @@ int RunMerge(const std::vector<std::string>& tokens) {
       int index = 0, count = 0;
       if (IsShardFileName(entry.path().filename().string(), b->CacheName(), index, count)) basis = b;
     }
+  }
+  if (!fs::is_directory(dir)) throw Error(dir + ": no such folder (expected the --out DIR the shards were written to)");
+  if (HasBounceFiles(dir, basis->CacheName())) return MergeBounces(dir, basis->CacheName(), keep);
+  // A farm chain's merge of a bounce after the last (they ended early): nothing left to do.
+  std::error_code ec;
+  if (after_bounces && fs::exists(dir + "/" + basis->CacheName(), ec)) {
+    Summary("merge: nothing to merge: the bounces ended before this stage, and " + dir + "/" + basis->CacheName() +
+            " holds the transport");
+    return 0;
   }
   const AssembledShards shards = AssembleShards(dir, basis->CacheName());
   Summary("merge: " + std::to_string(shards.count) + " shards in " + dir + ", whole and of one job (" +

@@ -132,9 +132,9 @@ int Precompute(const std::vector<std::string>& tokens, const ShardedTransport& s
     args.Fail("--max-edge: not with precompute (the course's transport.txt has three rows per face of the OBJ "
               "file, and split triangles are other faces; render and reference take it)");
   if (shard_option) {
-    if (options.transport == "interreflection")
-      args.Fail("--shard: not with --transport interreflection yet (each bounce needs every vertex's previous "
-                "bounce: run it on one machine)");
+    if (options.transport == "interreflection" && options.material.glossy)
+      args.Fail("--shard: not with --transport interreflection and a glossy material yet (the glossy lobe's bounced "
+                "light is gathered in one pass after the bounces: run it on one machine)");
     ShardId shard;
     try {
       shard = ParseShard(*shard_option);

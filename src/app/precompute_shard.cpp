@@ -1,17 +1,26 @@
 #include "app/precompute_shard.h"
 
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <optional>
 
 #include "app/pipeline.h"
+#include "core/error.h"
 #include "core/log.h"
 #include "core/output_folder.h"
 #include "core/text.h"
 #include "farm/vertex_blocks.h"
+#include "precompute/bounce_stages.h"
 #include "precompute/transport.h"
+#include "precompute/transport_bounce.h"
+#include "precompute_io/bounce_shard.h"
 #include "precompute_io/transport_cache.h"
 #include "precompute_io/transport_shard.h"
 
 namespace prt {
+
+namespace fs = std::filesystem;
 
 std::vector<std::string> ShardCommand(const std::vector<std::string>& tokens) {
   std::vector<std::string> kept;
@@ -27,6 +36,96 @@ std::vector<std::string> ShardCommand(const std::vector<std::string>& tokens) {
   return kept;
 }
 
+namespace {
+
+/// Interreflection's next stage for the block of `shard` (precompute/bounce_stages.h): the
+/// direct pass with its hits when no merge has assembled one yet, else the bounce after the
+/// last one assembled (the bounce state in `out`), nothing once the bounces have ended.
+int RunBounceStage(const Mesh& mesh, const TransportOptions& topts, const std::string& cache, const ShardId& shard,
+                   const std::string& out, const std::vector<std::string>& command) {
+  const std::uint64_t key = TransportKey(mesh, topts);
+  const std::string state_path = out + "/" + BounceStateName(cache);
+  std::optional<BounceState> state;
+  std::error_code ec;
+  if (fs::exists(state_path, ec)) {
+    std::string why;
+    state = ReadBounceState(state_path, why);
+    if (!state) throw Error(state_path + ": " + why + " (expected the bounce state the last prt merge wrote)");
+    if (state->key != key || state->command != command || state->shards != shard.count)
+      throw Error(state_path + ": the bounces of another job (made by another command, mesh or --shard count) " +
+                  "(expected this job's: remove the folder's shards and bounce state to start again)");
+    if (state->done) {
+      Summary("shard: " + std::to_string(shard.index) + " of " + std::to_string(shard.count) + ": nothing to do, the " +
+              "bounces ended after stage " + std::to_string(state->stage) + " (" + state->stop + ")");
+      return 0;
+    }
+  }
+  // No state and no direct pass yet, but this job's transport in the cache: the bounces ended
+  // (early, or a task of a later stage of the farm's chain runs after the last merge).
+  if (!state && !fs::exists(out + "/" + ShardFileName(BounceStageName(cache, 0), shard.index, shard.count), ec)) {
+    std::string why;
+    if (ReadTransportCache(out + "/" + cache, key, why)) {
+      Summary("shard: " + std::to_string(shard.index) + " of " + std::to_string(shard.count) + ": nothing to do, " + out +
+              "/" + cache + " holds this job's transport already (its bounces have ended)");
+      return 0;
+    }
+  }
+  const int stage = state ? state->stage + 1 : 0;
+  const BounceScene scene = MakeBounceScene(mesh, topts);
+  const std::vector<std::uint64_t> work(scene.mesh.vertex_count(), 1);
+  BounceShard s;
+  s.index = shard.index;
+  s.count = shard.count;
+  s.stage = stage;
+  s.key = key;
+  s.command = command;
+  s.block = BlockOf(work, shard.index, shard.count);
+  s.vertices = scene.mesh.vertex_count();
+  s.channels = scene.channels;
+  s.coefficients = scene.count;
+  s.bounces = topts.bounces;
+  s.tolerance = topts.bounce_tolerance;
+  s.own = scene.own;
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::size_t first = s.block.begin, last = s.block.end;
+  if (stage == 0) {
+    const DirectResult direct = DirectStage(scene, s.block);
+    s.rows.assign(direct.transfer.begin() + std::ptrdiff_t(first * scene.count),
+                  direct.transfer.begin() + std::ptrdiff_t(last * scene.count));
+    VertexBlock own = s.block;
+    own.end = std::min<std::size_t>(own.end, scene.own);
+    s.front_hits = FrontHits(direct.hits, own);
+    s.hits.assign(direct.hits.begin() + std::ptrdiff_t(first), direct.hits.begin() + std::ptrdiff_t(last));
+  } else {
+    // This block's hits, from its stage-0 shard.
+    const std::string zero = out + "/" + ShardFileName(BounceStageName(cache, 0), shard.index, shard.count);
+    std::string why;
+    std::optional<BounceShard> mine = ReadBounceShard(zero, why);
+    if (!mine) throw Error(zero + ": " + why + " (expected this task's direct pass, which bounce " + std::to_string(stage) +
+                           " gathers at)");
+    if (mine->key != key || mine->block.begin != first || mine->block.end != last)
+      throw Error(zero + ": another job's or block's direct pass (expected this task's)");
+    std::vector<std::vector<VertexHit>> hits(scene.mesh.vertex_count());
+    std::move(mine->hits.begin(), mine->hits.end(), hits.begin() + std::ptrdiff_t(first));
+    const std::size_t stride = std::size_t(scene.channels) * scene.count;
+    std::vector<double> next(scene.mesh.vertex_count() * stride, 0.0);
+    BounceRows(scene.mesh, scene.plan, hits, state->current, scene.channels, scene.count, s.block, next,
+               "bounce " + std::to_string(stage));
+    s.rows.assign(next.begin() + std::ptrdiff_t(first * stride), next.begin() + std::ptrdiff_t(last * stride));
+  }
+  const std::string path = out + "/" + ShardFileName(BounceStageName(cache, stage), shard.index, shard.count);
+  WriteBounceShard(path, s);
+  Summary("shard: " + std::to_string(shard.index) + " of " + std::to_string(shard.count) + " (" + shard.source +
+          "): " + (stage == 0 ? std::string("the direct pass") : "bounce " + std::to_string(stage)) + " of vertices " +
+          std::to_string(first) + " to " + std::to_string(last - 1) + " of " + std::to_string(s.vertices) +
+          (s.vertices != s.own ? " (the mesh's " + std::to_string(s.own) + " and the senders split for the bounces)" : "") +
+          Formatted(" [%.3f s]", SecondsSince(t0)) + "; wrote " + path + " (prt merge " + out +
+          " assembles the stage once all " + std::to_string(shard.count) + " are written; then this task again)");
+  return 0;
+}
+
+}  // namespace
+
 int RunPrecomputeShard(const SceneOptions& options, const ShardId& shard, const std::string& out,
                        const std::vector<std::string>& command) {
   CreateFolder(out);
@@ -34,6 +133,8 @@ int RunPrecomputeShard(const SceneOptions& options, const ShardId& shard, const 
   const Mesh mesh = LoadSceneMesh(options);
   TransportOptions topts = TransportOptionsOf(options);
   topts.matrices = options.material.glossy;  // precompute's glossy transfer: matrices for any view
+  if (topts.mode == TransportMode::kInterreflection)
+    return RunBounceStage(mesh, topts, options.basis->CacheName(), shard, out, command);
   // Every vertex of a precompute casts the same directions (no camera): blocks of equal work
   // are blocks of equal count.
   const std::vector<std::uint64_t> work(mesh.vertex_count(), 1);

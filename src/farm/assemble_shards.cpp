@@ -29,7 +29,7 @@ void Append(std::vector<float>& all, const std::vector<float>& rows) { all.inser
 
 }  // namespace
 
-AssembledShards AssembleShards(const std::string& dir, const std::string& cache_name) {
+std::map<int, std::string> ShardFiles(const std::string& dir, const std::string& cache_name) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw Error(dir + ": no such folder (expected the --out DIR the shards were written to)");
   // The shard files by index, and their count as named.
@@ -53,7 +53,12 @@ AssembledShards AssembleShards(const std::string& dir, const std::string& cache_
     throw Error(dir + ": shard" + (*count - int(named.size()) > 1 ? "s " : " ") + Missing(named, *count) + " of " +
                 std::to_string(*count) + " missing (expected every shard 0.." + std::to_string(*count - 1) +
                 "; run the missing tasks again)");
+  return named;
+}
 
+AssembledShards AssembleShards(const std::string& dir, const std::string& cache_name) {
+  const std::map<int, std::string> named = ShardFiles(dir, cache_name);
+  const std::optional<int> count = int(named.size());
   AssembledShards out;
   out.count = *count;
   std::size_t next = 0;

@@ -8,6 +8,7 @@
 /// its name and reason (Error) before anything is assembled.
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,10 @@ struct AssembledShards {
   std::vector<std::string> files;    ///< the shard files, in index order
   Transport transport;               ///< every vertex's rows, as one run computes them
 };
+
+/// The shard files of `cache_name` in `dir` by index: every one of a count N present once (Error
+/// naming the folder and what is missing, or a second job's count, otherwise).
+std::map<int, std::string> ShardFiles(const std::string& dir, const std::string& cache_name);
 
 /// Assembles the shards of the cache `cache_name` in `dir`; Error when there are none or any
 /// is refused.

@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// The bounces of interreflected transport (transport.h has the maths): each gathers the previous
-/// bounce's transfer at the hit points the direct pass recorded. Internal to precompute/.
+/// bounce's transfer at the hit points the direct pass recorded; its steps are also a farm job's
+/// (bounce_stages.h, farm/assemble_bounces.h).
 
 #include <cstddef>
 #include <cstdint>

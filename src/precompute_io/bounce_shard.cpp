@@ -141,6 +141,9 @@ void WriteBounceShard(const std::string& path, const BounceShard& s) {
   w.Put(s.vertices);
   w.Put(std::int32_t(s.channels));
   w.Put(std::int32_t(s.coefficients));
+  w.Put(std::int32_t(s.bounces));
+  w.Put(s.tolerance);
+  w.Put(s.own);
   w.Put(s.front_hits);
   w.PutVector(s.rows);
   w.Put(std::uint64_t(s.hits.size()));
@@ -169,6 +172,9 @@ std::optional<BounceShard> ReadBounceShard(const std::string& path, std::string&
     s.vertices = r.Get<std::uint64_t>();
     s.channels = r.Get<std::int32_t>();
     s.coefficients = r.Get<std::int32_t>();
+    s.bounces = r.Get<std::int32_t>();
+    s.tolerance = r.Get<double>();
+    s.own = r.Get<std::uint64_t>();
     s.front_hits = r.Get<std::uint64_t>();
     s.rows = r.GetVector<double>();
     const std::uint64_t with_hits = r.Get<std::uint64_t>();
@@ -180,7 +186,9 @@ std::optional<BounceShard> ReadBounceShard(const std::string& path, std::string&
     }
     if (!r.AtEnd() || s.count < 1 || s.index < 0 || s.index >= s.count || s.block.begin >= s.block.end ||
         s.block.end > s.vertices || (s.channels != 1 && s.channels != 3) ||
-        s.rows.size() != (s.block.end - s.block.begin) * std::uint64_t(s.channels) * std::uint64_t(s.coefficients))
+        s.own > s.vertices || s.coefficients < 1 ||
+        s.rows.size() != (s.block.end - s.block.begin) * std::uint64_t(s.stage == 0 ? 1 : s.channels) *
+                             std::uint64_t(s.coefficients))
       throw std::out_of_range("layout");
     return s;
   } catch (const std::out_of_range&) {

@@ -29,9 +29,14 @@ struct BounceShard {
   std::vector<std::string> command;
   VertexBlock block;
   std::uint64_t vertices = 0;            ///< the bounce mesh's vertex count
-  int channels = 1, coefficients = 1;
+  int channels = 1, coefficients = 1;    ///< the bounces' channels (bounce_stages.h) and coefficients
+  int bounces = 1;                       ///< --bounces
+  double tolerance = 0.0;                ///< the share of the direct energy below which they stop
+  std::uint64_t own = 0;                 ///< the output's vertices, first of the bounce mesh's
   std::uint64_t front_hits = 0;          ///< stage 0: the block's front hits among the output's vertices
-  std::vector<double> rows;              ///< the block's rows, channels x coefficients each
+  /// The block's rows: stage 0 the direct transfer (coefficients a vertex), stage k bounce k
+  /// (channels x coefficients a vertex).
+  std::vector<double> rows;
   std::vector<std::vector<VertexHit>> hits;  ///< stage 0: each of the block's vertices' hits
 };
 
