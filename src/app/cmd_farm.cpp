@@ -6,6 +6,7 @@
 #include "app/commands.h"
 #include "app/precompute_shard.h"
 #include "app/render_args.h"
+#include "app/scene_options.h"
 #include "core/atomic_file.h"
 #include "core/child_process.h"
 #include "core/error.h"
@@ -96,6 +97,9 @@ int RunFarm(const std::vector<std::string>& given) {
   check.insert(check.end(), {"--shard", "0/" + std::to_string(job.tasks)});
   Precompute(check, {}, true);
   job.options = tokens;
+  // Interreflection: its direct pass, then each bounce, as stages (precompute/bounce_stages.h).
+  const std::string transport = Take(tokens, "--transport"), bounces = Take(tokens, "--bounces");
+  if (transport == "interreflection") job.stages = 1 + (bounces.empty() ? SceneOptions{}.bounces : std::stoi(bounces));
   job.out = Take(tokens, "--out");
   job.wait = wait;
   job.prt = fs::canonical("/proc/self/exe").string();

@@ -7,7 +7,9 @@
 /// instead of leaving it pending for ever). Jobs run in the folder the script was made from, on
 /// the same prt binary, so the machines need the same file system at the same paths (what a
 /// cluster's shared home or project folder is). The jobs' logs go to a folder beside the output
-/// folder, `DIR.farm/`, so that DIR ends as one run writes it.
+/// folder, `DIR.farm/`, so that DIR ends as one run writes it. Interreflection chains a pair
+/// of jobs per stage (the direct pass, then each bounce), each array after the merge before it;
+/// a stage after the bounces ended early finds nothing to do and succeeds.
 
 #include <string>
 #include <vector>
@@ -21,16 +23,20 @@ struct SlurmJob {
   std::vector<std::string> options;   ///< the command's options, --out DIR among them
   std::string out;                    ///< the command's --out DIR
   int tasks = 2;
+  /// The stages the tasks and the merge run: 1, or for interreflection 1 + --bounces (its direct
+  /// pass, then each bounce: precompute/bounce_stages.h), each stage's tasks after the merge
+  /// before them.
+  int stages = 1;
   std::vector<std::string> sbatch;    ///< options given to every sbatch (--partition, --time, ...)
-  bool wait = false;                  ///< the merge's sbatch waits for it and exits with its status
+  bool wait = false;                  ///< the script waits for the merge and fails unless it succeeded
 };
 
 /// The folder of the jobs' logs and script: DIR.farm beside DIR.
 std::string FarmFolder(const std::string& out);
 
 /// The bash script that submits `job`; run, it prints the merge job's id on its last line. With
-/// `wait`, it exits 1 unless the merge ran and succeeded (sbatch --wait alone exits 0 for a
-/// merge that a failed shard cancelled: the script asks scontrol for the job's state).
+/// `wait`, it asks scontrol for the last merge's state every second until it ends, and exits 1
+/// unless it completed (sbatch --wait exits 0 for a merge a failed shard cancelled).
 std::string SlurmScript(const SlurmJob& job);
 
 }  // namespace prt

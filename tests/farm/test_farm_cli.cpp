@@ -87,7 +87,8 @@ TEST_CASE("farm slurm: what a task would refuse, a missing or failing sbatch, re
     std::string arguments, message;
   };
   const Case cases[] = {
-      {"precompute" + out + " --tasks 2 --transport interreflection", "not with --transport interreflection"},
+      {"precompute" + out + " --tasks 2 --transport interreflection --albedo 0.5,0.5,0.5 --material phong:10,0.3",
+       "not with --transport interreflection and a glossy material"},
       {"precompute" + out, "--tasks N is required"},
       {"precompute" + out + " --tasks 0", "--tasks 0: expected a whole number"},
       {"precompute" + out + " --tasks 2 --shard 0/2", "--shard: prt farm gives each task its own"},

@@ -68,15 +68,71 @@ TEST_CASE("farm: shards and a merge write the folder one precompute writes, byte
   }
 }
 
-TEST_CASE("farm: a shard count or index that cannot be, and interreflection, refused before any work") {
+TEST_CASE("farm: interreflection's direct pass and each bounce as stages of the same tasks, merged: one run's bytes") {
+  const std::string scene = test::SmallSceneOption("farm_bounces");  // coloured: three channels
+  struct Case {
+    const char* options;
+    int stages;  // the merges that do work: the direct pass, then each bounce computed
+  };
+  const Case cases[] = {{" --transport interreflection --bounces 2 --samples 128", 3},
+                        // So dark a scene that bounce 1 adds 7e-5 of the direct energy, under the
+                        // 1e-4 that ends the bounces (transport.h): none after it.
+                        {" --transport interreflection --bounces 3 --albedo 0.001,0.001,0.001 --samples 64", 2}};
+  for (const Case& c : cases) {
+    CAPTURE(c.options);
+    const std::string one = test::ScratchDir("farm_bounces_one"), farm = test::ScratchDir("farm_bounces_shards");
+    REQUIRE(test::RunPrt("precompute" + scene + c.options + " --out " + Q(one) + " --quiet").exit_code == 0);
+    for (int stage = 0; stage < 4; ++stage) {
+      CAPTURE(stage);
+      for (int i = 0; i < 3; ++i) {
+        const test::RunResult task = test::RunPrt("precompute" + scene + c.options + " --out " + Q(farm) + " --shard " +
+                                                  std::to_string(i) + "/3");
+        REQUIRE_MESSAGE(task.exit_code == 0, task.err);
+        // Once the bounces have ended, the tasks find nothing to do.
+        CHECK((task.err.find("nothing to do") != std::string::npos) == (stage >= c.stages));
+      }
+      const test::RunResult merge = test::RunPrt("merge " + Q(farm) + (stage > 0 ? " --bounce-stage" : ""));
+      REQUIRE_MESSAGE(merge.exit_code == 0, merge.err);
+      // The folder holds one run's files from the last stage's merge on, and not before.
+      CHECK(fs::exists(farm + "/transport.txt") == (stage + 1 >= c.stages));
+      CHECK((merge.err.find("nothing to merge") != std::string::npos) == (stage >= c.stages));
+    }
+    CHECK(Files(farm) == Files(one));
+  }
+}
+
+TEST_CASE("farm: interreflection's stages refuse a missing bounce shard, another job's state and a lost direct pass") {
+  const std::string scene = test::SmallSceneOption("farm_bounces_refused_scene") + " --transport interreflection --samples 64";
+  const std::string dir = test::ScratchDir("farm_bounces_refused");
+  for (int i = 0; i < 3; ++i) REQUIRE(Task(scene, dir, i, 3).exit_code == 0);
+  REQUIRE(test::RunPrt("merge " + Q(dir) + " --quiet").exit_code == 0);  // the direct pass assembled
+  for (int i : {0, 2}) REQUIRE(Task(scene, dir, i, 3).exit_code == 0);   // bounce 1 without task 1
+  test::RunResult r = test::RunPrt("merge " + Q(dir));
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("shard 1 of 3 missing") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir + "/transport.txt"));
+  // The same tasks with another seed: the state is another job's.
+  r = Task(scene + " --seed 5", dir, 1, 3);
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("transport.cache.bounces: the bounces of another job") != std::string::npos);
+  // Task 1's direct pass lost: its bounce cannot be gathered.
+  fs::remove(dir + "/transport.cache.bounce-0.shard-00001-of-00003");
+  r = Task(scene, dir, 1, 3);
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("transport.cache.bounce-0.shard-00001-of-00003: ") != std::string::npos);
+  CHECK(r.err.find("this task's direct pass") != std::string::npos);
+}
+
+TEST_CASE("farm: a shard count or index that cannot be, and a glossy interreflection, refused before any work") {
   const std::string dir = test::ScratchDir("farm_refused");
   const std::string scene = test::SmallSceneOption("farm_refused_scene");
   test::RunResult r = Task(scene, dir, 3, 3);
   CHECK(r.exit_code == 2);
   CHECK(r.err.find("prt: error: --shard 3/3: shard 3 of 3") == 0);
-  r = test::RunPrt("precompute" + scene + " --out " + Q(dir) + " --shard 0/2 --transport interreflection");
+  r = test::RunPrt("precompute" + scene + " --out " + Q(dir) +
+                   " --shard 0/2 --transport interreflection --albedo 0.5,0.5,0.5 --material phong:10,0.3");
   CHECK(r.exit_code == 2);
-  CHECK(r.err.find("--shard: not with --transport interreflection") != std::string::npos);
+  CHECK(r.err.find("--shard: not with --transport interreflection and a glossy material") != std::string::npos);
   r = test::RunCommand("env -u SLURM_ARRAY_TASK_ID -u JOB_COMPLETION_INDEX " + Q(test::PrtBinary()) + " precompute" + scene +
                        " --out " + Q(dir) + " --shard auto");
   CHECK(r.exit_code == 2);

@@ -1,7 +1,8 @@
 // The slurm tier (tests/README.md, "Tiers"): prt farm slurm submits to a real Slurm of one node
 // (tests/farm/slurm_cluster.h), waits, and the output folder holds what one run writes, byte for
-// byte; a job one of whose tasks fails ends with the merge cancelled, a failing exit status and
-// nothing final written.
+// byte (interreflection: a chain of six jobs, the direct pass and two bounces); a job one of
+// whose tasks fails ends with the merge cancelled, a failing exit status and nothing final
+// written.
 #include <doctest/doctest.h>
 
 #include <filesystem>
@@ -39,7 +40,8 @@ TEST_CASE("slurm: a precompute as shards and a merge on a real Slurm writes what
           test::NeedsSlurm()) {
   const std::string dir = test::ScratchDir("slurm_farm");
   test::OneNodeSlurm slurm(dir + "/cluster");
-  const std::string scene = test::SmallSceneOption("slurm_farm_scene") + " --samples 64 --material phong:10,0.15 --cpca 2,1";
+  // Interreflection: the direct pass and two bounces, each stage's array after the merge before it.
+  const std::string scene = test::SmallSceneOption("slurm_farm_scene") + " --samples 64 --transport interreflection --bounces 2";
   const std::string one = dir + "/one", farmed = dir + "/farmed";
   REQUIRE(test::RunPrt("precompute" + scene + " --out " + Q(one) + " --quiet").exit_code == 0);
   test::RunResult r = test::RunCommand(slurm.Env() + " " + Q(test::PrtBinary()) + " farm slurm precompute" + scene +
@@ -47,8 +49,12 @@ TEST_CASE("slurm: a precompute as shards and a merge on a real Slurm writes what
   REQUIRE_MESSAGE(r.exit_code == 0, r.err << slurm.Logs());
   CHECK(r.err.find("succeeded") != std::string::npos);
   CHECK(Files(farmed) == Files(one));
-  for (int i = 0; i < 3; ++i) CHECK(fs::exists(farmed + ".farm/shard-" + std::to_string(i) + ".log"));
-  CHECK(fs::exists(farmed + ".farm/merge.log"));
+  for (int stage = 0; stage < 3; ++stage) {
+    CAPTURE(stage);
+    for (int i = 0; i < 3; ++i)
+      CHECK(fs::exists(farmed + ".farm/stage-" + std::to_string(stage) + "-shard-" + std::to_string(i) + ".log"));
+    CHECK(fs::exists(farmed + ".farm/stage-" + std::to_string(stage) + "-merge.log"));
+  }
 
   // More tasks than a tetrahedron has vertices: every task refuses once it has read the mesh,
   // so the merge is cancelled, --wait fails, and nothing final is written.

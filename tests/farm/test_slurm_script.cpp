@@ -59,7 +59,7 @@ TEST_CASE("slurm script: an array of N shard tasks, then the merge after all of 
   CHECK(s.find("scontrol") == std::string::npos);
 }
 
-TEST_CASE("slurm script: the site's sbatch options on both jobs, --wait on the merge alone, one task, DIR/ trimmed") {
+TEST_CASE("slurm script: the site's sbatch options on both jobs, waiting on the merge's state, one task, DIR/ trimmed") {
   SlurmJob job = Job();
   job.sbatch = {"--partition=long", "--time=2:00:00"};
   job.wait = true;
@@ -70,13 +70,41 @@ TEST_CASE("slurm script: the site's sbatch options on both jobs, --wait on the m
   CHECK(shards.find(" --array=0-0 ") != std::string::npos);
   for (const std::string& line : {shards, merge}) CHECK(line.find(" --partition=long --time=2:00:00 ") != std::string::npos);
   CHECK(shards.find("--wait") == std::string::npos);
-  CHECK(merge.find(" --wait --wrap ") != std::string::npos);
-  // Waiting, the merge's state decides: sbatch --wait exits 0 for a job cancelled before it ran.
+  CHECK(merge.find("--wait") == std::string::npos);
+  // Waiting, the merge's state decides, asked until it ended: sbatch --wait exits 0 for a job
+  // cancelled before it ran.
   CHECK(s.find("scontrol show job \"$merge\"") > s.find("merge=$(sbatch"));
   CHECK(s.find("if [ \"$state\" != JobState=COMPLETED ]; then") != std::string::npos);
   CHECK(FarmFolder("out/scan/") == "out/scan.farm");
   CHECK(FarmFolder("/") == "/.farm");
   CHECK(LineStarting(s, "mkdir ") == "mkdir -p out/scan.farm");
+}
+TEST_CASE("slurm script: interreflection's stages chained, each array after the merge before it") {
+  SlurmJob job = Job();
+  job.stages = 3;  // the direct pass and two bounces
+  const std::string s = SlurmScript(job);
+  std::vector<std::size_t> arrays, merges;
+  for (std::size_t at = s.find("\nshards=$(sbatch"); at != std::string::npos; at = s.find("\nshards=$(sbatch", at + 1))
+    arrays.push_back(at);
+  for (std::size_t at = s.find("\nmerge=$(sbatch"); at != std::string::npos; at = s.find("\nmerge=$(sbatch", at + 1))
+    merges.push_back(at);
+  REQUIRE(arrays.size() == 3);
+  REQUIRE(merges.size() == 3);
+  for (std::size_t k = 0; k < 3; ++k) {
+    CAPTURE(k);
+    const std::string array = s.substr(arrays[k] + 1, s.find('\n', arrays[k] + 1) - arrays[k] - 1);
+    const std::string merge = s.substr(merges[k] + 1, s.find('\n', merges[k] + 1) - merges[k] - 1);
+    CHECK(arrays[k] < merges[k]);
+    if (k > 0) CHECK(merges[k - 1] < arrays[k]);
+    // Every array but the first waits for the merge before it; every merge for its array.
+    CHECK((array.find(" --dependency=afterok:$merge --kill-on-invalid-dep=yes ") != std::string::npos) == (k > 0));
+    CHECK(merge.find(" --dependency=afterok:$shards ") != std::string::npos);
+    CHECK(array.find("--output=out/scan.farm/stage-" + std::to_string(k) + "-shard-%a.log") != std::string::npos);
+    CHECK(merge.find("--output=out/scan.farm/stage-" + std::to_string(k) + "-merge.log") != std::string::npos);
+    // A merge after the first succeeds when the bounces ended before it.
+    CHECK((merge.find(" --quiet --bounce-stage')") != std::string::npos) == (k > 0));
+    CHECK(array.find("--shard auto --quiet") != std::string::npos);
+  }
 }
 }  // TEST_SUITE
 
