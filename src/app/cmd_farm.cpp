@@ -60,7 +60,7 @@ CommandSpec FarmSpec() {
           "of the cluster needs them at the same paths (a shared file system). The job script and the jobs' logs "
           "go to DIR.farm/ beside DIR. COMMAND's options are checked here, before anything is submitted.",
           {{"options",
-            {{"--tasks", "N", "the number of shards (array tasks), 1..100000, at most the mesh's vertex count", "required"},
+            {{"--tasks", "N", "the number of shards (array tasks), 1..99999, at most the mesh's vertex count", "required"},
              {"--sbatch", "\"OPTIONS\"",
               "options given to every sbatch, as one word (e.g. \"--partition=long --time=2:00:00 --mem-per-cpu=2G\")",
               "none"},
@@ -92,15 +92,19 @@ int RunFarm(const std::vector<std::string>& given) {
   } catch (const Error&) {
     usage("--tasks " + tasks + ": expected a whole number 1.." + std::to_string(kMaxShards));
   }
-  // The command's options, checked as each task will check them.
-  std::vector<std::string> check = tokens;
-  check.insert(check.end(), {"--shard", "0/" + std::to_string(job.tasks)});
-  Precompute(check, {}, true);
+  const bool quiet = !Take(tokens, "--quiet", true).empty();  // the farm's own: its tasks and merges always are
   job.options = tokens;
   // Interreflection: its direct pass, then each bounce, as stages (precompute/bounce_stages.h).
-  const std::string transport = Take(tokens, "--transport"), bounces = Take(tokens, "--bounces");
+  std::vector<std::string> read = tokens;
+  const std::string transport = Take(read, "--transport"), bounces = Take(read, "--bounces");
+  job.out = Take(read, "--out");
+  // The command's options, checked as the first task will run them.
+  std::vector<std::string> check = tokens;
+  check.insert(check.end(), {"--shard", "0/" + std::to_string(job.tasks), "--quiet"});
+  if (transport == "interreflection") check.insert(check.end(), {"--bounce-stage", "0"});
+  Precompute(check, {}, true);
+  SetQuiet(quiet);
   if (transport == "interreflection") job.stages = 1 + (bounces.empty() ? SceneOptions{}.bounces : std::stoi(bounces));
-  job.out = Take(tokens, "--out");
   job.wait = wait;
   job.prt = fs::canonical("/proc/self/exe").string();
   job.workdir = fs::current_path().string();
@@ -109,19 +113,22 @@ int RunFarm(const std::vector<std::string>& given) {
     std::fputs(script.c_str(), stdout);
     return 0;
   }
-  const std::optional<std::string> sbatch = FindProgram("sbatch");
-  if (!sbatch)
-    throw Error("sbatch: not found on PATH (expected Slurm's client tools, Debian's slurm-client; --dry-run prints the "
-                "job script instead)");
+  for (const char* tool : {"sbatch", "scancel", "scontrol"})
+    if ((std::string(tool) != "scontrol" || wait) && !FindProgram(tool))
+      throw Error(std::string(tool) + ": not found on PATH (expected Slurm's client tools, Debian's slurm-client; "
+                  "--dry-run prints the job script instead)");
   CreateFolder(FarmFolder(job.out));
   const std::string path = FarmFolder(job.out) + "/submit.sh";
   WriteFileAtomic(path, script);
-  Summary("farm: " + job.command + " as " + std::to_string(job.tasks) + " shards and a merge, submitted by " + path +
-          (wait ? "; waiting for the merge" : ""));
-  const ProgramResult run = RunProgram({"/bin/bash", path});
+  const std::string log = FarmFolder(job.out) + "/submit.log";
+  Summary("farm: " + job.command + " as " + std::to_string(job.tasks) + " shards" +
+          (job.stages > 1 ? " a stage (" + std::to_string(job.stages) + " stages)" : std::string()) +
+          " and a merge, submitted by " + path + (wait ? "; waiting for the last merge" : ""));
+  // The script's own messages and sbatch's errors go to its log, whose last line a failure quotes.
+  const ProgramResult run = RunProgram({"/bin/bash", "-c", "exec /bin/bash \"$0\" 2>\"$1\"", path, log});
   if (run.status != 0)
-    throw Error(path + ": " + (wait ? "the job" : "sbatch") + " failed (exit " + std::to_string(run.status) + "; logs in " +
-                FarmFolder(job.out) + "/)");
+    throw Error(path + ": " + (wait ? "the job" : "submitting") + " failed (exit " + std::to_string(run.status) + ": " +
+                LastLine(log) + "; logs in " + FarmFolder(job.out) + "/)");
   const std::string merge = run.out.substr(0, run.out.find('\n'));
   Summary("farm: merge job " + merge + (wait ? " succeeded: " + job.out + " is written" : " submitted; it writes " + job.out));
   return 0;

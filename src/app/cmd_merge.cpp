@@ -4,6 +4,7 @@
 // transport: what needs every vertex (the course's files, the cache, the transfer matrices and
 // their clustered PCA) is written as one run on one machine writes it, byte for byte.
 #include <filesystem>
+#include <optional>
 
 #include "app/commands.h"
 #include "app/precompute_shard.h"
@@ -66,7 +67,7 @@ void RemoveBounceFiles(const std::string& dir, const std::string& cache_name, in
 /// The next stage of interreflection's bounces merged (farm/assemble_bounces.h): the state
 /// updated for the tasks' next stage, or, once the bounces end, the precompute run with their
 /// transport and the stage files removed.
-int MergeBounces(const std::string& dir, const std::string& cache_name, bool keep) {
+int MergeBounces(const std::string& dir, const std::string& cache_name, bool keep, int given, bool quiet) {
   const std::string state_path = dir + "/" + BounceStateName(cache_name);
   std::optional<BounceState> state;
   std::error_code ec;
@@ -75,15 +76,31 @@ int MergeBounces(const std::string& dir, const std::string& cache_name, bool kee
     state = ReadBounceState(state_path, why);
     if (!state) throw Error(state_path + ": " + why + " (expected the bounce state the last prt merge wrote)");
   }
+  // A stage named (prt farm's chain) and merged already, or after the bounces ended: nothing to
+  // assemble. The chain's last merge removes the state an early end kept for the stages after it.
+  if (given >= 0 && state && (state->done || given <= state->stage)) {
+    Summary("merge: nothing to merge: bounce stage " + std::to_string(given) + " is merged already" +
+            (state->done ? " (the bounces ended after stage " + std::to_string(state->stage) + ": " + state->stop + ")" : ""));
+    if (state->done && given >= state->bounces && !keep) RemoveBounceFiles(dir, cache_name, 0, state->bounces, true);
+    return 0;
+  }
+  if (state && state->done)
+    throw Error(state_path + ": the bounces ended after stage " + std::to_string(state->stage) +
+                " and their transport is written (expected no merge: remove the state to start again)");
   const int stage = state ? state->stage + 1 : 0;
+  if (given >= 0 && given != stage)
+    throw Error("--bounce-stage " + std::to_string(given) + ": the folder's bounces are " +
+                (state ? "at stage " + std::to_string(state->stage) : std::string("not begun")) + " (expected stage " +
+                std::to_string(stage) + ": the stages run in order)");
   const AssembledStage assembled = AssembleStage(dir, cache_name, stage);
   const BounceState merged = MergeStage(state, assembled);
-  Summary("merge: bounce stage " + std::to_string(stage) + " (" + (stage == 0 ? std::string("the direct pass") : "bounce " + std::to_string(stage)) +
-          ") of " + std::to_string(assembled.files.size()) + " shards in " + dir + ", whole and of one job");
+  Summary("merge: bounce stage " + std::to_string(stage) + " (" +
+          (stage == 0 ? std::string("the direct pass") : "bounce " + std::to_string(stage)) + ") of " +
+          std::to_string(assembled.files.size()) + " shards in " + dir + ", whole and of one job");
   if (!merged.done) {
     WriteBounceState(state_path, merged);
     if (stage > 0 && !keep) RemoveBounceFiles(dir, cache_name, stage, stage, false);
-    Summary("merge: bounce " + std::to_string(stage + 1) + " of " + std::to_string(assembled.first.bounces) +
+    Summary("merge: bounce " + std::to_string(stage + 1) + " of " + std::to_string(merged.bounces) +
             " next: run the same tasks again, then prt merge " + dir);
     return 0;
   }
@@ -91,12 +108,21 @@ int MergeBounces(const std::string& dir, const std::string& cache_name, bool kee
   while ((lmax + 1) * (lmax + 1) < merged.coefficients) ++lmax;
   const Transport transport = BouncedTransport(merged, lmax);
   Summary("merge: bounces: " + merged.stop);
-  const int status = Precompute(WithOut(merged.command, dir), {&transport, merged.key, merged.shards});
-  if (status == 0 && !keep) {
+  std::vector<std::string> command = WithOut(merged.command, dir);
+  if (quiet) command.push_back("--quiet");
+  const int status = Precompute(command, {&transport, merged.key, merged.shards});
+  if (status != 0) return status;
+  // The chain goes on past an early end: the state stays, done, for its later stages.
+  if (given >= 0 && given < merged.bounces) {
+    WriteBounceState(state_path, merged);
+    if (!keep) RemoveBounceFiles(dir, cache_name, 0, stage, false);
+    return 0;
+  }
+  if (!keep) {
     RemoveBounceFiles(dir, cache_name, 0, stage, true);
     Summary("merge: removed the bounce stages' shard files and state (--keep-shards keeps them)");
   }
-  return status;
+  return 0;
 }
 
 }  // namespace
@@ -111,18 +137,20 @@ CommandSpec MergeSpec() {
           "anything is written. The shard files are removed once the merge has succeeded.",
           {{"options",
             {{"--keep-shards", "", "keep the shard files after a successful merge", "off: removed"},
-             {"--bounce-stage", "",
-              "a merge of a bounce after the first (prt farm's chain): when the bounces ended before it and DIR holds "
-              "the transport, there is nothing to merge, and that is success",
-              "off: no shards is an error"},
+             {"--bounce-stage", "K",
+              "interreflection: merge stage K of the bounces (0 the direct pass, then each bounce), as prt farm's "
+              "chain does; a stage merged already, or after the bounces ended, is success with nothing to do",
+              "off: the stage after the last merged"},
              QuietOption()}}}};
 }
 
 int RunMerge(const std::vector<std::string>& tokens) {
   Args args("merge", tokens, MergeSpec());
   const bool keep = args.Flag("--keep-shards");
-  const bool after_bounces = args.Flag("--bounce-stage");
-  SetQuiet(args.Flag("--quiet"));
+  // -1: no stage named (plain numbers: the compiler cannot follow an optional through here)
+  const int given = args.Has("--bounce-stage") ? args.Int("--bounce-stage", 0, 0, 1000) : -1;
+  const bool quiet = args.Flag("--quiet");
+  SetQuiet(quiet);
   const std::vector<std::string> dirs = args.TakePositionals();
   args.Finish();
   if (dirs.size() != 1) args.Fail("expected one folder, DIR (got " + std::to_string(dirs.size()) + ")");
@@ -137,19 +165,22 @@ int RunMerge(const std::vector<std::string>& tokens) {
     }
   }
   if (!fs::is_directory(dir)) throw Error(dir + ": no such folder (expected the --out DIR the shards were written to)");
-  if (HasBounceFiles(dir, basis->CacheName())) return MergeBounces(dir, basis->CacheName(), keep);
-  // A farm chain's merge of a bounce after the last (they ended early): nothing left to do.
+  // A transport's shards first: a bounce state left from another job does not take them over.
+  bool transport_shards = false;
   std::error_code ec;
-  if (after_bounces && fs::exists(dir + "/" + basis->CacheName(), ec)) {
-    Summary("merge: nothing to merge: the bounces ended before this stage, and " + dir + "/" + basis->CacheName() +
-            " holds the transport");
-    return 0;
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir, ec)) {
+    int index = 0, count = 0;
+    transport_shards |= IsShardFileName(entry.path().filename().string(), basis->CacheName(), index, count);
   }
+  if (!transport_shards && (given >= 0 || HasBounceFiles(dir, basis->CacheName())))
+    return MergeBounces(dir, basis->CacheName(), keep, given, quiet);
   const AssembledShards shards = AssembleShards(dir, basis->CacheName());
   Summary("merge: " + std::to_string(shards.count) + " shards in " + dir + ", whole and of one job (" +
           std::to_string(shards.transport.vertices) + " vertices)");
   ShardedTransport sharded{&shards.transport, shards.key, shards.count};
-  const int status = Precompute(WithOut(shards.command, dir), sharded);
+  std::vector<std::string> command = WithOut(shards.command, dir);
+  if (quiet) command.push_back("--quiet");  // the shards' command has none (ShardCommand)
+  const int status = Precompute(command, sharded);
   if (status == 0 && !keep) {
     RemoveShards(dir, basis->CacheName());
     Summary("merge: removed the " + std::to_string(shards.count) + " shard files (--keep-shards keeps them)");

@@ -26,11 +26,24 @@ std::vector<std::string> ShardCommand(const std::vector<std::string>& tokens) {
   std::vector<std::string> kept;
   for (std::size_t i = 0; i < tokens.size(); ++i) {
     const std::string& t = tokens[i];
-    if (t == "--shard" || t == "--threads") {
+    // A path made absolute: the merge may run in another folder, and `./scene.obj` is the task's
+    // `scene.obj`. An --env that names no file is a built-in light, kept as it is.
+    if ((t == "--mesh" || t == "--env" || t == "--texture" || t == "--cache" || t == "--out") && i + 1 < tokens.size()) {
+      std::error_code ec;
+      const std::string& value = tokens[i + 1];
+      const bool path = t == "--out" || (t == "--cache" && value != "none") || fs::exists(value, ec);
+      kept.push_back(t);
+      kept.push_back(path ? fs::absolute(value, ec).lexically_normal().string() : value);
+      ++i;
+      continue;
+    }
+    if (t == "--shard" || t == "--threads" || t == "--bounce-stage") {
       ++i;  // and its value
       continue;
     }
-    if (t == "--quiet" || t.rfind("--shard=", 0) == 0 || t.rfind("--threads=", 0) == 0) continue;
+    if (t == "--quiet" || t.rfind("--shard=", 0) == 0 || t.rfind("--threads=", 0) == 0 ||
+        t.rfind("--bounce-stage=", 0) == 0)
+      continue;
     kept.push_back(t);
   }
   return kept;
@@ -42,7 +55,7 @@ namespace {
 /// direct pass with its hits when no merge has assembled one yet, else the bounce after the
 /// last one assembled (the bounce state in `out`), nothing once the bounces have ended.
 int RunBounceStage(const Mesh& mesh, const TransportOptions& topts, const std::string& cache, const ShardId& shard,
-                   const std::string& out, const std::vector<std::string>& command) {
+                   const std::string& out, const std::vector<std::string>& command, std::optional<int> given) {
   const std::uint64_t key = TransportKey(mesh, topts);
   const std::string state_path = out + "/" + BounceStateName(cache);
   std::optional<BounceState> state;
@@ -54,22 +67,21 @@ int RunBounceStage(const Mesh& mesh, const TransportOptions& topts, const std::s
     if (state->key != key || state->command != command || state->shards != shard.count)
       throw Error(state_path + ": the bounces of another job (made by another command, mesh or --shard count) " +
                   "(expected this job's: remove the folder's shards and bounce state to start again)");
-    if (state->done) {
-      Summary("shard: " + std::to_string(shard.index) + " of " + std::to_string(shard.count) + ": nothing to do, the " +
-              "bounces ended after stage " + std::to_string(state->stage) + " (" + state->stop + ")");
-      return 0;
-    }
   }
-  // No state and no direct pass yet, but this job's transport in the cache: the bounces ended
-  // (early, or a task of a later stage of the farm's chain runs after the last merge).
-  if (!state && !fs::exists(out + "/" + ShardFileName(BounceStageName(cache, 0), shard.index, shard.count), ec)) {
-    std::string why;
-    if (ReadTransportCache(out + "/" + cache, key, why)) {
-      Summary("shard: " + std::to_string(shard.index) + " of " + std::to_string(shard.count) + ": nothing to do, " + out +
-              "/" + cache + " holds this job's transport already (its bounces have ended)");
-      return 0;
-    }
+  const std::string done = "shard: " + std::to_string(shard.index) + " of " + std::to_string(shard.count) + ": nothing to do, ";
+  if (state && state->done) {
+    Summary(done + "the bounces ended after stage " + std::to_string(state->stage) + " (" + state->stop + ")");
+    return 0;
   }
+  // A stage named (prt farm's chain): one already merged is done (the task ran again).
+  if (given && state && *given <= state->stage) {
+    Summary(done + "stage " + std::to_string(*given) + " is merged already");
+    return 0;
+  }
+  if (given && *given != (state ? state->stage + 1 : 0))
+    throw Error("--bounce-stage " + std::to_string(*given) + ": the folder's bounces are " +
+                (state ? "at stage " + std::to_string(state->stage) : std::string("not begun")) +
+                " (expected stage " + std::to_string(state ? state->stage + 1 : 0) + ": the stages run in order)");
   const int stage = state ? state->stage + 1 : 0;
   const BounceScene scene = MakeBounceScene(mesh, topts);
   const std::vector<std::uint64_t> work(scene.mesh.vertex_count(), 1);
@@ -127,14 +139,14 @@ int RunBounceStage(const Mesh& mesh, const TransportOptions& topts, const std::s
 }  // namespace
 
 int RunPrecomputeShard(const SceneOptions& options, const ShardId& shard, const std::string& out,
-                       const std::vector<std::string>& command) {
+                       const std::vector<std::string>& command, std::optional<int> stage) {
   CreateFolder(out);
   const std::string path = out + "/" + ShardFileName(options.basis->CacheName(), shard.index, shard.count);
   const Mesh mesh = LoadSceneMesh(options);
   TransportOptions topts = TransportOptionsOf(options);
   topts.matrices = options.material.glossy;  // precompute's glossy transfer: matrices for any view
   if (topts.mode == TransportMode::kInterreflection)
-    return RunBounceStage(mesh, topts, options.basis->CacheName(), shard, out, command);
+    return RunBounceStage(mesh, topts, options.basis->CacheName(), shard, out, command, stage);
   // Every vertex of a precompute casts the same directions (no camera): blocks of equal work
   // are blocks of equal count.
   const std::vector<std::uint64_t> work(mesh.vertex_count(), 1);

@@ -61,6 +61,7 @@ BounceState MergeStage(const std::optional<BounceState>& before, const Assembled
     s.key = f.key;
     s.command = f.command;
     s.shards = f.count;
+    s.bounces = f.bounces;
     s.channels = f.channels;
     s.coefficients = count;
     s.vertices = f.vertices;

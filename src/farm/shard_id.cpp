@@ -11,7 +11,9 @@ namespace {
 
 /// A whole number 0..kMaxShards written in `text` alone, or nullopt.
 std::optional<long> Whole(const std::string& text) {
-  if (text.empty() || text.size() > 7 || text.find_first_not_of("0123456789") != std::string::npos) return std::nullopt;
+  constexpr std::size_t kDigits = 6;  // more than any count allowed: a longer number is refused unread
+  if (text.empty() || text.size() > kDigits || text.find_first_not_of("0123456789") != std::string::npos)
+    return std::nullopt;
   const long n = std::strtol(text.c_str(), nullptr, 10);
   if (n > kMaxShards) return std::nullopt;
   return n;
@@ -26,7 +28,7 @@ std::optional<long> Variable(const EnvLookup& env, const char* name) {
   return n;
 }
 
-const char* kExpected = "(expected I/N with 0 <= I < N <= 100000, auto, or auto/N)";
+const std::string kExpected = "(expected I/N with 0 <= I < N <= " + std::to_string(kMaxShards) + ", auto, or auto/N)";
 
 /// The index and count Slurm gives an array task, if it is one.
 std::optional<ShardId> FromSlurm(const EnvLookup& env) {

@@ -23,8 +23,9 @@ struct ShardId {
   std::string source;  ///< how it was found, e.g. "--shard 2/5" or "SLURM_ARRAY_TASK_ID=2 of ..."
 };
 
-/// The most shards a job may have.
-inline constexpr int kMaxShards = 100000;
+/// The most shards a job may have: their file names hold the index and count in five digits
+/// (precompute_io/transport_shard.h).
+inline constexpr int kMaxShards = 99999;
 
 /// The environment as the parser reads it (std::getenv by default; tests give their own).
 using EnvLookup = std::function<const char*(const char*)>;

@@ -13,9 +13,6 @@
 #include "precompute/transport_bounce.h"
 
 namespace prt {
-namespace {
-
-}  // namespace
 
 double BounceEnergy(const std::vector<double>& t, int count) {
   double sum = 0.0;

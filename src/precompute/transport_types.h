@@ -43,7 +43,6 @@ struct VertexBlock {
   std::size_t begin = 0;
   std::size_t end = std::numeric_limits<std::size_t>::max();
   bool Has(std::size_t v) const { return v >= begin && v < end; }
-  bool All() const { return begin == 0 && end == std::numeric_limits<std::size_t>::max(); }
 };
 
 struct TransportOptions {

@@ -202,6 +202,7 @@ void WriteBounceState(const std::string& path, const BounceState& s) {
   w.Put(s.key);
   w.PutWords(s.command);
   w.Put(std::int32_t(s.shards));
+  w.Put(std::int32_t(s.bounces));
   w.Put(std::int32_t(s.stage));
   w.Put(std::uint8_t(s.done));
   w.Put(s.stop);
@@ -224,6 +225,7 @@ std::optional<BounceState> ReadBounceState(const std::string& path, std::string&
     s.key = r.Get<std::uint64_t>();
     s.command = r.GetWords();
     s.shards = r.Get<std::int32_t>();
+    s.bounces = r.Get<std::int32_t>();
     s.stage = r.Get<std::int32_t>();
     s.done = r.Get<std::uint8_t>() != 0;
     s.stop = r.GetString();

@@ -50,6 +50,7 @@ struct BounceState {
   std::uint64_t key = 0;
   std::vector<std::string> command;
   int shards = 0;              ///< the job's shard count, the same at every stage
+  int bounces = 0;             ///< --bounces: the job's last stage
   int stage = 0;               ///< the last stage assembled (0: the direct pass)
   bool done = false;           ///< no more bounces: the last, or stopped early
   std::string stop;            ///< why the bounces ended, for the summary

@@ -31,8 +31,12 @@ std::string JoinCommand(const std::vector<std::string>& words) {
   return joined;
 }
 
-std::uint64_t Checksum(const std::string& command, const Transport& t) {
-  std::uint64_t h = Fnv1a(command);
+/// FNV-1a of the header (its checksum field 0), the command and the rows: a flipped bit of the
+/// key or of a block's bounds is a damaged shard, not another job's.
+std::uint64_t Checksum(Header header, const std::string& command, const Transport& t) {
+  header.checksum = 0;
+  std::uint64_t h = Fnv1a(&header, sizeof header);
+  h = Fnv1a(command, h);
   for (const std::vector<float>* part : {&t.coeffs, &t.glossy, &t.matrices})
     h = Fnv1a(part->data(), part->size() * sizeof(float), h);
   return h;
@@ -92,7 +96,7 @@ void WriteTransportShard(const std::string& path, const TransportShard& s) {
   h.end = s.block.end;
   h.key = s.key;
   h.command_bytes = command.size();
-  h.checksum = Checksum(command, s.rows);
+  h.checksum = Checksum(h, command, s.rows);
   std::vector<std::string_view> parts = {{reinterpret_cast<const char*>(&h), sizeof h}, command};
   for (const std::vector<float>* part : {&s.rows.coeffs, &s.rows.glossy, &s.rows.matrices})
     parts.emplace_back(reinterpret_cast<const char*>(part->data()), part->size() * sizeof(float));
@@ -146,7 +150,7 @@ std::optional<TransportShard> ReadTransportShard(const std::string& path, std::s
     why = "truncated";
     return std::nullopt;
   }
-  if (Checksum(command, s.rows) != h.checksum) {
+  if (Checksum(h, command, s.rows) != h.checksum) {
     why = "checksum mismatch (corrupted)";
     return std::nullopt;
   }

@@ -6,7 +6,8 @@
 ///   header   "PRTSHARD", version, lmax, channels, parts (1 glossy, 2 matrices), index, count,
 ///            the whole mesh's vertex count, the block's first and end vertex, the whole run's
 ///            cache key (precompute_io/transport_cache.h, TransportKey), the length of the
-///            command line, and an FNV-1a checksum of everything after the header
+///            command line, and an FNV-1a checksum of the whole file (the header with this
+///            field 0, then the rest)
 ///   command  the command line that made it, its words separated by NUL, without --shard
 ///   rows     coeffs, then glossy, then matrices: the block's rows of each, laid out as in
 ///            Transport (precompute/transport_types.h)

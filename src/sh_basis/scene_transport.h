@@ -16,6 +16,14 @@
 
 namespace prt {
 
+/// The transport of a farm job, assembled from its shards (farm/assemble_shards.h), which
+/// ComputeSceneTransport takes in place of computing it.
+struct ShardedTransport {
+  const Transport* transport = nullptr;
+  std::uint64_t key = 0;  ///< the cache key the shards were made with
+  int shards = 0;
+};
+
 /// The transport of `mesh` for `options` in the basis `sh` (sh_basis.h): read from the cache when that file was made from the
 /// same mesh and options, else computed (and written there when the plan allows; a failed write
 /// is a warning). Warns when most vertices see no light at all (an inside-out or enclosed mesh).
@@ -26,14 +34,6 @@ namespace prt {
 /// count is the sample rule's default, which the summary line says. With `sharded`, the
 /// transport is the one its shards assembled (Error when they were made from another mesh or
 /// options than `mesh` and `options`), taken and cached as a computed one.
-/// The transport of a farm job, assembled from its shards (farm/assemble_shards.h), which
-/// ComputeSceneTransport takes in place of computing it.
-struct ShardedTransport {
-  const Transport* transport = nullptr;
-  std::uint64_t key = 0;  ///< the cache key the shards were made with
-  int shards = 0;
-};
-
 Transport ComputeSceneTransport(const Basis& sh, const Mesh& mesh, const TransportOptions& options, bool samples_from_rule,
                                 const CachePlan& cache, const Camera* camera = nullptr, bool matrices = false,
                                 const ShardedTransport& sharded = {});

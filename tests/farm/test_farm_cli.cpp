@@ -111,7 +111,8 @@ TEST_CASE("farm slurm: what a task would refuse, a missing or failing sbatch, re
   const std::string failing = test::ScratchDir("farm_stub_failing");
   r = Farm(StandInSbatch(failing, true), "precompute" + out + " --tasks 2");
   CHECK(r.exit_code == 1);
-  CHECK(r.err.find("sbatch failed") != std::string::npos);
+  CHECK(r.err.find("submitting failed") != std::string::npos);
+  CHECK(r.err.find("sbatch: error: invalid partition") != std::string::npos);  // sbatch's own words
   CHECK(Calls(failing).size() == 1);  // the script stops at the first failure
 }
 }  // TEST_SUITE

@@ -72,32 +72,34 @@ TEST_CASE("farm: interreflection's direct pass and each bounce as stages of the 
   const std::string scene = test::SmallSceneOption("farm_bounces");  // coloured: three channels
   struct Case {
     const char* options;
+    int bounces;
     int stages;  // the merges that do work: the direct pass, then each bounce computed
   };
-  const Case cases[] = {{" --transport interreflection --bounces 2 --samples 128", 3},
+  const Case cases[] = {{" --transport interreflection --bounces 2 --samples 128", 2, 3},
                         // So dark a scene that bounce 1 adds 7e-5 of the direct energy, under the
                         // 1e-4 that ends the bounces (transport.h): none after it.
-                        {" --transport interreflection --bounces 3 --albedo 0.001,0.001,0.001 --samples 64", 2}};
+                        {" --transport interreflection --bounces 3 --albedo 0.001,0.001,0.001 --samples 64", 3, 2}};
   for (const Case& c : cases) {
     CAPTURE(c.options);
     const std::string one = test::ScratchDir("farm_bounces_one"), farm = test::ScratchDir("farm_bounces_shards");
     REQUIRE(test::RunPrt("precompute" + scene + c.options + " --out " + Q(one) + " --quiet").exit_code == 0);
-    for (int stage = 0; stage < 4; ++stage) {
+    // Every stage of prt farm's chain, each named (--bounce-stage K), as its jobs run them.
+    for (int stage = 0; stage <= c.bounces; ++stage) {
       CAPTURE(stage);
       for (int i = 0; i < 3; ++i) {
         const test::RunResult task = test::RunPrt("precompute" + scene + c.options + " --out " + Q(farm) + " --shard " +
-                                                  std::to_string(i) + "/3");
+                                                  std::to_string(i) + "/3 --bounce-stage " + std::to_string(stage));
         REQUIRE_MESSAGE(task.exit_code == 0, task.err);
         // Once the bounces have ended, the tasks find nothing to do.
         CHECK((task.err.find("nothing to do") != std::string::npos) == (stage >= c.stages));
       }
-      const test::RunResult merge = test::RunPrt("merge " + Q(farm) + (stage > 0 ? " --bounce-stage" : ""));
+      const test::RunResult merge = test::RunPrt("merge " + Q(farm) + " --bounce-stage " + std::to_string(stage));
       REQUIRE_MESSAGE(merge.exit_code == 0, merge.err);
       // The folder holds one run's files from the last stage's merge on, and not before.
       CHECK(fs::exists(farm + "/transport.txt") == (stage + 1 >= c.stages));
       CHECK((merge.err.find("nothing to merge") != std::string::npos) == (stage >= c.stages));
     }
-    CHECK(Files(farm) == Files(one));
+    CHECK(Files(farm) == Files(one));  // the last stage's merge removed what an early end kept
   }
 }
 

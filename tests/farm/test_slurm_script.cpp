@@ -35,10 +35,13 @@ SlurmJob Job() {
 TEST_SUITE("farm") {
 TEST_CASE("slurm script: an array of N shard tasks, then the merge after all of them, in the job's folder") {
   const std::string s = SlurmScript(Job());
+  // The output folder's name is in no comment: a name with a newline would be a command there.
+  CHECK(s.find("# Its result") == std::string::npos);
   CHECK(s.rfind("#!/bin/bash\n", 0) == 0);
   CHECK(s.find("\nset -euo pipefail\n") != std::string::npos);
   CHECK(LineStarting(s, "cd ") == "cd '/home/me/my scans'");
-  CHECK(LineStarting(s, "mkdir ") == "mkdir -p out/scan.farm");
+  CHECK(LineStarting(s, "farm=") == "farm=out/scan.farm");
+  CHECK(LineStarting(s, "mkdir ") == "mkdir -p \"$farm\"");
   const std::string shards = LineStarting(s, "shards=$(sbatch");
   CHECK(shards.find(" --array=0-15 ") != std::string::npos);
   CHECK(shards.find(" --chdir='/home/me/my scans' ") != std::string::npos);
@@ -74,10 +77,17 @@ TEST_CASE("slurm script: the site's sbatch options on both jobs, waiting on the 
   // Waiting, the merge's state decides, asked until it ended: sbatch --wait exits 0 for a job
   // cancelled before it ran.
   CHECK(s.find("scontrol show job \"$merge\"") > s.find("merge=$(sbatch"));
-  CHECK(s.find("if [ \"$state\" != JobState=COMPLETED ]; then") != std::string::npos);
+  CHECK(s.find("    COMPLETED) break ;;") != std::string::npos);
+  CHECK(s.find("    CANCELLED|FAILED|") != std::string::npos);
   CHECK(FarmFolder("out/scan/") == "out/scan.farm");
   CHECK(FarmFolder("/") == "/.farm");
-  CHECK(LineStarting(s, "mkdir ") == "mkdir -p out/scan.farm");
+  // A % of the folder's own reaches Slurm's --output as %%, which it does not expand.
+  job.out = "out/50%";
+  const std::string percent = SlurmScript(job);
+  CHECK(percent.find("--output=out/50%%.farm/shard-%a.log ") != std::string::npos);
+  CHECK(LineStarting(percent, "farm=") == "farm=out/50%.farm");
+  CHECK(LineStarting(s, "farm=") == "farm=out/scan.farm");
+  CHECK(LineStarting(s, "mkdir ") == "mkdir -p \"$farm\"");
 }
 TEST_CASE("slurm script: interreflection's stages chained, each array after the merge before it") {
   SlurmJob job = Job();
@@ -101,9 +111,10 @@ TEST_CASE("slurm script: interreflection's stages chained, each array after the 
     CHECK(merge.find(" --dependency=afterok:$shards ") != std::string::npos);
     CHECK(array.find("--output=out/scan.farm/stage-" + std::to_string(k) + "-shard-%a.log") != std::string::npos);
     CHECK(merge.find("--output=out/scan.farm/stage-" + std::to_string(k) + "-merge.log") != std::string::npos);
-    // A merge after the first succeeds when the bounces ended before it.
-    CHECK((merge.find(" --quiet --bounce-stage')") != std::string::npos) == (k > 0));
-    CHECK(array.find("--shard auto --quiet") != std::string::npos);
+    // Each task and merge names its stage: one run again, or after the bounces ended, finds
+    // nothing to do.
+    CHECK(merge.find(" --quiet --bounce-stage " + std::to_string(k) + "')") != std::string::npos);
+    CHECK(array.find("--shard auto --quiet --bounce-stage " + std::to_string(k) + "')") != std::string::npos);
   }
 }
 }  // TEST_SUITE

@@ -61,6 +61,45 @@ TEST_CASE("vertex blocks: balanced by work, not by count: each block's work with
   CHECK(BlockBounds(work, 4)[1] < 100);
 }
 
+TEST_CASE("vertex blocks: each vertex in the block its running sum of work falls in, none empty beside a heavy vertex") {
+  // The rule of vertex_blocks.h: vertex v is in block i when i W / N <= (work before v) <
+  // (i + 1) W / N, checked exactly with whole numbers (N x sum against i x W), wherever no block
+  // can be empty (W / N at least the heaviest vertex). The weights: equal, growing, random.
+  Pcg32 rng(11, 2);
+  std::vector<std::vector<std::uint64_t>> cases = {std::vector<std::uint64_t>(10, 3), {1, 2, 3, 4, 5, 6, 7, 8, 9, 10}};
+  std::vector<std::uint64_t> random(97);
+  for (auto& w : random) w = 1 + rng.NextU32() % 1000;
+  cases.push_back(random);
+  for (const auto& work : cases) {
+    const std::uint64_t total = std::accumulate(work.begin(), work.end(), std::uint64_t(0));
+    const std::uint64_t heaviest = *std::max_element(work.begin(), work.end());
+    for (int n : {2, 3, 5, 7}) {
+      CAPTURE(n);
+      if (total < std::uint64_t(n) * heaviest) continue;  // a block could be empty: the clamps below
+      const std::vector<std::size_t> b = BlockBounds(work, n);
+      std::uint64_t before = 0;
+      for (int i = 0, v = 0; i < n; ++i)
+        for (; std::size_t(v) < b[i + 1]; before += work[v], ++v) {
+          CAPTURE(v);
+          CHECK(std::uint64_t(n) * before >= std::uint64_t(i) * total);
+          CHECK(std::uint64_t(n) * before < std::uint64_t(i + 1) * total);
+        }
+    }
+  }
+  // A vertex heavier than a block's share: the rule would leave blocks empty, and each gets one
+  // vertex instead, before it and after it.
+  for (const auto& work : {std::vector<std::uint64_t>{1000, 1, 1, 1}, std::vector<std::uint64_t>{1, 1, 1, 1000},
+                           std::vector<std::uint64_t>{1, 1000, 1, 1, 1}}) {
+    for (int n = 1; n <= int(work.size()); ++n) {
+      CAPTURE(n);
+      const std::vector<std::size_t> b = BlockBounds(work, n);
+      REQUIRE(b.size() == std::size_t(n) + 1);
+      CHECK(b.front() == 0);
+      CHECK(b.back() == work.size());
+      for (int i = 0; i < n; ++i) CHECK(b[i] < b[i + 1]);
+    }
+  }
+}
 }  // TEST_SUITE
 
 }  // namespace prt
