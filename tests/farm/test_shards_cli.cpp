@@ -125,6 +125,29 @@ TEST_CASE("farm: interreflection's stages refuse a missing bounce shard, another
   CHECK(r.err.find("this task's direct pass") != std::string::npos);
 }
 
+TEST_CASE("farm: the merge of a folder moved since its tasks ran, from another folder, with the mesh named relatively") {
+  const std::string scene_dir = test::ScratchDir("farm_moved_scene");
+  test::WriteSmallScene(scene_dir);
+  const std::string before = test::ScratchDir("farm_moved_before"), one = test::ScratchDir("farm_moved_one");
+  const std::string after = before + "_after";
+  fs::remove_all(after);
+  // The tasks in the scene's folder, the mesh by its name there (one written ./small_scene.obj).
+  for (int i = 0; i < 2; ++i) {
+    const std::string mesh = i == 0 ? "small_scene.obj" : "./small_scene.obj";
+    REQUIRE(test::RunCommand("cd " + Q(scene_dir) + " && " + Q(test::PrtBinary()) + " precompute --mesh " + mesh +
+                             " --samples 64 --out " + Q(before) + " --shard " + std::to_string(i) + "/2 --quiet")
+                .exit_code == 0);
+  }
+  fs::rename(before, after);
+  const test::RunResult merge = test::RunCommand("cd / && " + Q(test::PrtBinary()) + " merge " + Q(after) + " --quiet");
+  REQUIRE_MESSAGE(merge.exit_code == 0, merge.err);
+  CHECK_FALSE(fs::exists(before));  // nothing written where the tasks wrote
+  REQUIRE(test::RunPrt("precompute --mesh " + Q(scene_dir + "/small_scene.obj") + " --samples 64 --out " + Q(one) +
+                       " --quiet").exit_code == 0);
+  CHECK(Files(after) == Files(one));
+  fs::remove_all(after);
+}
+
 TEST_CASE("farm: a shard count or index that cannot be, and a glossy interreflection, refused before any work") {
   const std::string dir = test::ScratchDir("farm_refused");
   const std::string scene = test::SmallSceneOption("farm_refused_scene");
@@ -164,10 +187,19 @@ TEST_CASE("farm: an incomplete, foreign or stale set of shards is refused by mer
   r = test::RunPrt("merge " + Q(dir));
   CHECK(r.exit_code == 1);
   CHECK(r.err.find("transport.cache.shard-00001-of-00003: made by another command than shard 0") != std::string::npos);
-  // The right shard 1: then the mesh file changes before the merge (a stale set).
+  // The right shard 1: then the mesh file changes before the merge (a stale set), one vertex
+  // moved: the same vertex and triangle counts, another mesh.
   REQUIRE(Task(scene + " --samples 64", dir, 1, 3).exit_code == 0);
   const std::string mesh = scene.substr(scene.find('\'') + 1, scene.rfind('\'') - scene.find('\'') - 1);
-  std::ofstream(mesh, std::ios::app) << "v 0 0 5\nv 1 0 5\nv 0 1 5\nf -3 -2 -1\n";  // one more triangle
+  std::string obj;
+  {
+    std::ifstream in(mesh);
+    obj.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const std::size_t v = obj.find("\nv ") + 3, end = obj.find(' ', v);
+  REQUIRE(end != std::string::npos);
+  obj.replace(v, end - v, std::to_string(std::stod(obj.substr(v, end - v)) + 0.01));  // the first vertex moved
+  std::ofstream(mesh) << obj;
   r = test::RunPrt("merge " + Q(dir));
   CHECK(r.exit_code == 1);
   CHECK(r.err.find("the shards were made from another mesh or other options") != std::string::npos);
@@ -197,7 +229,11 @@ TEST_CASE("farm: a task killed mid-shard leaves no shard; run again, the set com
   test::RunResult r = test::RunPrt("merge " + Q(dir));
   CHECK(r.exit_code == 1);
   CHECK(r.err.find("shard 1 of 2 missing") != std::string::npos);
-  REQUIRE(Task(scene, dir, 1, 2).exit_code == 0);
+  // Run again on another number of threads, not quiet: neither is part of the shard's command.
+  REQUIRE(test::RunPrt("precompute" + scene + " --out " + Q(dir) + " --shard 1/2 --threads 1").exit_code == 0);
+  // What a task killed while writing its shard leaves (its temporary file): not a shard, and
+  // gone after the merge.
+  std::ofstream(dir + "/.transport.cache.shard-00001-of-00002" + AtomicFile::kTemporaryTag + "999999_0") << "partial";
   REQUIRE(test::RunPrt("merge " + Q(dir) + " --quiet").exit_code == 0);
   REQUIRE(test::RunPrt("precompute" + scene + " --out " + Q(one) + " --quiet").exit_code == 0);
   CHECK(Files(dir) == Files(one));
