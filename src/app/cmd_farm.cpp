@@ -64,7 +64,8 @@ CommandSpec FarmSpec() {
              {"--sbatch", "\"OPTIONS\"",
               "options given to every sbatch, as one word (e.g. \"--partition=long --time=2:00:00 --mem-per-cpu=2G\")",
               "none"},
-             {"--wait", "", "wait for the merge job and exit with its status (sbatch --wait)", "off: exit once submitted"},
+             {"--wait", "", "wait for the last merge (its state asked of scontrol every second) and exit 0 only when it "
+              "completed", "off: exit once submitted"},
              {"--dry-run", "", "print the job script on stdout instead of submitting it", "off"},
              QuietOption()}}}};
 }

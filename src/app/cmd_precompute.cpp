@@ -66,7 +66,8 @@ CommandSpec PrecomputeSpec() {
        "DIR/transport.cache.shard-IIIII-of-NNNNN, for a farm job: prt merge DIR then writes what one run writes. "
        "auto: I and N from a Slurm array task (SLURM_ARRAY_TASK_ID with SLURM_ARRAY_TASK_COUNT, or the array's "
        "MIN and MAX); auto/N: N given, I from SLURM_ARRAY_TASK_ID or a Kubernetes Indexed Job's "
-       "JOB_COMPLETION_INDEX. Not with interreflection yet (each bounce needs every vertex's previous one)",
+       "JOB_COMPLETION_INDEX. Interreflection runs in stages, the tasks and the merge once for the direct pass and once "
+       "for each bounce (docs/CLI.md, \"A farm job\"); not with a glossy material yet",
        "off: every vertex"});
   output.options.push_back(
       {"--bounce-stage", "K",

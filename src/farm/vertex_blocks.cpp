@@ -18,9 +18,10 @@ std::vector<std::size_t> BlockBounds(const std::vector<std::uint64_t>& work, int
   std::vector<std::size_t> bounds(std::size_t(count) + 1, 0);
   bounds[std::size_t(count)] = n;
   for (int i = 1; i < count; ++i) {
-    // The first vertex whose work starts at or past i W / N (a 128-bit product would be exact;
-    // total * i fits 64 bits for any mesh prt can hold: 2^32 vertices x 2^16 directions x 2^17).
-    const std::uint64_t target = (total * std::uint64_t(i) + std::uint64_t(count) - 1) / std::uint64_t(count);
+    // The first vertex whose work starts at or past i W / N: ceil(i W / N), with W = q N + r, as
+    // q i + ceil(r i / N), so that no product outgrows 64 bits (r i < N^2 < 10^10).
+    const std::uint64_t n = std::uint64_t(count), q = total / n, r = total % n;
+    const std::uint64_t target = q * std::uint64_t(i) + (r * std::uint64_t(i) + n - 1) / n;
     std::size_t b = static_cast<std::size_t>(std::lower_bound(prefix.begin(), prefix.end(), target) - prefix.begin());
     // Every block at least one vertex, and room left for the blocks after it.
     b = std::max(b, bounds[std::size_t(i) - 1] + 1);

@@ -2,10 +2,10 @@
 /// \file
 /// A mesh's vertices cut into N blocks of whole, consecutive vertices, balanced by work: block i
 /// holds the vertices whose running sum of work lies in [i W / N, (i + 1) W / N), W the total,
-/// each block at least one vertex. The work of a vertex is what its transport costs, in the
-/// precompute's own unit: the directions it casts (precompute/direction_pool.h; a vertex the
-/// camera sees may cast more than one it does not), 1 each where no ray is cast. The same
-/// inputs give the same blocks on every machine (no floating point: the sums are whole numbers).
+/// each block at least one vertex (where a vertex outweighs a block's share, its neighbours get
+/// blocks of one). The caller gives each vertex's work in any whole unit: `prt precompute
+/// --shard` gives every vertex 1, as every vertex casts the same directions there. The same
+/// inputs give the same blocks on every machine (no floating point: whole numbers throughout).
 
 #include <cstddef>
 #include <cstdint>

@@ -60,7 +60,7 @@ bool IsShardFileName(const std::string& name, const std::string& cache_name, int
     return false;
   index = std::stoi(i);
   count = std::stoi(n);
-  return true;
+  return count >= 1 && index < count;  // a name no shard has: not a shard
 }
 
 Transport BlockRows(const Transport& whole, const VertexBlock& block) {

@@ -79,7 +79,8 @@ TEST_CASE("shard file names: index and count in five digits, read back; other na
   CHECK(n == 16);
   for (const char* other : {"transport.cache", "transport.cache.shard-0003-of-00016", "wavelet.cache.shard-00003-of-00016",
                             "transport.cache.shard-00003-of-0016x", "transport.cache.shard-00003_of_00016",
-                            ".transport.cache.shard-00003-of-00016.prt-tmp123_0"})
+                            ".transport.cache.shard-00003-of-00016.prt-tmp123_0",
+                            "transport.cache.shard-00000-of-00000", "transport.cache.shard-00016-of-00016"})
     CHECK_FALSE(IsShardFileName(other, kCache, i, n));
 }
 
