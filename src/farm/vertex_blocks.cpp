@@ -20,8 +20,8 @@ std::vector<std::size_t> BlockBounds(const std::vector<std::uint64_t>& work, int
   for (int i = 1; i < count; ++i) {
     // The first vertex whose work starts at or past i W / N: ceil(i W / N), with W = q N + r, as
     // q i + ceil(r i / N), so that no product outgrows 64 bits (r i < N^2 < 10^10).
-    const std::uint64_t n = std::uint64_t(count), q = total / n, r = total % n;
-    const std::uint64_t target = q * std::uint64_t(i) + (r * std::uint64_t(i) + n - 1) / n;
+    const std::uint64_t shares = std::uint64_t(count), q = total / shares, r = total % shares;
+    const std::uint64_t target = q * std::uint64_t(i) + (r * std::uint64_t(i) + shares - 1) / shares;
     std::size_t b = static_cast<std::size_t>(std::lower_bound(prefix.begin(), prefix.end(), target) - prefix.begin());
     // Every block at least one vertex, and room left for the blocks after it.
     b = std::max(b, bounds[std::size_t(i) - 1] + 1);
