@@ -1,10 +1,12 @@
 #pragma once
 /// \file
-/// `prt precompute --shard I/N`: one task of a farm job. It computes the transport of vertex
-/// block I of N (farm/vertex_blocks.h) and writes it as a shard file in the output folder
-/// (precompute_io/transport_shard.h), beside where the cache goes; `prt merge DIR`
-/// (cmd_merge.cpp) then writes what one `prt precompute` writes there. Many tasks write one
-/// folder at once, so a shard task takes no lock of it and writes nothing else there.
+/// `prt precompute` as a farm job's parts: `--shard I/N`, one task, which computes the transport
+/// of vertex block I of N (farm/vertex_blocks.h) and writes it as a shard file in the output
+/// folder (precompute_io/transport_shard.h; interreflection one stage of its bounces,
+/// precompute_io/bounce_shard.h); the command line a shard records; and the precompute that
+/// `prt merge DIR` (cmd_merge.cpp) runs with the assembled transport, so that it writes what one
+/// `prt precompute` writes there. Many tasks write one folder at once, so a task takes no lock
+/// of it and writes nothing else there.
 
 #include <optional>
 #include <string>
