@@ -19,18 +19,20 @@ namespace fs = std::filesystem;
 using test::Q;
 
 /// A folder holding a stand-in `sbatch` that appends its arguments, one call a line, to
-/// `dir/calls` and prints the next job id (101, 102, ...) with a cluster name; with `fail`, it
-/// exits 1 instead.
-std::string StandInSbatch(const std::string& dir, bool fail = false) {
+/// `dir/calls` and prints the next job id (101, 102, ...) with a cluster name; its call
+/// `fail_at` (1: the first, 0: none) exits 1 instead, with sbatch's kind of message. Beside it a
+/// stand-in `scancel` appends "scancel ARGS" to `dir/cancels`.
+std::string StandInSbatch(const std::string& dir, int fail_at = 0) {
   fs::create_directories(dir + "/bin");
-  const std::string path = dir + "/bin/sbatch";
+  const std::string path = dir + "/bin/sbatch", cancel = dir + "/bin/scancel";
   std::ofstream(path) << "#!/bin/bash\n"
                       << "printf '%s\\n' \"$*\" >> " << Q(dir + "/calls") << "\n"
-                      << (fail ? "echo 'sbatch: error: invalid partition' >&2; exit 1\n" : "")
                       << "n=$(( $(cat " << Q(dir + "/count") << " 2>/dev/null || echo 100) + 1 ))\n"
+                      << "[ $n -ne $((100 + " << fail_at << ")) ] || { echo 'sbatch: error: invalid partition' >&2; exit 1; }\n"
                       << "echo $n > " << Q(dir + "/count") << "\n"
                       << "echo \"$n;prt\"\n";
-  fs::permissions(path, fs::perms::owner_all);
+  std::ofstream(cancel) << "#!/bin/bash\necho \"scancel $*\" >> " << Q(dir + "/cancels") << "\n";
+  for (const std::string& tool : {path, cancel}) fs::permissions(tool, fs::perms::owner_all);
   return dir + "/bin";
 }
 
@@ -109,11 +111,22 @@ TEST_CASE("farm slurm: what a task would refuse, a missing or failing sbatch, re
   CHECK(r.exit_code == 1);
   CHECK(r.err.find("sbatch: not found on PATH") != std::string::npos);
   const std::string failing = test::ScratchDir("farm_stub_failing");
-  r = Farm(StandInSbatch(failing, true), "precompute" + out + " --tasks 2");
+  r = Farm(StandInSbatch(failing, 1), "precompute" + out + " --tasks 2");
   CHECK(r.exit_code == 1);
   CHECK(r.err.find("submitting failed") != std::string::npos);
   CHECK(r.err.find("sbatch: error: invalid partition") != std::string::npos);  // sbatch's own words
   CHECK(Calls(failing).size() == 1);  // the script stops at the first failure
+  CHECK_FALSE(fs::exists(failing + "/cancels"));  // nothing submitted, nothing to cancel
+  // The merge's submission fails after the shards' array was submitted: the array is cancelled,
+  // so that no shards run without their merge.
+  const std::string second = test::ScratchDir("farm_stub_second_fails");
+  r = Farm(StandInSbatch(second, 2), "precompute" + out + " --tasks 2");
+  CHECK(r.exit_code == 1);
+  CHECK(Calls(second).size() == 2);
+  std::ifstream cancels(second + "/cancels");
+  std::string line;
+  CHECK(std::getline(cancels, line));
+  CHECK(line == "scancel 101");
 }
 }  // TEST_SUITE
 
