@@ -2,6 +2,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <map>
 
 #include <unistd.h>
 
@@ -61,6 +63,16 @@ std::optional<std::string> Chromium() {
 }
 
 doctest::skip NeedsChromium() { return doctest::skip(!Chromium().has_value()); }
+
+std::map<std::string, std::string> FolderFiles(const std::string& dir) {
+  std::map<std::string, std::string> files;
+  for (const std::filesystem::directory_entry& e : std::filesystem::directory_iterator(dir)) {
+    if (!e.is_regular_file()) continue;
+    std::ifstream in(e.path(), std::ios::binary);
+    files[e.path().filename().string()] = std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  return files;
+}
 
 bool SlurmAvailable() {
   return ::geteuid() == 0 && FindProgram("slurmctld") && FindProgram("slurmd") && FindProgram("munged") &&

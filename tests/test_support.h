@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <optional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,10 @@ std::optional<std::string> Chromium();
 /// The decorator of a test case that needs Chromium(): skipped, and counted as skipped by the
 /// runner, without it (PRT_REQUIRE_CHROMIUM=1, which CI sets, makes its absence an error).
 doctest::skip NeedsChromium();
+
+/// Every file of the folder `dir` (hidden ones too, not its subfolders'), by name, with its bytes:
+/// to compare two output folders byte for byte.
+std::map<std::string, std::string> FolderFiles(const std::string& dir);
 
 /// True when this machine can run the slurm tier's one-node Slurm (tests/farm/slurm_cluster.h):
 /// root, and slurmctld, slurmd, munged, sbatch and sinfo on PATH (Debian's slurm-wlm and munge).

@@ -27,7 +27,6 @@ The default mesh is the course's mary (../shared/data); without it, prt sample-f
 """
 import argparse
 import os
-import platform
 import shutil
 import statistics
 import subprocess
@@ -36,17 +35,8 @@ import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-
-
-def cpu_model():
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown"
+sys.path.insert(0, os.path.join(HERE, ".."))
+from machine import cpu_model  # noqa: E402
 
 
 def measured(argv):

@@ -18,7 +18,6 @@ import argparse
 import functools
 import http.server
 import os
-import platform
 import statistics
 import subprocess
 import sys
@@ -28,17 +27,8 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "..", "scripts"))
 import cdp  # noqa: E402
-
-
-def cpu_model():
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown"
+sys.path.insert(0, os.path.join(HERE, ".."))
+from machine import cpu_model  # noqa: E402
 
 
 def say(key, value):

@@ -69,13 +69,7 @@ void RemoveBounceFiles(const std::string& dir, const std::string& cache_name, in
 /// transport and the stage files removed.
 int MergeBounces(const std::string& dir, const std::string& cache_name, bool keep, int given, bool quiet) {
   const std::string state_path = dir + "/" + BounceStateName(cache_name);
-  std::optional<BounceState> state;
-  std::error_code ec;
-  if (fs::exists(state_path, ec)) {
-    std::string why;
-    state = ReadBounceState(state_path, why);
-    if (!state) throw Error(state_path + ": " + why + " (expected the bounce state the last prt merge wrote)");
-  }
+  const std::optional<BounceState> state = LoadBounceState(state_path);
   // A stage named (prt farm's chain) and merged already, or after the bounces ended: nothing to
   // assemble. The chain's last merge removes the state an early end kept for the stages after it.
   if (given >= 0 && state && (state->done || given <= state->stage)) {

@@ -58,12 +58,8 @@ int RunBounceStage(const Mesh& mesh, const TransportOptions& topts, const std::s
                    const std::string& out, const std::vector<std::string>& command, std::optional<int> given) {
   const std::uint64_t key = TransportKey(mesh, topts);
   const std::string state_path = out + "/" + BounceStateName(cache);
-  std::optional<BounceState> state;
-  std::error_code ec;
-  if (fs::exists(state_path, ec)) {
-    std::string why;
-    state = ReadBounceState(state_path, why);
-    if (!state) throw Error(state_path + ": " + why + " (expected the bounce state the last prt merge wrote)");
+  const std::optional<BounceState> state = LoadBounceState(state_path);
+  if (state) {
     if (state->key != key || state->command != command || state->shards != shard.count)
       throw Error(state_path + ": the bounces of another job (made by another command, mesh or --shard count) " +
                   "(expected this job's: remove the folder's shards and bounce state to start again)");

@@ -1,11 +1,13 @@
 #include "precompute_io/bounce_shard.h"
 
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <stdexcept>
 #include <string_view>
 
 #include "core/atomic_file.h"
+#include "core/error.h"
 #include "core/hash.h"
 
 namespace prt {
@@ -195,6 +197,15 @@ std::optional<BounceShard> ReadBounceShard(const std::string& path, std::string&
     why = "corrupt layout";
     return std::nullopt;
   }
+}
+
+std::optional<BounceState> LoadBounceState(const std::string& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) return std::nullopt;
+  std::string why;
+  std::optional<BounceState> state = ReadBounceState(path, why);
+  if (!state) throw Error(path + ": " + why + " (expected the bounce state the last prt merge wrote)");
+  return state;
 }
 
 void WriteBounceState(const std::string& path, const BounceState& s) {

@@ -65,5 +65,7 @@ struct BounceState {
 std::string BounceStateName(const std::string& cache_name);
 void WriteBounceState(const std::string& path, const BounceState& state);
 std::optional<BounceState> ReadBounceState(const std::string& path, std::string& why);
+/// The bounce state at `path`, nullopt when there is none; Error naming it when it is damaged.
+std::optional<BounceState> LoadBounceState(const std::string& path);
 
 }  // namespace prt

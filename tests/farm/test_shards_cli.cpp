@@ -18,16 +18,6 @@ namespace {
 namespace fs = std::filesystem;
 using test::Q;
 
-/// Every file of `dir` (hidden ones too) by name, with its bytes.
-std::map<std::string, std::string> Files(const std::string& dir) {
-  std::map<std::string, std::string> files;
-  for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
-    std::ifstream in(e.path(), std::ios::binary);
-    files[e.path().filename().string()] = std::string(std::istreambuf_iterator<char>(in), {});
-  }
-  return files;
-}
-
 /// The task `index` of `count` of `options` into `dir`.
 test::RunResult Task(const std::string& options, const std::string& dir, int index, int count) {
   return test::RunPrt("precompute" + options + " --out " + Q(dir) + " --shard " + std::to_string(index) + "/" +
@@ -57,7 +47,7 @@ TEST_CASE("farm: shards and a merge write the folder one precompute writes, byte
     const test::RunResult run = test::RunPrt("precompute" + scene + options + " --out " + Q(one) + " --quiet");
     REQUIRE_MESSAGE(run.exit_code == 0, run.err);
     Farm(scene + options, farm, 3);
-    const auto expected = Files(one), got = Files(farm);
+    const auto expected = test::FolderFiles(one), got = test::FolderFiles(farm);
     CHECK(expected.count("transport.cache") == 1);
     CHECK(got.size() == expected.size());  // the shard files removed
     for (const auto& [name, bytes] : expected) {
@@ -99,7 +89,7 @@ TEST_CASE("farm: interreflection's direct pass and each bounce as stages of the 
       CHECK(fs::exists(farm + "/transport.txt") == (stage + 1 >= c.stages));
       CHECK((merge.err.find("nothing to merge") != std::string::npos) == (stage >= c.stages));
     }
-    CHECK(Files(farm) == Files(one));  // the last stage's merge removed what an early end kept
+    CHECK(test::FolderFiles(farm) == test::FolderFiles(one));  // the last stage's merge removed what an early end kept
   }
 }
 
@@ -144,7 +134,7 @@ TEST_CASE("farm: the merge of a folder moved since its tasks ran, from another f
   CHECK_FALSE(fs::exists(before));  // nothing written where the tasks wrote
   REQUIRE(test::RunPrt("precompute --mesh " + Q(scene_dir + "/small_scene.obj") + " --samples 64 --out " + Q(one) +
                        " --quiet").exit_code == 0);
-  CHECK(Files(after) == Files(one));
+  CHECK(test::FolderFiles(after) == test::FolderFiles(one));
   fs::remove_all(after);
 }
 
@@ -236,7 +226,7 @@ TEST_CASE("farm: a task killed mid-shard leaves no shard; run again, the set com
   std::ofstream(dir + "/.transport.cache.shard-00001-of-00002" + AtomicFile::kTemporaryTag + "999999_0") << "partial";
   REQUIRE(test::RunPrt("merge " + Q(dir) + " --quiet").exit_code == 0);
   REQUIRE(test::RunPrt("precompute" + scene + " --out " + Q(one) + " --quiet").exit_code == 0);
-  CHECK(Files(dir) == Files(one));
+  CHECK(test::FolderFiles(dir) == test::FolderFiles(one));
 }
 
 }  // TEST_SUITE

@@ -19,15 +19,6 @@ namespace {
 namespace fs = std::filesystem;
 using test::Q;
 
-std::map<std::string, std::string> Files(const std::string& dir) {
-  std::map<std::string, std::string> files;
-  for (const fs::directory_entry& e : fs::directory_iterator(dir)) {
-    std::ifstream in(e.path(), std::ios::binary);
-    files[e.path().filename().string()] = std::string(std::istreambuf_iterator<char>(in), {});
-  }
-  return files;
-}
-
 std::string Read(const std::string& path) {
   std::ifstream in(path);
   return std::string(std::istreambuf_iterator<char>(in), {});
@@ -48,7 +39,7 @@ TEST_CASE("slurm: a precompute as shards and a merge on a real Slurm writes what
                                        " --out " + Q(farmed) + " --tasks 3 --wait");
   REQUIRE_MESSAGE(r.exit_code == 0, r.err << slurm.Logs());
   CHECK(r.err.find("succeeded") != std::string::npos);
-  CHECK(Files(farmed) == Files(one));
+  CHECK(test::FolderFiles(farmed) == test::FolderFiles(one));
   for (int stage = 0; stage < 3; ++stage) {
     CAPTURE(stage);
     for (int i = 0; i < 3; ++i)
