@@ -55,7 +55,9 @@ CommandSpec FarmSpec() {
   return {"prt farm slurm COMMAND [its options] --tasks N [--sbatch \"OPTIONS\"] [--wait] [--dry-run]",
           "Runs COMMAND (precompute) as a Slurm job: an array job of N tasks, each computing one block of the "
           "vertices (prt precompute --shard auto), and a job that runs prt merge once every task has succeeded "
-          "(sbatch --dependency=afterok). The result in the command's --out DIR is what the command run on one "
+          "(sbatch --dependency=afterok). Interreflection chains such a pair for its direct pass and for each "
+          "bounce, each array after the merge before it. A submission that fails cancels the jobs submitted "
+          "before it. The result in the command's --out DIR is what the command run on one "
           "machine writes there, byte for byte. The jobs run in this folder with this prt binary, so every machine "
           "of the cluster needs them at the same paths (a shared file system). The job script and the jobs' logs "
           "go to DIR.farm/ beside DIR. COMMAND's options are checked here, before anything is submitted.",

@@ -128,7 +128,10 @@ CommandSpec MergeSpec() {
           "assembles them, and writes into DIR what that precompute without --shard writes there: light.txt, "
           "transport.txt, the cache and, for a glossy material, the transfer matrices, byte for byte as one run on "
           "one machine writes them. A missing, damaged or foreign shard is refused with its name and reason before "
-          "anything is written. The shard files are removed once the merge has succeeded.",
+          "anything is written. The shard files are removed once the merge has succeeded.\n\n"
+          "Interreflection runs in stages (the direct pass, then each bounce): each merge assembles its stage "
+          "into DIR/transport.cache.bounces for the tasks' next stage, and the merge of the last writes the "
+          "folder.",
           {{"options",
             {{"--keep-shards", "", "keep the shard files after a successful merge", "off: removed"},
              {"--bounce-stage", "K",
