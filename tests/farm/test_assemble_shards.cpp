@@ -148,6 +148,17 @@ TEST_CASE("shards refused: missing, damaged, renamed, foreign or of another job,
     CHECK(Refusal(dir).find(paths[1] + ": checksum mismatch") == 0);
   }
   {
+    // A letter of the command's last word ("--lmax 1", after the first words and the header):
+    // the checksum covers every word.
+    auto [dir, paths] = fresh("command");
+    std::string bytes = Bytes(paths[2]);
+    const std::size_t word = bytes.find(std::string("--lmax") + '\0' + "1");
+    REQUIRE(word != std::string::npos);
+    bytes[word + 7] = '2';
+    Put(paths[2], bytes);
+    CHECK(Refusal(dir).find(paths[2] + ": checksum mismatch") == 0);
+  }
+  {
     auto [dir, paths] = fresh("renamed");
     fs::rename(paths[2], dir + "/moved");
     fs::rename(paths[1], paths[2]);  // shard 1 under shard 2's name, and no shard 1

@@ -9,6 +9,8 @@
 #include <map>
 #include <string>
 
+#include <unistd.h>
+
 #include "core/atomic_file.h"
 #include "tests/test_process.h"
 
@@ -67,8 +69,8 @@ TEST_CASE("farm: interreflection's direct pass and each bounce as stages of the 
   };
   const Case cases[] = {{" --transport interreflection --bounces 2 --samples 128", 2, 3},
                         // So dark a scene that bounce 1 adds 7e-5 of the direct energy, under the
-                        // 1e-4 that ends the bounces (transport.h): none after it.
-                        {" --transport interreflection --bounces 3 --albedo 0.001,0.001,0.001 --samples 64", 3, 2}};
+                        // 1e-4 that ends the bounces (transport.h): bounce 2 is not computed.
+                        {" --transport interreflection --bounces 2 --albedo 0.001,0.001,0.001 --samples 64", 2, 2}};
   for (const Case& c : cases) {
     CAPTURE(c.options);
     const std::string one = test::ScratchDir("farm_bounces_one"), farm = test::ScratchDir("farm_bounces_shards");
@@ -85,12 +87,60 @@ TEST_CASE("farm: interreflection's direct pass and each bounce as stages of the 
       }
       const test::RunResult merge = test::RunPrt("merge " + Q(farm) + " --bounce-stage " + std::to_string(stage));
       REQUIRE_MESSAGE(merge.exit_code == 0, merge.err);
+      // The task run again once its stage is merged: nothing to do, nothing written.
+      const test::RunResult again = test::RunPrt("precompute" + scene + c.options + " --out " + Q(farm) +
+                                                 " --shard 0/3 --bounce-stage " + std::to_string(stage));
+      CHECK(again.exit_code == 0);
+      CHECK(again.err.find("nothing to do") != std::string::npos);
       // The folder holds one run's files from the last stage's merge on, and not before.
       CHECK(fs::exists(farm + "/transport.txt") == (stage + 1 >= c.stages));
       CHECK((merge.err.find("nothing to merge") != std::string::npos) == (stage >= c.stages));
     }
     CHECK(test::FolderFiles(farm) == test::FolderFiles(one));  // the last stage's merge removed what an early end kept
   }
+}
+
+TEST_CASE("farm: interreflection whose first block sees no lit surface still bounces: every block's hits count") {
+  // A grid of 3,600 vertices far from the small scene, first in the file, open to the sky: the
+  // first of three blocks holds only grid vertices, whose rays hit nothing. The small scene after
+  // it has bounces.
+  const std::string dir = test::ScratchDir("farm_first_block_dark");
+  const std::string small = test::WriteSmallScene(dir);
+  std::string obj;
+  constexpr int kSide = 60;
+  for (int z = 0; z < kSide; ++z)
+    for (int x = 0; x < kSide; ++x) obj += "v " + std::to_string(100 + x * 0.1) + " 0 " + std::to_string(z * 0.1) + "\n";
+  for (int z = 0; z + 1 < kSide; ++z)
+    for (int x = 0; x + 1 < kSide; ++x) {
+      const int a = z * kSide + x + 1, b = a + 1, c = a + kSide, d = c + 1;  // counter-clockwise seen from above
+      obj += "f " + std::to_string(a) + " " + std::to_string(c) + " " + std::to_string(b) + "\n";
+      obj += "f " + std::to_string(b) + " " + std::to_string(c) + " " + std::to_string(d) + "\n";
+    }
+  std::ifstream in(small);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("f ", 0) == 0) {  // its vertex indices after the grid's ("f a//n b//n c//n")
+      std::istringstream words(line.substr(2));
+      line = "f";
+      for (std::string w; words >> w;) {
+        const std::size_t slash = w.find('/');
+        line += " " + std::to_string(std::stoi(w.substr(0, slash)) + kSide * kSide) +
+                (slash == std::string::npos ? "" : w.substr(slash));
+      }
+    }
+    if (line.rfind("mtllib", 0) != 0 && line.rfind("usemtl", 0) != 0) obj += line + "\n";
+  }
+  const std::string mesh = dir + "/grid_and_scene.obj";
+  std::ofstream(mesh) << obj;
+  const std::string options = " --mesh " + Q(mesh) + " --transport interreflection --samples 64";
+  const std::string one = test::ScratchDir("farm_first_block_dark_one"), farm = test::ScratchDir("farm_first_block_dark_farm");
+  const test::RunResult run = test::RunPrt("precompute" + options + " --out " + Q(one));
+  REQUIRE_MESSAGE(run.exit_code == 0, run.err);
+  CHECK(run.err.find("no bounce pass") == std::string::npos);  // the one run has its bounce
+  for (int stage = 0; stage < 2; ++stage) {
+    for (int i = 0; i < 3; ++i) REQUIRE(Task(options, farm, i, 3).exit_code == 0);
+    REQUIRE(test::RunPrt("merge " + Q(farm) + " --quiet").exit_code == 0);
+  }
+  CHECK(test::FolderFiles(farm) == test::FolderFiles(one));
 }
 
 TEST_CASE("farm: interreflection's stages refuse a missing bounce shard, another job's state and a lost direct pass") {
@@ -223,7 +273,11 @@ TEST_CASE("farm: a task killed mid-shard leaves no shard; run again, the set com
   REQUIRE(test::RunPrt("precompute" + scene + " --out " + Q(dir) + " --shard 1/2 --threads 1").exit_code == 0);
   // What a task killed while writing its shard leaves (its temporary file): not a shard, and
   // gone after the merge.
-  std::ofstream(dir + "/.transport.cache.shard-00001-of-00002" + AtomicFile::kTemporaryTag + "999999_0") << "partial";
+  // Named with this test's own process, alive: not a temporary any run would sweep as its
+  // writer's gone (a task on another machine may be alive), but one the merge removes.
+  std::ofstream(dir + "/.transport.cache.shard-00001-of-00002" + AtomicFile::kTemporaryTag + std::to_string(::getpid()) +
+                "_0")
+      << "partial";
   REQUIRE(test::RunPrt("merge " + Q(dir) + " --quiet").exit_code == 0);
   REQUIRE(test::RunPrt("precompute" + scene + " --out " + Q(one) + " --quiet").exit_code == 0);
   CHECK(test::FolderFiles(dir) == test::FolderFiles(one));
