@@ -74,6 +74,13 @@ int RunBounceStage(const Mesh& mesh, const TransportOptions& topts, const std::s
     Summary(done + "stage " + std::to_string(*given) + " is merged already");
     return 0;
   }
+  // A stage after the first with no state: the job's last merge has removed it, and written the
+  // transport (a task run again after it).
+  std::string why;
+  if (given && *given > 0 && !state && ReadTransportCache(out + "/" + cache, key, why)) {
+    Summary(done + out + "/" + cache + " holds this job's transport already (its last merge has run)");
+    return 0;
+  }
   if (given && *given != (state ? state->stage + 1 : 0))
     throw Error("--bounce-stage " + std::to_string(*given) + ": the folder's bounces are " +
                 (state ? "at stage " + std::to_string(state->stage) : std::string("not begun")) +
