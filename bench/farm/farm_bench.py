@@ -21,7 +21,7 @@ each stage's slowest task, from a fit of the measured task wall times against th
 --fs-mb-s MB/s (an assumption, printed): a task's part and the state, then the merge's reading of
 every shard. model_speedup_M = one run's wall / that.
 
-    python3 bench/farm/farm_bench.py build/prt [--mesh PATH] [--bounces B] [--shards 2,4,16]
+    python3 bench/farm/farm_bench.py build/prt [--mesh PATH] [--transport MODE] [--bounces B] [--shards 2,4,16]
                                                [--runs R] [--model 16,64] [--fs-mb-s 100]
 The default mesh is the course's mary (../shared/data); without it, prt sample-files' scene.
 """
@@ -69,6 +69,7 @@ def main():
     ap.add_argument("prt")
     ap.add_argument("--mesh")
     ap.add_argument("--bounces", type=int, default=1)
+    ap.add_argument("--transport", default="interreflection")
     ap.add_argument("--shards", default="2,4,16")
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--model", default="16,64")
@@ -84,14 +85,17 @@ def main():
         else:
             subprocess.run([prt, "sample-files", "--out", os.path.join(work, "samples"), "--quiet"], check=True)
             mesh = os.path.join(work, "samples", "scene.obj")
-    options = ["--mesh", mesh, "--transport", "interreflection", "--bounces", str(a.bounces), "--quiet"]
-    stages = a.bounces + 1
+    bounced = a.transport == "interreflection"
+    options = ["--mesh", mesh, "--transport", a.transport, "--quiet"] + (["--bounces", str(a.bounces)] if bounced else [])
+    stages = a.bounces + 1 if bounced else 1
 
     print("cpu=%s" % cpu_model())
     print("cores=%d" % os.cpu_count())
     print("load_before=%.2f" % os.getloadavg()[0])
     print("mesh=%s" % mesh)
-    print("bounces=%d" % a.bounces)
+    print("transport=%s" % a.transport)
+    if bounced:
+        print("bounces=%d" % a.bounces)
 
     one = []
     for r in range(a.runs):
@@ -115,12 +119,13 @@ def main():
         for stage in range(stages):
             before = set(os.listdir(out)) if os.path.isdir(out) else set()
             for i in range(n):
-                cpu, wall, mb = measured([prt, "precompute", *options, "--out", out, "--shard", "%d/%d" % (i, n)])
+                cpu, wall, mb = measured([prt, "precompute", *options, "--out", out, "--shard", "%d/%d" % (i, n)] +
+                                         (["--bounce-stage", str(stage)] if bounced else []))
                 tasks_cpu += cpu
                 peak = max(peak, mb)
                 shard = [f for f in set(os.listdir(out)) - before if ".shard-%05d-of-" % i in f]
                 fit_points.setdefault(stage, []).append((n, wall, sum(os.path.getsize(os.path.join(out, f)) for f in shard)))
-            cpu, wall, _ = measured([prt, "merge", out, "--quiet"] + (["--bounce-stage"] if stage else []))
+            cpu, wall, _ = measured([prt, "merge", out, "--quiet"] + (["--bounce-stage", str(stage)] if bounced else []))
             merges_cpu += cpu
             merge_wall.setdefault(stage, {})[n] = wall
             if os.path.exists(os.path.join(out, "transport.cache.bounces")):

@@ -104,19 +104,26 @@ int RunBounceStage(const Mesh& mesh, const TransportOptions& topts, const std::s
   const auto t0 = std::chrono::steady_clock::now();
   const std::size_t first = s.block.begin, last = s.block.end;
   if (stage == 0) {
-    const DirectResult direct = DirectStage(scene, s.block);
+    DirectResult direct = DirectStage(scene, s.block);
     s.rows.assign(direct.transfer.begin() + std::ptrdiff_t(first * scene.count),
                   direct.transfer.begin() + std::ptrdiff_t(last * scene.count));
     VertexBlock own = s.block;
     own.end = std::min<std::size_t>(own.end, scene.own);
     s.front_hits = FrontHits(direct.hits, own);
-    s.hits.assign(direct.hits.begin() + std::ptrdiff_t(first), direct.hits.begin() + std::ptrdiff_t(last));
+    // Only the hits on the lit side of a surface: the bounces gather nothing from the others
+    // (transport_bounce.h), and they are most of the file.
+    s.hits.resize(last - first);
+    for (std::size_t v = first; v < last; ++v) {
+      std::vector<VertexHit>& hits = direct.hits[v];
+      hits.erase(std::remove_if(hits.begin(), hits.end(), [](const VertexHit& h) { return !h.front; }), hits.end());
+      s.hits[v - first] = std::move(hits);
+    }
   } else {
     // This block's hits, from its stage-0 shard.
     const std::string zero = out + "/" + ShardFileName(BounceStageName(cache, 0), shard.index, shard.count);
-    std::string why;
-    std::optional<BounceShard> mine = ReadBounceShard(zero, why);
-    if (!mine) throw Error(zero + ": " + why + " (expected this task's direct pass, which bounce " + std::to_string(stage) +
+    std::string unread;
+    std::optional<BounceShard> mine = ReadBounceShard(zero, unread);
+    if (!mine) throw Error(zero + ": " + unread + " (expected this task's direct pass, which bounce " + std::to_string(stage) +
                            " gathers at)");
     if (mine->key != key || mine->block.begin != first || mine->block.end != last)
       throw Error(zero + ": another job's or block's direct pass (expected this task's)");

@@ -84,8 +84,23 @@ class Reader {
   std::size_t at_ = 0;
 };
 
+/// The files' checksum: FNV-1a's step over 8-byte words (then the last bytes one at a time),
+/// eight times fewer steps than over bytes: a stage-0 shard of mary holds 160 MB of hits.
+std::uint64_t Checksum(std::string_view bytes) {
+  constexpr std::uint64_t kPrime = 0x100000001b3ULL;
+  std::uint64_t h = kFnvOffset;
+  std::size_t i = 0;
+  for (; i + 8 <= bytes.size(); i += 8) {
+    std::uint64_t word;
+    std::memcpy(&word, bytes.data() + i, 8);
+    h = (h ^ word) * kPrime;
+  }
+  for (; i < bytes.size(); ++i) h = (h ^ static_cast<unsigned char>(bytes[i])) * kPrime;
+  return h;
+}
+
 void WriteChecked(const std::string& path, const char (&magic)[8], const std::string& payload) {
-  const std::uint64_t checksum = Fnv1a(payload);
+  const std::uint64_t checksum = Checksum(payload);
   WriteFileAtomic(path, std::vector<std::string_view>{std::string_view(magic, 8),
                                                       std::string_view(reinterpret_cast<const char*>(&checksum), 8),
                                                       payload});
@@ -107,7 +122,7 @@ std::optional<std::string> ReadChecked(const std::string& path, const char (&mag
   std::uint64_t checksum = 0;
   std::memcpy(&checksum, all.data() + 8, 8);
   std::string payload = all.substr(16);
-  if (Fnv1a(payload) != checksum) {
+  if (Checksum(payload) != checksum) {
     why = "checksum mismatch (truncated or corrupted)";
     return std::nullopt;
   }

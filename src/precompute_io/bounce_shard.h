@@ -4,14 +4,15 @@
 /// (precompute/bounce_stages.h):
 ///
 /// - A bounce shard: one block's rows of one stage, in double precision (what the next stage
-///   gathers from, as the one-machine run keeps it), and, at stage 0, the block's hits, which
-///   every later stage of the block reads again. Named `<cache>.bounce-K.shard-IIIII-of-NNNNN`.
+///   gathers from, as the one-machine run keeps it), and, at stage 0, the block's hits on the lit
+///   side of a surface (the others send no light), which every later stage of the block reads
+///   again. Named `<cache>.bounce-K.shard-IIIII-of-NNNNN`.
 /// - The bounce state: what the merges have assembled so far, every vertex's last bounce and the
 ///   sum of the bounces, with the direct energy and whether the bounces stopped. Named
 ///   `<cache>.bounces`.
 ///
-/// Both carry the whole run's cache key and the command that made them, are checksummed
-/// (FNV-1a) and written to a temporary name renamed when whole (core/atomic_file.h).
+/// Both carry the whole run's cache key and the command that made them, are checksummed (FNV-1a's
+/// step over 8-byte words) and written to a temporary name renamed when whole (core/atomic_file.h).
 
 #include <cstdint>
 #include <optional>
