@@ -51,15 +51,19 @@ bool HasBounceFiles(const std::string& dir, const std::string& cache_name) {
   std::error_code ec;
   for (const fs::directory_entry& entry : fs::directory_iterator(dir, ec)) {
     const std::string name = entry.path().filename().string();
-    if (name == BounceStateName(cache_name) || name.rfind(cache_name + ".bounce-", 0) == 0) return true;
+    if (name == BounceStateName(cache_name) || name.rfind(cache_name + ".bounce-", 0) == 0 ||
+        name.rfind(BounceHitsName(cache_name) + ".", 0) == 0)
+      return true;
   }
   return false;
 }
 
-/// Removes interreflection's stage files of `cache_name` in `dir`: the state, and the shards of
-/// stages `from` on (with the temporaries of killed tasks).
+/// Removes interreflection's stage files of `cache_name` in `dir`: the shards of stages `from`
+/// to `to` (from 0: with the hits the bounces gather at), and the state when asked (with the
+/// temporaries of killed tasks).
 void RemoveBounceFiles(const std::string& dir, const std::string& cache_name, int from, int to, bool state) {
   for (int stage = from; stage <= to; ++stage) RemoveShards(dir, BounceStageName(cache_name, stage));
+  if (from == 0) RemoveShards(dir, BounceHitsName(cache_name));
   std::error_code ec;
   if (state) fs::remove(dir + "/" + BounceStateName(cache_name), ec);
 }

@@ -110,22 +110,26 @@ int RunBounceStage(const Mesh& mesh, const TransportOptions& topts, const std::s
     VertexBlock own = s.block;
     own.end = std::min<std::size_t>(own.end, scene.own);
     s.front_hits = FrontHits(direct.hits, own);
-    // Only the hits on the lit side of a surface: the bounces gather nothing from the others
-    // (transport_bounce.h), and they are most of the file.
-    s.hits.resize(last - first);
+    // The hits, in a file of their own that no merge reads: only those on the lit side of a
+    // surface, as the bounces gather nothing from the others (transport_bounce.h).
+    BounceShard hits = s;
+    hits.stage = kHitsStage;
+    hits.rows.clear();
+    hits.hits.resize(last - first);
     for (std::size_t v = first; v < last; ++v) {
-      std::vector<VertexHit>& hits = direct.hits[v];
-      hits.erase(std::remove_if(hits.begin(), hits.end(), [](const VertexHit& h) { return !h.front; }), hits.end());
-      s.hits[v - first] = std::move(hits);
+      std::vector<VertexHit>& at = direct.hits[v];
+      at.erase(std::remove_if(at.begin(), at.end(), [](const VertexHit& h) { return !h.front; }), at.end());
+      hits.hits[v - first] = std::move(at);
     }
+    WriteBounceShard(out + "/" + ShardFileName(BounceHitsName(cache), shard.index, shard.count), hits);
   } else {
     // This block's hits, from its stage-0 shard.
-    const std::string zero = out + "/" + ShardFileName(BounceStageName(cache, 0), shard.index, shard.count);
+    const std::string zero = out + "/" + ShardFileName(BounceHitsName(cache), shard.index, shard.count);
     std::string unread;
     std::optional<BounceShard> mine = ReadBounceShard(zero, unread);
     if (!mine) throw Error(zero + ": " + unread + " (expected this task's direct pass, which bounce " + std::to_string(stage) +
                            " gathers at)");
-    if (mine->key != key || mine->block.begin != first || mine->block.end != last)
+    if (mine->stage != kHitsStage || mine->key != key || mine->block.begin != first || mine->block.end != last)
       throw Error(zero + ": another job's or block's direct pass (expected this task's)");
     std::vector<std::vector<VertexHit>> hits(scene.mesh.vertex_count());
     std::move(mine->hits.begin(), mine->hits.end(), hits.begin() + std::ptrdiff_t(first));

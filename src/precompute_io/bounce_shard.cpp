@@ -146,6 +146,8 @@ std::string BounceStageName(const std::string& cache_name, int stage) {
 
 std::string BounceStateName(const std::string& cache_name) { return cache_name + ".bounces"; }
 
+std::string BounceHitsName(const std::string& cache_name) { return cache_name + ".hits"; }
+
 void WriteBounceShard(const std::string& path, const BounceShard& s) {
   Writer w;
   w.Put(std::int32_t(s.index));
@@ -204,8 +206,10 @@ std::optional<BounceShard> ReadBounceShard(const std::string& path, std::string&
     if (!r.AtEnd() || s.count < 1 || s.index < 0 || s.index >= s.count || s.block.begin >= s.block.end ||
         s.block.end > s.vertices || (s.channels != 1 && s.channels != 3) ||
         s.own > s.vertices || s.coefficients < 1 ||
-        s.rows.size() != (s.block.end - s.block.begin) * std::uint64_t(s.stage == 0 ? 1 : s.channels) *
-                             std::uint64_t(s.coefficients))
+        s.stage < kHitsStage ||
+        s.rows.size() != (s.stage == kHitsStage ? 0 : (s.block.end - s.block.begin) *
+                                                          std::uint64_t(s.stage == 0 ? 1 : s.channels) *
+                                                          std::uint64_t(s.coefficients)))
       throw std::out_of_range("layout");
     return s;
   } catch (const std::out_of_range&) {

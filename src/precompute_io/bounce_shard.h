@@ -4,9 +4,10 @@
 /// (precompute/bounce_stages.h):
 ///
 /// - A bounce shard: one block's rows of one stage, in double precision (what the next stage
-///   gathers from, as the one-machine run keeps it), and, at stage 0, the block's hits on the lit
-///   side of a surface (the others send no light), which every later stage of the block reads
-///   again. Named `<cache>.bounce-K.shard-IIIII-of-NNNNN`.
+///   gathers from, as the one-machine run keeps it). Named `<cache>.bounce-K.shard-IIIII-of-NNNNN`.
+///   Beside stage 0's, a file of the block's hits on the lit side of a surface (the others send
+///   no light), which every later stage of the block reads again and no merge reads:
+///   `<cache>.hits.shard-IIIII-of-NNNNN`.
 /// - The bounce state: what the merges have assembled so far, every vertex's last bounce and the
 ///   sum of the bounces, with the direct energy and whether the bounces stopped. Named
 ///   `<cache>.bounces`.
@@ -43,6 +44,11 @@ struct BounceShard {
 
 /// `<cache_name>.bounce-K`: the name whose shard files (ShardFileName) stage K's are.
 std::string BounceStageName(const std::string& cache_name, int stage);
+/// `<cache_name>.hits`: the name whose shard files hold each block's hits (stage kHitsStage),
+/// beside stage 0's rows: only the block's own later stages read them, never a merge.
+std::string BounceHitsName(const std::string& cache_name);
+/// The stage number of a hits file: its rows are empty, its hits the block's.
+inline constexpr int kHitsStage = -1;
 
 void WriteBounceShard(const std::string& path, const BounceShard& shard);
 std::optional<BounceShard> ReadBounceShard(const std::string& path, std::string& why);

@@ -158,10 +158,10 @@ TEST_CASE("farm: interreflection's stages refuse a missing bounce shard, another
   CHECK(r.exit_code == 1);
   CHECK(r.err.find("transport.cache.bounces: the bounces of another job") != std::string::npos);
   // Task 1's direct pass lost: its bounce cannot be gathered.
-  fs::remove(dir + "/transport.cache.bounce-0.shard-00001-of-00003");
+  fs::remove(dir + "/transport.cache.hits.shard-00001-of-00003");
   r = Task(scene, dir, 1, 3);
   CHECK(r.exit_code == 1);
-  CHECK(r.err.find("transport.cache.bounce-0.shard-00001-of-00003: ") != std::string::npos);
+  CHECK(r.err.find("transport.cache.hits.shard-00001-of-00003: ") != std::string::npos);
   CHECK(r.err.find("this task's direct pass") != std::string::npos);
 }
 
