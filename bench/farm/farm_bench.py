@@ -17,9 +17,9 @@ Prints key=value lines as `prt bench` does, the CPU first:
 Then a model, not a measurement, of the wall time on M machines like this one (M = N shards):
 each stage's slowest task, from a fit of the measured task wall times against their block sizes
 (t = a + b x vertices: a the fixed cost of a task, b its cost per vertex), plus the stage's merge
-(measured at the largest N), plus the shared file system moving each stage's shards and state at
---fs-mb-s MB/s (an assumption, printed): a task's part and the state, then the merge's reading of
-every shard. model_speedup_M = one run's wall / that.
+(measured at the largest N), plus the shared file system moving each stage's files at --fs-mb-s
+MB/s (an assumption, printed): a task's part of the rows and of the hits, and the state, then the
+merge's reading of every row. model_speedup_M = one run's wall / that.
 
     python3 bench/farm/farm_bench.py build/prt [--mesh PATH] [--transport MODE] [--bounces B] [--shards 2,4,16]
                                                [--runs R] [--model 16,64] [--fs-mb-s 100]
@@ -123,8 +123,13 @@ def main():
                                          (["--bounce-stage", str(stage)] if bounced else []))
                 tasks_cpu += cpu
                 peak = max(peak, mb)
-                shard = [f for f in set(os.listdir(out)) - before if ".shard-%05d-of-" % i in f]
-                fit_points.setdefault(stage, []).append((n, wall, sum(os.path.getsize(os.path.join(out, f)) for f in shard)))
+                new = [f for f in set(os.listdir(out)) - before if ".shard-%05d-of-" % i in f]
+                size = lambda names: sum(os.path.getsize(os.path.join(out, f)) for f in names)
+                # The rows, which the merge reads, and the hits, which only the task's own later
+                # stages read.
+                rows = size(f for f in new if ".hits." not in f)
+                hits = size(f for f in new if ".hits." in f)
+                fit_points.setdefault(stage, []).append((n, wall, rows, hits))
             cpu, wall, _ = measured([prt, "merge", out, "--quiet"] + (["--bounce-stage", str(stage)] if bounced else []))
             merges_cpu += cpu
             merge_wall.setdefault(stage, {})[n] = wall
@@ -145,16 +150,18 @@ def main():
         total = 0.0
         for stage in range(stages):
             pts = fit_points[stage]
-            xs = [1.0 / n for n, _, _ in pts]
-            ys = [w for _, w, _ in pts]
+            xs = [1.0 / n for n, _, _, _ in pts]
+            ys = [w for _, w, _, _ in pts]
             mx, my = statistics.mean(xs), statistics.mean(ys)
             sxx = sum((x - mx) ** 2 for x in xs)
             b = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx if sxx else 0.0
             fixed = my - b * mx
-            # The stage's shards, at the largest N measured: each machine writes its part and
-            # reads the state; the merge reads them all and writes the state.
-            stage_mb = sum(s for n, _, s in pts if n == largest) / 1e6
-            fs = (stage_mb / m + state_bytes / 1e6) / a.fs_mb_s + (stage_mb + state_bytes / 1e6) / a.fs_mb_s
+            # The stage's files, at the largest N measured: each machine writes its part of the
+            # rows and of the hits (at stage 0; it reads its hits back at every later stage) and
+            # reads the state; the merge reads every row and writes the state.
+            rows_mb = sum(r for n, _, r, _ in pts if n == largest) / 1e6
+            hits_mb = max(sum(h for n, _, _, h in fit_points[0] if n == largest) / 1e6, 0.0)
+            fs = (rows_mb / m + hits_mb / m + state_bytes / 1e6) / a.fs_mb_s + (rows_mb + state_bytes / 1e6) / a.fs_mb_s
             total += fixed + b / m + fs + merge_wall[stage][largest]
             if m == int(a.model.split(",")[0]):
                 print("model_stage%d_task_fixed_s=%.3f" % (stage, fixed))
