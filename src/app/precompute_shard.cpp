@@ -172,11 +172,7 @@ int RunPrecomputeShard(const SceneOptions& options, const ShardId& shard, const 
   TransportShard s;
   s.index = shard.index;
   s.count = shard.count;
-  s.key = TransportKey(mesh, [&] {
-    TransportOptions whole = topts;
-    whole.block = VertexBlock{};
-    return whole;
-  }());
+  s.key = TransportKey(mesh, topts);  // the whole run's: the key leaves the block out
   s.command = command;
   s.block = topts.block;
   const auto t0 = std::chrono::steady_clock::now();

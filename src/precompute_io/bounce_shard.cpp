@@ -30,7 +30,7 @@ class Writer {
   template <class T>
   void PutVector(const std::vector<T>& v) {
     Put(std::uint64_t(v.size()));
-    bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+    if (!v.empty()) bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
   }
   void PutWords(const std::vector<std::string>& words) {
     Put(std::uint64_t(words.size()));
@@ -61,7 +61,8 @@ class Reader {
     const std::uint64_t n = Get<std::uint64_t>();
     if (n > bytes_.size() / sizeof(T) + 1) throw std::out_of_range("length");
     std::vector<T> v(n);
-    std::memcpy(v.data(), Take(n * sizeof(T)), n * sizeof(T));
+    const char* from = Take(n * sizeof(T));
+    if (n > 0) std::memcpy(v.data(), from, n * sizeof(T));  // an empty vector's data() may be null
     return v;
   }
   std::vector<std::string> GetWords() {
