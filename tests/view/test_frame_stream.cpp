@@ -117,14 +117,14 @@ TEST_CASE("frame stream: Stop wakes a waiting Next and every later one; silence 
   REQUIRE(s.Next(job) == FrameStream::Step::kDraw);  // the still frame
   const auto t0 = Clock::now();
   CHECK(s.Next(job) == FrameStream::Step::kKeepAlive);
-  CHECK(Clock::now() - t0 >= kKeepAliveAfter);
-  CHECK(Clock::now() - t0 < kKeepAliveAfter * 3);
+  CHECK(Clock::now() - t0 >= kKeepAliveAfter);  // not before the silence (an order, not a speed)
   auto waiting = NextLater(s, job);
   CHECK(StillWaiting(waiting, 100));
-  const auto stop_at = Clock::now();
   s.Stop();
+  // Woken by Stop: it returns well before its own keep-alive would have come (an order of events;
+  // the wait bounds only a Next that Stop did not wake).
+  CHECK(waiting.wait_for(kKeepAliveAfter / 2) == std::future_status::ready);
   CHECK(waiting.get() == FrameStream::Step::kStopped);
-  CHECK(Clock::now() - stop_at < std::chrono::milliseconds(500));
   CHECK(s.Stopped());
   s.Want(Turned(5), 5);
   CHECK(s.Next(job) == FrameStream::Step::kStopped);
