@@ -9,6 +9,7 @@
 #include "app/commands.h"
 #include "app/precompute_shard.h"
 #include "app/render_args.h"
+#include "app/render_shard.h"
 #include "bases/list.h"
 #include "core/atomic_file.h"
 #include "core/log.h"
@@ -30,6 +31,17 @@ std::vector<std::string> WithOut(std::vector<std::string> command, const std::st
     else if (command[i].rfind("--out=", 0) == 0) command[i] = "--out=" + dir;
   }
   return command;
+}
+
+/// The command the shards were made by (its name first, ShardCommand), run with their
+/// assembled transport: precompute's files, or render's frames. Returns its exit code.
+int RunMerged(std::vector<std::string> command, const ShardedTransport& sharded) {
+  const std::string name = command.empty() ? std::string() : command.front();
+  if (!command.empty()) command.erase(command.begin());
+  if (name == "precompute") return Precompute(command, sharded);
+  if (name == "render") return Render(command, sharded);
+  throw Error("the shards were made by '" + name + "', which prt merge does not run (expected prt precompute or "
+              "prt render's shards)");
 }
 
 /// Removes the shard files of `cache_name` in `dir`, and the temporary files killed tasks left
@@ -108,7 +120,7 @@ int MergeBounces(const std::string& dir, const std::string& cache_name, bool kee
   Summary("merge: bounces: " + merged.stop);
   std::vector<std::string> command = WithOut(merged.command, dir);
   if (quiet) command.push_back("--quiet");
-  const int status = Precompute(command, {&transport, merged.key, merged.shards});
+  const int status = RunMerged(command, {&transport, merged.key, merged.shards});
   if (status != 0) return status;
   // The chain goes on past an early end: the state stays, done, for its later stages.
   if (given >= 0 && given < merged.bounces) {
@@ -181,7 +193,7 @@ int RunMerge(const std::vector<std::string>& tokens) {
   ShardedTransport sharded{&shards.transport, shards.key, shards.count};
   std::vector<std::string> command = WithOut(shards.command, dir);
   if (quiet) command.push_back("--quiet");  // the shards' command has none (ShardCommand)
-  const int status = Precompute(command, sharded);
+  const int status = RunMerged(command, sharded);
   if (status == 0 && !keep) {
     RemoveShards(dir, basis->CacheName());
     Summary("merge: removed the " + std::to_string(shards.count) + " shard files (--keep-shards keeps them)");

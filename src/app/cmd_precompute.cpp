@@ -60,20 +60,8 @@ CommandSpec PrecomputeSpec() {
       o.help = "with --material phong:N,KS, also write DIR/transfer_matrices_cpca.bin: the transfer matrices "
                "compressed by clustered PCA into C clusters of a mean and K principal matrices (layout in "
                "docs/CLI.md); off: only transfer_matrices.bin";
-  output.options.push_back(
-      {"--shard", "I/N",
-       "compute only vertex block I of N (0-based; blocks of whole vertices, balanced by work) and write it as "
-       "DIR/transport.cache.shard-IIIII-of-NNNNN, for a farm job: prt merge DIR then writes what one run writes. "
-       "auto: I and N from a Slurm array task (SLURM_ARRAY_TASK_ID with SLURM_ARRAY_TASK_COUNT, or the array's "
-       "MIN and MAX); auto/N: N given, I from SLURM_ARRAY_TASK_ID or a Kubernetes Indexed Job's "
-       "JOB_COMPLETION_INDEX. Interreflection runs in stages, the tasks and the merge once for the direct pass and once "
-       "for each bounce (docs/CLI.md, \"A farm job\"); not with a glossy material yet",
-       "off: every vertex"});
-  output.options.push_back(
-      {"--bounce-stage", "K",
-       "with --shard and --transport interreflection: run stage K of the bounces (0 the direct pass, then each "
-       "bounce), as prt farm's chain does; a stage merged already is success with nothing to do",
-       "off: the stage after the last merged"});
+  for (const OptionSpec& o : ShardOptions("DIR/transport.cache.shard-IIIII-of-NNNNN", "writes what one run writes"))
+    output.options.push_back(o);
   output.options.push_back(QuietOption());
   output.options[0].help = "output folder, created if missing; one run at a time; after a successful run it holds "
                            "this run's files, and what an earlier precompute wrote there and this one did not is "
@@ -118,9 +106,7 @@ int Precompute(const std::vector<std::string>& tokens, const ShardedTransport& s
   Args args("precompute", tokens, PrecomputeSpec());
   const SceneOptions options = ReadSceneOptions(args);
   const auto out = args.String("--out");
-  const auto shard_option = args.String("--shard");
-  const std::optional<int> bounce_stage =
-      args.Has("--bounce-stage") ? std::optional<int>(args.Int("--bounce-stage", 0, 0, 1000)) : std::nullopt;
+  const std::optional<ShardTask> task = ReadShardTask(args, options);
   const std::string cache_option = args.String("--cache", "");
   const bool replace = args.Flag("--replace");
   CpcaOptions cpca_option;
@@ -139,25 +125,9 @@ int Precompute(const std::vector<std::string>& tokens, const ShardedTransport& s
   if (options.max_edge > 0.0)
     args.Fail("--max-edge: not with precompute (the course's transport.txt has three rows per face of the OBJ "
               "file, and split triangles are other faces; render and reference take it)");
-  if (bounce_stage && !shard_option)
-    args.Fail("--bounce-stage: only with --shard (a stage of a farm job's bounces)");
-  if (shard_option) {
-    if (options.transport == "interreflection" && options.material.glossy)
-      args.Fail("--shard: not with --transport interreflection and a glossy material yet (the glossy lobe's bounced "
-                "light is gathered in one pass after the bounces: run it on one machine)");
-    ShardId shard;
-    try {
-      shard = ParseShard(*shard_option);
-    } catch (const Error& e) {
-      args.Fail(e.what());
-    }
-    if (bounce_stage && options.transport != "interreflection")
-      args.Fail("--bounce-stage: only with --transport interreflection (its stages are the direct pass and each bounce)");
-    if (bounce_stage && *bounce_stage > options.bounces)
-      args.Fail("--bounce-stage " + std::to_string(*bounce_stage) + ": past the last stage, " +
-                std::to_string(options.bounces) + " (expected 0..--bounces)");
+  if (task) {
     if (check_only) return 0;
-    return RunPrecomputeShard(options, shard, *out, ShardCommand(tokens), bounce_stage);
+    return RunPrecomputeShard(options, task->shard, *out, ShardCommand("precompute", tokens), task->stage);
   }
   if (options.lmax != kCourseLmax)  // known from the options: said before any work
     Warn("lmax " + std::to_string(options.lmax) + ": these files will have " +

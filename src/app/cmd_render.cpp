@@ -1,4 +1,7 @@
 #include "app/commands.h"
+#include "app/frame_range.h"
+#include "app/precompute_shard.h"
+#include "app/render_shard.h"
 #include "app/pipeline.h"
 #include "app/render_look.h"
 #include "core/log.h"
@@ -17,6 +20,10 @@ SceneOptions RenderScene() {
 OptionGroup RenderGroup() {
   OptionGroup group = RenderOptionGroup(RenderJobOptions{}, AllRenderOptionNames());
   group.options.insert(group.options.begin(), LookOption());
+  group.options.push_back(FrameRangeOption());
+  for (const OptionSpec& o : ShardOptions("DIR/transport.cache.shard-IIIII-of-NNNNN (no frames)",
+                                          "renders as one run renders"))
+    group.options.push_back(o);
   return group;
 }
 
@@ -33,18 +40,27 @@ CommandSpec RenderSpec() {
           {SceneOptionGroup(RenderScene(), AllSceneOptionNames()), RenderGroup(), {"other options", {QuietOption()}}}};
 }
 
-int RunRender(const std::vector<std::string>& tokens) {
+int RunRender(const std::vector<std::string>& tokens) { return Render(tokens, {}); }
+
+int Render(const std::vector<std::string>& tokens, const ShardedTransport& sharded, bool check_only) {
   Args args("render", tokens, RenderSpec());
   // The look first: it gives the defaults that the options on the command line override.
   const Look look = ReadLook(args);
   const SceneOptions scene = ReadSceneOptions(args, LookSceneDefaults(look, RenderScene()));
   RenderJobOptions defaults;
   defaults.draw = LookRenderDefaults(look, defaults.draw);
-  const RenderJobOptions render = CompleteRenderOptions(args, ReadRenderOptions(args, defaults), scene);
+  RenderJobOptions render = CompleteRenderOptions(args, ReadRenderOptions(args, defaults), scene);
+  const std::string range_line = ReadFrameRange(args, render);
+  const std::optional<ShardTask> task = ReadShardTask(args, scene);
   const std::string look_line = CheckLook(args, look, scene);
   args.Finish();
+  if (task && render.draw.view == View::kLight && render.vertex_radiance.empty())
+    args.Fail("--shard: --view light computes no transport to split (expected another --view, or no --shard)");
+  if (check_only) return 0;
   if (!look_line.empty()) Summary(look_line);
-  RenderJob(scene, render);
+  if (task) return RunRenderShard(scene, render, task->shard, ShardCommand("render", tokens), task->stage);
+  if (!range_line.empty()) Summary(range_line);
+  RenderJob(scene, render, sharded);
   return 0;
 }
 

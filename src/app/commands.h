@@ -25,6 +25,7 @@ int RunBasis(const std::vector<std::string>& tokens);
 int RunSampleFiles(const std::vector<std::string>& tokens);
 int RunMerge(const std::vector<std::string>& tokens);
 int RunFarm(const std::vector<std::string>& tokens);
+int RunVideo(const std::vector<std::string>& tokens);
 
 CommandSpec DemoSpec();
 CommandSpec RenderSpec();
@@ -38,5 +39,6 @@ CommandSpec BasisSpec();
 CommandSpec SampleFilesSpec();
 CommandSpec MergeSpec();
 CommandSpec FarmSpec();
+CommandSpec VideoCommandSpec();
 
 }  // namespace prt

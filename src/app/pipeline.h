@@ -23,6 +23,7 @@
 #include "core/output_folder.h"
 #include "env/environment.h"
 #include "geometry/mesh.h"
+#include "precompute/transport_types.h"
 #include "raster/camera.h"
 #include "render/render_frames.h"
 #include "sh/coeffs.h"
@@ -65,9 +66,26 @@ void ApplySceneEdits(Mesh& mesh, const SceneOptions& options);
 /// --replace replaced as NAME.orig, and says so on the run summary.
 void FinishOutputs(OutputFolder& folder);
 
+/// What the main job loads before its transport: the mesh and its camera, whether a glossy
+/// orbit needs transfer matrices (their memory checked), the environment, and the transport's
+/// options with the vertices the frames show (`seen`).
+struct RenderInputs {
+  Mesh mesh;
+  Camera camera;
+  bool matrices = false;
+  TransportOptions transport_options;
+  std::shared_ptr<const Environment> env;
+  bool transport = true;  ///< false: the light view, which computes no transport
+};
+
+/// The main job's inputs (above), each stage said on the run summary; with a `folder`, the
+/// files read are recorded as inputs of its run.
+RenderInputs LoadRenderInputs(const SceneOptions& scene, const RenderJobOptions& job, OutputFolder* folder);
+
 /// The whole main job: the output folder (job.out), mesh, camera, light, transport, frames,
 /// then the folder finished; each stage reports on the run summary, and frame files there that
-/// prt has no record of are counted. Used by `render` and `demo`.
-void RenderJob(const SceneOptions& scene, const RenderJobOptions& job);
+/// prt has no record of are counted. Used by `render` and `demo`. With `sharded` (prt merge of
+/// a render's shards), the transport is the shards'.
+void RenderJob(const SceneOptions& scene, const RenderJobOptions& job, const ShardedTransport& sharded = {});
 
 }  // namespace prt

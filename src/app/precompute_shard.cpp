@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "app/pipeline.h"
+#include "bases/list.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/output_folder.h"
@@ -22,8 +23,8 @@ namespace prt {
 
 namespace fs = std::filesystem;
 
-std::vector<std::string> ShardCommand(const std::vector<std::string>& tokens) {
-  std::vector<std::string> kept;
+std::vector<std::string> ShardCommand(const std::string& name, const std::vector<std::string>& tokens) {
+  std::vector<std::string> kept = {name};
   for (std::size_t i = 0; i < tokens.size(); ++i) {
     const std::string& t = tokens[i];
     // A path made absolute: the merge may run in another folder, and `./scene.obj` is the task's
@@ -49,11 +50,48 @@ std::vector<std::string> ShardCommand(const std::vector<std::string>& tokens) {
   return kept;
 }
 
-namespace {
+std::vector<OptionSpec> ShardOptions(const std::string& file, const std::string& merged) {
+  return {{"--shard", "I/N",
+           "compute only vertex block I of N (0-based; blocks of whole vertices, balanced by work) and write it as " +
+               file + ", for a farm job: prt merge DIR then " + merged +
+               ". auto: I and N from a Slurm array task (SLURM_ARRAY_TASK_ID with SLURM_ARRAY_TASK_COUNT, or the "
+               "array's MIN and MAX); auto/N: N given, I from SLURM_ARRAY_TASK_ID or a Kubernetes Indexed Job's "
+               "JOB_COMPLETION_INDEX. Interreflection runs in stages, the tasks and the merge once for the direct pass "
+               "and once for each bounce (docs/CLI.md, \"A farm job\"); not with a glossy material yet",
+           "off: every vertex"},
+          {"--bounce-stage", "K",
+           "with --shard and --transport interreflection: run stage K of the bounces (0 the direct pass, then each "
+           "bounce), as prt farm's chain does; a stage merged already is success with nothing to do",
+           "off: the stage after the last merged"}};
+}
 
-/// Interreflection's next stage for the block of `shard` (precompute/bounce_stages.h): the
-/// direct pass with its hits when no merge has assembled one yet, else the bounce after the
-/// last one assembled (the bounce state in `out`), nothing once the bounces have ended.
+std::optional<ShardTask> ReadShardTask(Args& args, const SceneOptions& options) {
+  const auto shard_option = args.String("--shard");
+  const std::optional<int> bounce_stage =
+      args.Has("--bounce-stage") ? std::optional<int>(args.Int("--bounce-stage", 0, 0, 1000)) : std::nullopt;
+  if (bounce_stage && !shard_option) args.Fail("--bounce-stage: only with --shard (a stage of a farm job's bounces)");
+  if (!shard_option) return std::nullopt;
+  if (!options.basis->Traits().shards)
+    args.Fail("--shard: --basis " + options.basis->Name() + "'s transport does not split into vertex blocks yet " +
+              "(expected --basis " + DefaultBasis()->Name() + ", or the run on one machine)");
+  if (options.transport == "interreflection" && options.material.glossy)
+    args.Fail("--shard: not with --transport interreflection and a glossy material yet (the glossy lobe's bounced "
+              "light is gathered in one pass after the bounces: run it on one machine)");
+  ShardTask task;
+  try {
+    task.shard = ParseShard(*shard_option);
+  } catch (const Error& e) {
+    args.Fail(e.what());
+  }
+  if (bounce_stage && options.transport != "interreflection")
+    args.Fail("--bounce-stage: only with --transport interreflection (its stages are the direct pass and each bounce)");
+  if (bounce_stage && *bounce_stage > options.bounces)
+    args.Fail("--bounce-stage " + std::to_string(*bounce_stage) + ": past the last stage, " +
+              std::to_string(options.bounces) + " (expected 0..--bounces)");
+  task.stage = bounce_stage;
+  return task;
+}
+
 int RunBounceStage(const Mesh& mesh, const TransportOptions& topts, const std::string& cache, const ShardId& shard,
                    const std::string& out, const std::vector<std::string>& command, std::optional<int> given) {
   const std::uint64_t key = TransportKey(mesh, topts);
@@ -149,8 +187,6 @@ int RunBounceStage(const Mesh& mesh, const TransportOptions& topts, const std::s
           " assembles the stage once all " + std::to_string(shard.count) + " are written; then this task again)");
   return 0;
 }
-
-}  // namespace
 
 int RunPrecomputeShard(const SceneOptions& options, const ShardId& shard, const std::string& out,
                        const std::vector<std::string>& command, std::optional<int> stage) {

@@ -124,7 +124,8 @@ void ReadSize(Args& args, RenderOptions& o) {
   const auto size = args.String("--size");
   if (!size) return;
   const auto x = size->find_first_of("xX");
-  const auto w = ParseNumber(size->substr(0, x)), h = x == std::string::npos ? std::nullopt : ParseNumber(size->substr(x + 1));
+  // No separator: the height is read from "", which is no number.
+  const auto w = ParseNumber(size->substr(0, x)), h = ParseNumber(x == std::string::npos ? "" : size->substr(x + 1));
   const std::string expected =
       " (expected WxH, each from " + std::to_string(kMinFrameSide) + " to " + std::to_string(kMaxFrameSide) + ")";
   if (!w || !h || std::floor(*w) != *w || std::floor(*h) != *h) args.Fail("--size: '" + *size + "' is not a size" + expected);

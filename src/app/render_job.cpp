@@ -44,8 +44,11 @@ void NoteForeignFrames(OutputFolder& folder) {
 /// What a render writes into its folder, known before any work: the frames, and the video and
 /// --vertex-radiance file when they lie in it.
 OutputPlan RenderPlan(const RenderJobOptions& r) {
-  OutputPlan plan{"render", {}, r.replace};
-  for (int i = 0; i < r.draw.frames; ++i) plan.names.push_back(FrameName(i, r.draw.frames));
+  // A --frame-range run writes a part of the folder: its frames, beside the other ranges.
+  const bool range = r.draw.first_frame > 0 || r.draw.last_frame >= 0;
+  OutputPlan plan{"render", {}, r.replace, range};
+  const int last = r.draw.last_frame < 0 ? r.draw.frames - 1 : r.draw.last_frame;
+  for (int i = r.draw.first_frame; i <= last; ++i) plan.names.push_back(FrameName(i, r.draw.frames));
   for (const std::string& file : {r.video.path, r.vertex_radiance})
     if (!file.empty() && LiesIn(file, r.out)) plan.names.push_back(std::filesystem::path(file).filename().string());
   return plan;
@@ -105,7 +108,38 @@ std::string RingingNote(std::size_t pixels, const ShRgb& light, const SceneOptio
 
 }  // namespace
 
-void RenderJob(const SceneOptions& scene, const RenderJobOptions& job) {
+RenderInputs LoadRenderInputs(const SceneOptions& scene, const RenderJobOptions& job, OutputFolder* folder) {
+  const RenderOptions& render = job.draw;
+  RenderInputs in;
+  // Mesh and camera first: a camera that cannot see is refused before any light is loaded.
+  in.mesh = LoadSceneMesh(scene, folder);
+  in.camera = SceneCamera(in.mesh, render);
+
+  // A glossy surface seen from a moving camera needs transfer matrices: their memory is
+  // checked before the light is loaded.
+  // (Views that show no lobe do not need them.)
+  in.matrices =
+      scene.material.glossy && render.orbit != 0.0 && (render.view == View::kRadiance || render.view == View::kGlossy);
+  in.transport_options = TransportOptionsOf(scene);
+  scene.basis->CheckMemory(in.mesh, in.transport_options, in.matrices);
+
+  in.env = LoadSceneEnvironment(scene, folder);
+  // The light view draws the light alone: no transport, unless --vertex-radiance writes the
+  // vertices' radiance.
+  in.transport = render.view != View::kLight || !job.vertex_radiance.empty();
+  // The vertices the frames show take --samples directions, the others --hidden-samples; with
+  // --vertex-radiance, which writes every vertex, all of them are computed as seen ones.
+  const bool fewer = scene.transport != "unshadowed" && scene.hidden_samples != scene.samples;
+  if (in.transport && fewer && job.vertex_radiance.empty())
+    in.transport_options.seen = SeenVertices(in.mesh, in.camera, render);
+  if (fewer && !job.vertex_radiance.empty())
+    Summary("vertex radiance: every vertex computed as one the camera sees (--hidden-samples " +
+            std::to_string(scene.hidden_samples) + " not used): --vertex-radiance writes them all, and none may depend "
+            "on the camera");
+  return in;
+}
+
+void RenderJob(const SceneOptions& scene, const RenderJobOptions& job, const ShardedTransport& sharded) {
   const RenderOptions& render = job.draw;  // all that the frame loop reads
   OutputFolder folder(job.out, RenderPlan(job));
   const CachePlan cache = PlanCache(job.cache, &folder, scene.basis->CacheName(), Bases());
@@ -113,36 +147,16 @@ void RenderJob(const SceneOptions& scene, const RenderJobOptions& job) {
   for (const Basis* other : Bases())
     if (other != scene.basis) folder.OutputInPlace(other->CacheName());
 
-  // Mesh and camera first: a camera that cannot see is refused before any light is loaded.
-  const Mesh mesh = LoadSceneMesh(scene, &folder);
-  const Camera camera = SceneCamera(mesh, render);
-
-  // A glossy surface seen from a moving camera needs transfer matrices: their memory is
-  // checked before the light is loaded.
-  // (Views that show no lobe do not need them.)
-  const bool matrices =
-      scene.material.glossy && render.orbit != 0.0 && (render.view == View::kRadiance || render.view == View::kGlossy);
-  TransportOptions topts = TransportOptionsOf(scene);
-  scene.basis->CheckMemory(mesh, topts, matrices);
-
-  const auto env = LoadSceneEnvironment(scene, &folder);
+  const RenderInputs in = LoadRenderInputs(scene, job, &folder);
+  const Mesh& mesh = in.mesh;
+  const Camera& camera = in.camera;
+  const bool matrices = in.matrices, transport = in.transport;
+  const auto& env = in.env;
   const ShRgb light = ComputeLight(*env, scene, render.view);
-  // The light view draws the light alone: no transport, unless --vertex-radiance writes the
-  // vertices' radiance.
-  const bool transport = render.view != View::kLight || !job.vertex_radiance.empty();
-  // The vertices the frames show take --samples directions, the others --hidden-samples; with
-  // --vertex-radiance, which writes every vertex, all of them are computed as seen ones.
-  std::vector<std::uint8_t> seen;
-  const bool fewer = scene.transport != "unshadowed" && scene.hidden_samples != scene.samples;
-  if (transport && fewer && job.vertex_radiance.empty()) seen = SeenVertices(mesh, camera, render);
-  if (fewer && !job.vertex_radiance.empty())
-    Summary("vertex radiance: every vertex computed as one the camera sees (--hidden-samples " +
-            std::to_string(scene.hidden_samples) + " not used): --vertex-radiance writes them all, and none may depend "
-            "on the camera");
   // The transport in its basis (basis/basis.h), and the light each frame turns for it.
-  topts.seen = seen;
-  const BasisInputs inputs{mesh,    topts, scene.samples_from_rule, scene.lmax_why, scene.own(), render.axis,
-                           job.cpca, *env, &camera,                  cache,          matrices};
+  const BasisInputs inputs{mesh,     in.transport_options, scene.samples_from_rule, scene.lmax_why, scene.own(),
+                           render.axis, job.cpca,          *env,                    &camera,        cache,
+                           matrices,    sharded};
   if (!transport)
     Summary("transport: none computed (--view light draws the light as the basis keeps it, not the mesh's transport)");
   const std::unique_ptr<PreparedBasis> basis = transport ? scene.basis->Prepare(inputs) : scene.basis->PrepareLight(inputs);
@@ -158,7 +172,10 @@ void RenderJob(const SceneOptions& scene, const RenderJobOptions& job) {
   if (stats.legend_left_out)
     Summary("legend: left out, a " + std::to_string(render.width) + "x" + std::to_string(render.height) +
             " frame is too small to hold it readably");
-  if (!render.exposure && render.view != View::kTransport) ReportAutoExposure(stats.exposure, "frame 0's mesh pixels");
+  if (!render.exposure && render.view != View::kTransport)
+    ReportAutoExposure(stats.exposure, render.first_frame > 0 ? "frame 0's mesh pixels (drawn, not written: the range "
+                                                                "starts later)"
+                                                              : "frame 0's mesh pixels");
   Summary("frames: " + std::to_string(stats.frames) + " of " + std::to_string(render.width) + "x" +
           std::to_string(render.height) + " in " + folder.dir() + "/" +
           Formatted(" [draw %.3f s, waiting for PNG encoding %.3f s]", stats.draw_seconds, stats.encode_seconds));
@@ -170,7 +187,8 @@ void RenderJob(const SceneOptions& scene, const RenderJobOptions& job) {
   // The files outside the folder last: a run that failed before here left the earlier ones.
   video.Commit();
   if (radiance_outside) radiance_outside->Commit();
-  NoteForeignFrames(folder);
+  // The other ranges' frames are not foreign to a range: they may be listed only once theirs end.
+  if (!RenderPlan(job).part) NoteForeignFrames(folder);
 }
 
 }  // namespace prt

@@ -42,6 +42,8 @@ struct BasisTraits {
   bool glossy = false;            ///< materials with a lobe (--material phong:N,KS)
   bool coefficient_view = false;  ///< its coefficients per vertex are SH transfer: --view transport, --look course
   bool windowed_light = false;    ///< its frames are lit by the windowed SH light, whose ringing the run reports
+  /// Its transport splits into blocks of vertices (ComputeBlock): `--shard I/N` of a farm job.
+  bool shards = false;
   /// Its frames read only the light's SH bands: a lower lmax than the transport's is shown by
   /// zeroing the bands above it (prt view's lmax).
   bool light_bands = false;
@@ -73,6 +75,9 @@ struct BasisInputs {
   const Camera* camera;           ///< the fixed view of a glossy material (nullptr: none)
   const CachePlan& cache;
   bool matrices;                  ///< a glossy orbit: transfer matrices wanted
+  /// A farm job's transport assembled from its shards (prt merge), taken in place of computing
+  /// it; none: computed (or read from the cache).
+  ShardedTransport sharded = {};
 };
 
 /// A basis made ready for the frames: it owns its transport (no lifetime by convention), and
@@ -129,6 +134,13 @@ class Basis {
   virtual void CheckMemory(const Mesh&, const TransportOptions&, bool /*matrices*/) const {}
   /// Computes the transport (from the cache when it can, said on the run summary).
   virtual std::unique_ptr<PreparedBasis> Prepare(const BasisInputs& inputs) const = 0;
+  /// `--shard`: the rows of vertex block `block` of the transport Prepare computes for `inputs`
+  /// (the others 0, none read from or written to a cache), said on the run summary, and in
+  /// `key` the whole run's cache key, which leaves the block out. Only where Traits().shards.
+  virtual Transport ComputeBlock(const BasisInputs& /*inputs*/, const VertexBlock& /*block*/,
+                                 std::uint64_t& /*key*/) const {
+    throw std::logic_error("ComputeBlock of a basis whose transport does not split into blocks");
+  }
   /// The light alone, for the light view, which draws the light as the basis keeps it and no
   /// transport (FrameLight::Kept; nothing else of its frame lights may be called).
   virtual std::unique_ptr<PreparedBasis> PrepareLight(const BasisInputs& inputs) const = 0;

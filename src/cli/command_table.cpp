@@ -12,6 +12,8 @@ const std::vector<Command>& Commands() {
       {"precompute", "write light.txt and transport.txt in the course's format", PrecomputeSpec, RunPrecompute},
       {"farm", "run a command as a Slurm job of shards and a merge", FarmSpec, RunFarm},
       {"merge", "assemble a farm job's shards into what one precompute writes", MergeSpec, RunMerge},
+      {"video", "assemble the frames a render wrote (or its --frame-range tasks) into one video", VideoCommandSpec,
+       RunVideo},
       {"light", "print an environment's SH coefficients", LightSpec, RunLight},
       {"view", "serve a page that relights the scene live in a browser", ViewSpec, RunView},
       {"reference", "ground truth without SH truncation", ReferenceSpec, RunReference},

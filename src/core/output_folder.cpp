@@ -3,6 +3,8 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
+#include <optional>
 #include <filesystem>
 #include <sstream>
 
@@ -106,6 +108,42 @@ std::map<std::string, std::string> ReadList(const std::string& path) {
   return entries;
 }
 
+/// A part waits this long at most for the lock the last part holds alone while it ends.
+constexpr int kPartLockTries = 100;
+constexpr useconds_t kPartLockWaitUs = 20000;
+
+/// Takes `fd`'s flock in `mode` without waiting. A part (LOCK_SH) tries again for a moment: the
+/// last part of a folder to end holds the lock alone while it removes the lock files.
+bool TryLock(int fd, int mode) {
+  for (int tries = 0;; ++tries) {
+    if (::flock(fd, mode | LOCK_NB) == 0) return true;
+    if (mode != LOCK_SH || tries == kPartLockTries) return false;
+    ::usleep(kPartLockWaitUs);
+  }
+}
+
+/// The list's own lock, `.prt-list-lock`, held while a part reads, adds to and writes the list
+/// (and moves its outputs into place): waited for, as the parts' list updates are short.
+class ListLock {
+ public:
+  explicit ListLock(const std::string& dir) : path_(dir + "/" + OutputFolder::kListLockName) {
+    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd_ < 0) throw Error(dir + ": cannot use the output folder (" + WriteProblem(path_, errno) + ")");
+    if (::flock(fd_, LOCK_EX) != 0) {
+      const int error = errno;
+      ::close(fd_);
+      throw Error(path_ + ": cannot lock (" + std::string(std::strerror(error)) + ")");
+    }
+  }
+  ~ListLock() { ::close(fd_); }
+  ListLock(const ListLock&) = delete;
+  ListLock& operator=(const ListLock&) = delete;
+
+ private:
+  std::string path_;
+  int fd_ = -1;
+};
+
 }  // namespace
 
 OutputFolder::OutputFolder(std::string dir, OutputPlan plan) : dir_(std::move(dir)), plan_(std::move(plan)) {
@@ -118,14 +156,15 @@ OutputFolder::OutputFolder(std::string dir, OutputPlan plan) : dir_(std::move(di
     if (lock_fd_ < 0 && errno == ELOOP)
       throw Error(lock + ": is a symbolic link (expected prt's lock file, or none: remove it)");
     if (lock_fd_ < 0) throw Error(dir_ + ": cannot use the output folder (" + WriteProblem(lock, errno) + ")");
-    if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+    if (!TryLock(lock_fd_, plan_.part ? LOCK_SH : LOCK_EX)) {
       char holder[32] = {0};
       const ssize_t n = ::pread(lock_fd_, holder, sizeof holder - 1, 0);
       ::close(lock_fd_);
       lock_fd_ = -1;
       throw FolderBusy(dir_ + ": in use by another prt run" + (n > 0 ? " (process " + std::string(holder) + ")" : "") +
-                       " (expected one run per output folder: wait for it to finish, or choose another --out; exit "
-                       "code 75 means try again)");
+                       (plan_.part ? " that writes the whole folder" : "") +
+                       " (expected one run per output folder, or runs that each write a part of it, such as "
+                       "--frame-range: wait for it to finish, or choose another --out; exit code 75 means try again)");
     }
     struct stat held {}, named {};
     if (::fstat(lock_fd_, &held) == 0 && ::stat(lock.c_str(), &named) == 0 && held.st_dev == named.st_dev &&
@@ -134,21 +173,39 @@ OutputFolder::OutputFolder(std::string dir, OutputPlan plan) : dir_(std::move(di
     ::close(lock_fd_);
     lock_fd_ = -1;
   }
-  lock_cleanup_ = CleanupOnSignal(lock, CleanupKind::kFile);
-  const std::string pid = std::to_string(::getpid());
-  if (::ftruncate(lock_fd_, 0) == 0 && ::pwrite(lock_fd_, pid.data(), pid.size(), 0) < 0) {
-    // The holder's pid only improves the message of a refused run; nothing depends on it.
+  // A part shares the lock file: the last part to end removes it (Abandon), never a signal.
+  if (!plan_.part) {
+    lock_cleanup_ = CleanupOnSignal(lock, CleanupKind::kFile);
+    const std::string pid = std::to_string(::getpid());
+    if (::ftruncate(lock_fd_, 0) == 0 && ::pwrite(lock_fd_, pid.data(), pid.size(), 0) < 0) {
+      // The holder's pid only improves the message of a refused run; nothing depends on it.
+    }
   }
   try {
     earlier_ = ReadList(dir_ + "/" + kListName);
     Plan(plan_.names);
-    // A staging folder here is a killed run's (this run holds the lock): its files never counted.
     std::error_code ec;
-    staging_cleanup_ = CleanupOnSignal(staging(), CleanupKind::kTree);
-    fs::remove_all(staging(), ec);
-    if (!fs::create_directory(staging(), ec) && !fs::is_directory(staging()))
-      throw Error(dir_ + ": cannot use the output folder (" +
-                  WriteProblem(staging() + "/x", ec.value() ? ec.value() : EIO) + ")");
+    if (plan_.part) {
+      // A staging folder of its own, beside the other parts' (on a shared file system too).
+      std::string name = dir_ + "/" + kStagingName + ".XXXXXX";
+      if (::mkdtemp(name.data()) == nullptr)
+        throw Error(dir_ + ": cannot use the output folder (" + WriteProblem(name, errno) + ")");
+      staging_ = name;
+      staging_cleanup_ = CleanupOnSignal(staging_, CleanupKind::kTree);
+    } else {
+      // A staging folder here is a killed run's (this run holds the lock): its files never
+      // counted. So are the parts' staging folders: no part holds the folder now.
+      staging_ = dir_ + "/" + kStagingName;
+      staging_cleanup_ = CleanupOnSignal(staging_, CleanupKind::kTree);
+      for (const auto& entry : fs::directory_iterator(dir_, ec)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind(std::string(kStagingName) + ".", 0) == 0) fs::remove_all(entry.path(), ec);
+      }
+      fs::remove_all(staging_, ec);
+      if (!fs::create_directory(staging_, ec) && !fs::is_directory(staging_))
+        throw Error(dir_ + ": cannot use the output folder (" +
+                    WriteProblem(staging_ + "/x", ec.value() ? ec.value() : EIO) + ")");
+    }
   } catch (...) {
     Abandon();
     throw;
@@ -160,34 +217,50 @@ OutputFolder::~OutputFolder() { Abandon(); }
 void OutputFolder::Abandon() {
   if (lock_fd_ < 0) return;
   std::error_code ec;
-  fs::remove_all(staging(), ec);  // a failed run's staged outputs, never moved into place
+  if (!staging_.empty()) fs::remove_all(staging_, ec);  // a failed run's staged outputs, never moved into place
   staging_cleanup_.Release();
   if (!finished_) {
     // Files written in place are valid on their own: listed, so that the next run knows them.
-    std::map<std::string, std::string> all = earlier_;
-    bool added = false;
-    for (const std::string& name : Written()) {
-      if (earlier_.count(name) && earlier_.at(name) == plan_.command) continue;
-      all[name] = plan_.command;
-      added = true;
-    }
     try {
+      std::optional<ListLock> list_lock;
+      if (plan_.part) list_lock.emplace(dir_);
+      std::map<std::string, std::string> all = plan_.part ? ReadList(dir_ + "/" + kListName) : earlier_;
+      bool added = false;
+      for (const std::string& name : Written()) {
+        if (all.count(name) && all.at(name) == plan_.command) continue;
+        all[name] = plan_.command;
+        added = true;
+      }
       if (added) WriteList(all);
     } catch (const std::exception&) {
       // The run is failing already; its error is the one to report.
     }
   }
-  // Unlinked before it is released: a run that opened the old file meanwhile finds it locked
-  // and is refused, or, locking it once released, sees that it is no longer the folder's lock
-  // and takes a fresh one; one that starts later creates a fresh lock.
-  ::unlink((dir_ + "/" + kLockName).c_str());
+  if (plan_.part) {
+    // The last part to end removes the lock files: holding the list's lock, it takes the
+    // folder's alone, which it gets only when no other run holds it.
+    try {
+      const ListLock list_lock(dir_);
+      if (::flock(lock_fd_, LOCK_EX | LOCK_NB) == 0) {
+        ::unlink((dir_ + "/" + kLockName).c_str());
+        ::unlink((dir_ + "/" + kListLockName).c_str());
+      }
+    } catch (const std::exception&) {
+      // The lock files stay: the next run uses them.
+    }
+  } else {
+    // Unlinked before it is released: a run that opened the old file meanwhile finds it locked
+    // and is refused, or, locking it once released, sees that it is no longer the folder's lock
+    // and takes a fresh one; one that starts later creates a fresh lock. The parts' list lock
+    // is no part's now.
+    ::unlink((dir_ + "/" + kListLockName).c_str());
+    ::unlink((dir_ + "/" + kLockName).c_str());
+  }
   lock_cleanup_.Release();
   ::close(lock_fd_);
   lock_fd_ = -1;
   // created_ removes the folders this run made, if it left them empty (a failed run).
 }
-
-std::string OutputFolder::staging() const { return dir_ + "/" + kStagingName; }
 
 bool OutputFolder::IsForeignLocked(const std::string& name) const {
   // A staged output is not in the folder until it is moved: what is there under its name is
@@ -227,7 +300,7 @@ std::string OutputFolder::Output(const std::string& name) {
   std::lock_guard<std::mutex> lock(mutex_);
   CheckLocked(name);
   staged_.insert(name);
-  return staging() + "/" + name;
+  return staging_ + "/" + name;
 }
 
 std::string OutputFolder::OutputInPlace(const std::string& name) {
@@ -286,13 +359,19 @@ OutputFolder::Finished OutputFolder::Finish() {
   // Not cut in half by a signal: its cleanup waits until the outputs are in place and listed.
   const SignalCleanupHold hold;
   std::lock_guard<std::mutex> lock(mutex_);
+  // A part: the other parts' outputs listed since this run began are theirs, not foreign.
+  std::optional<ListLock> list_lock;
+  if (plan_.part) {
+    list_lock.emplace(dir_);
+    earlier_ = ReadList(dir_ + "/" + kListName);
+  }
   Finished result;
   std::error_code ec;
   // Every staged output checked before any is moved: a file that appeared during the run and
   // that prt did not write stops the run here, with nothing replaced.
   std::vector<std::string> to_move;
   for (const auto& name : staged_) {
-    if (!fs::exists(fs::symlink_status(staging() + "/" + name, ec))) continue;  // named, then never written
+    if (!fs::exists(fs::symlink_status(staging_ + "/" + name, ec))) continue;  // named, then never written
     CheckLocked(name);
     to_move.push_back(name);
   }
@@ -300,7 +379,7 @@ OutputFolder::Finished OutputFolder::Finish() {
   // becomes NAME.orig, never over an existing file, and comes back if the move fails. Each
   // output moved is listed from then on, even if a later one fails (the destructor lists it).
   for (const auto& name : to_move) {
-    const std::string from = staging() + "/" + name, to = dir_ + "/" + name, orig = to + kOrigSuffix;
+    const std::string from = staging_ + "/" + name, to = dir_ + "/" + name, orig = to + kOrigSuffix;
     const bool keep = replaced_.count(name) && IsForeignLocked(name);
     if (keep && ::renameat2(AT_FDCWD, to.c_str(), AT_FDCWD, orig.c_str(), RENAME_NOREPLACE) != 0)
       throw Error(to + ": cannot keep it as " + name + kOrigSuffix + " (" +
@@ -321,8 +400,9 @@ OutputFolder::Finished OutputFolder::Finish() {
   std::vector<std::string> leftovers;
   for (const auto& [name, command] : earlier_) {
     if (written.count(name) || !fs::exists(fs::symlink_status(fs::path(dir_) / name, ec))) continue;  // listed below, or gone
-    if (before_.count(name) || command != plan_.command) {
-      list[name] = command;  // not rewritten, or another command's (an unknown command's) deliverable: kept
+    if (before_.count(name) || command != plan_.command || plan_.part) {
+      // Not rewritten, another command's (an unknown command's) deliverable, or the other parts': kept.
+      list[name] = command;
       continue;
     }
     if (IsInput(name)) continue;  // read by this run: kept, and no longer listed as prt's
@@ -337,8 +417,9 @@ OutputFolder::Finished OutputFolder::Finish() {
     if (fs::is_regular_file(fs::symlink_status(p, ec)) && fs::remove(p, ec)) result.removed.push_back(name);
   }
   // Temporary files of prt runs that were killed mid-write: removed once their process is gone.
-  // This run holds the folder, so no live run of prt can be writing them here.
-  for (const std::string& name : AtomicFile::RemoveStaleIn(dir_)) result.removed.push_back(name);
+  // This run holds the folder, so no live run of prt can be writing them here (a part does not).
+  if (!plan_.part)
+    for (const std::string& name : AtomicFile::RemoveStaleIn(dir_)) result.removed.push_back(name);
   return result;
 }
 

@@ -26,6 +26,17 @@
 ///   files other commands wrote (precompute's light.txt beside render's frames) are kept and stay
 ///   listed; no file or folder this run reads is ever removed (KeepInput).
 ///
+/// - Parts of one folder at once. A run that writes only a part of its command's outputs
+///   (OutputPlan::part: `render --frame-range`'s frames, `prt video`'s video, a farm's tasks)
+///   shares the lock with the other parts: any number run at once, on one machine or many over
+///   a shared file system, while a whole run is refused (FolderBusy) as long as one part holds
+///   the folder, and a part as long as a whole run does. Each part stages in a staging folder of
+///   its own (`.prt-staging.XXXXXX`), moves its outputs into place and adds them to the list
+///   under the list's own short lock (`.prt-list-lock`), and removes nothing an earlier run
+///   wrote. Two parts writing the same file write the same bytes, each by a rename: harmless.
+///   The last part to end removes the lock files; a whole run removes the staging folders that
+///   killed parts left.
+///
 /// The commands name every file they write through Output() or OutputInPlace() before writing
 /// it, and name them all in the plan beforehand where they know them, so that a refusal comes
 /// before any work.
@@ -119,6 +130,9 @@ struct OutputPlan {
   /// --replace: a file prt did not write is replaced, and kept as NAME.orig, instead of
   /// refusing the run.
   bool replace = false;
+  /// A part of the command's outputs, written beside other parts (see "Parts of one folder at
+  /// once" above): the lock shared, a staging folder of its own, nothing removed.
+  bool part = false;
 };
 
 class OutputFolder {
@@ -178,6 +192,8 @@ class OutputFolder {
   static constexpr const char* kLockName = ".prt-lock";
   static constexpr const char* kListName = ".prt-outputs";
   static constexpr const char* kStagingName = ".prt-staging";
+  /// The list's own lock, which parts hold while they add to it.
+  static constexpr const char* kListLockName = ".prt-list-lock";
   /// What a replaced file prt did not write is renamed to: NAME + kOrigSuffix.
   static constexpr const char* kOrigSuffix = ".orig";
 
@@ -190,9 +206,9 @@ class OutputFolder {
   bool IsForeignLocked(const std::string& name) const;
   bool IsInput(const std::string& name) const;
   void Abandon();
-  std::string staging() const;
 
   std::string dir_;
+  std::string staging_;  ///< where Output() stages: `.prt-staging`, or a part's own
   OutputPlan plan_;
   CreatedFolders created_;
   int lock_fd_ = -1;

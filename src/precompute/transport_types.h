@@ -123,4 +123,12 @@ struct TransportReport {
 /// coloured albedo (bounces differ per channel), else 1.
 int TransportChannels(const Mesh& mesh, TransportMode mode);
 
+/// The transport of a farm job, assembled from its shards (farm/assemble_shards.h), which a
+/// basis takes in place of computing it (basis/basis.h, BasisInputs).
+struct ShardedTransport {
+  const Transport* transport = nullptr;
+  std::uint64_t key = 0;  ///< the cache key the shards were made with
+  int shards = 0;
+};
+
 }  // namespace prt

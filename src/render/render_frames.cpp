@@ -206,7 +206,6 @@ ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, FrameLight& light
 FrameStats RenderFrames(const Mesh& mesh, FrameLight& light, const Environment& env, const Camera& camera,
                         const RenderOptions& o, OutputFolder& folder, VideoWriter* video) {
   FrameStats stats;
-  stats.frames = o.frames;
   Rasterizer rasterizer;
   const bool transport_view = o.view == View::kTransport;
   const double view_scale = transport_view ? TransportViewScale(light, mesh.vertex_count(), o.transport_index) : 0.0;
@@ -220,11 +219,21 @@ FrameStats RenderFrames(const Mesh& mesh, FrameLight& light, const Environment& 
   FrameWriter writer(ThreadCount(), video);
   FrameDrawer drawer;
   const Bounds3 bounds = MeshBounds(mesh);
-  Progress progress("rendering", static_cast<std::size_t>(o.frames));
-  for (int i = 0; i < o.frames; ++i) {
+  // The frames written: all, or --frame-range's. Frame 0 measures the exposure first, drawn and
+  // not written when the range starts later.
+  const int first = o.first_frame, last = o.last_frame < 0 ? o.frames - 1 : o.last_frame;
+  stats.frames = last - first + 1;
+  if (measure && first > 0) {
+    Image8 unwritten;
+    const RasterImage& frame0 = drawer.Draw(mesh, light, env, Orbit(camera, 0.0, bounds.lo, bounds.hi), o, FrameAngle(o, 0),
+                                            view_scale, nullptr, &unwritten);
+    stats.exposure = AutoExposureEv(frame0, o.tonemap);
+  }
+  Progress progress("rendering", static_cast<std::size_t>(stats.frames));
+  for (int i = first; i <= last; ++i) {
     // Each frame from its absolute angle: no accumulated drift.
     const double angle = FrameAngle(o, i);
-    Image8& image = writer.Next(i, &stats.encode_seconds);  // rethrows an earlier frame's write error
+    Image8& image = writer.Next(i - first, &stats.encode_seconds);  // rethrows an earlier frame's write error
     const auto t0 = std::chrono::steady_clock::now();
     const Camera seen_from = Orbit(camera, o.orbit * double(i) / double(o.frames), bounds.lo, bounds.hi);
     // Frame 0 measures the exposure on the linear frame first; the others are tone mapped band

@@ -89,9 +89,10 @@ ToneMapped ToneMapFrame(const RasterImage& frame, const RenderOptions& options, 
 ToneMapped DrawFrame(Rasterizer& rasterizer, const Mesh& mesh, FrameLight& light, const Environment& env,
                      const Camera& camera, const RenderOptions& options, double angle, double exposure_ev);
 
-/// Renders all frames into `folder`, each named through folder.Output(), and hands each to
-/// `video` (if given) once its PNG is encoded; the automatic exposure (raster/exposure.h) is
-/// measured on frame 0 and used for every frame.
+/// Renders the frames (all, or options.first_frame to last_frame) into `folder`, each named
+/// through folder.Output(), and hands each to `video` (if given) once its PNG is encoded; the
+/// automatic exposure (raster/exposure.h) is measured on frame 0 (drawn and not written when the
+/// range starts later) and used for every frame.
 FrameStats RenderFrames(const Mesh& mesh, FrameLight& light, const Environment& env, const Camera& camera,
                         const RenderOptions& options, OutputFolder& folder, VideoWriter* video = nullptr);
 

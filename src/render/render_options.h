@@ -35,6 +35,10 @@ std::vector<std::string> ViewNames();
 
 struct RenderOptions {
   int frames = 120;
+  /// --frame-range: the frames written, first_frame to last_frame of `frames` (app/frame_range.h);
+  /// last_frame < 0: to the last. Frame 0 is drawn unwritten when the exposure is measured there.
+  int first_frame = 0;
+  int last_frame = -1;
   int width = 640, height = 480;
   glm::dvec3 axis{0.0, 1.0, 0.0};  ///< rotation axis of the light (world up)
   double turns = 1.0;              ///< full turns over all frames

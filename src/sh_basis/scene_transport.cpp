@@ -93,12 +93,17 @@ std::string DirectionsText(bool from_rule, const TransportOptions& o, const Tran
 
 }  // namespace
 
-Transport ComputeSceneTransport(const Basis& sh, const Mesh& mesh, const TransportOptions& options, bool samples_from_rule,
-                                const CachePlan& cache, const Camera* camera, bool matrices,
-                                const ShardedTransport& sharded) {
+TransportOptions SceneTransportOptions(const TransportOptions& options, const Camera* camera, bool matrices) {
   TransportOptions topts = options;
   if (camera && !matrices) topts.eye = glm::dvec3(camera->eye);
   topts.matrices = matrices && options.material.glossy;
+  return topts;
+}
+
+Transport ComputeSceneTransport(const Basis& sh, const Mesh& mesh, const TransportOptions& options, bool samples_from_rule,
+                                const CachePlan& cache, const Camera* camera, bool matrices,
+                                const ShardedTransport& sharded) {
+  const TransportOptions topts = SceneTransportOptions(options, camera, matrices);
   // topts.seen is used only where the two counts differ (direction_pool.h, the cache key).
   TransportOptions every = topts;
   every.seen.clear();

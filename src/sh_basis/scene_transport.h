@@ -16,13 +16,9 @@
 
 namespace prt {
 
-/// The transport of a farm job, assembled from its shards (farm/assemble_shards.h), which
-/// ComputeSceneTransport takes in place of computing it.
-struct ShardedTransport {
-  const Transport* transport = nullptr;
-  std::uint64_t key = 0;  ///< the cache key the shards were made with
-  int shards = 0;
-};
+/// The options ComputeSceneTransport computes with: `options` with the eye of `camera` for a
+/// glossy fixed view, or the transfer matrices for a glossy moving one (`matrices`).
+TransportOptions SceneTransportOptions(const TransportOptions& options, const Camera* camera, bool matrices);
 
 /// The transport of `mesh` for `options` in the basis `sh` (sh_basis.h): read from the cache when that file was made from the
 /// same mesh and options, else computed (and written there when the plan allows; a failed write

@@ -1,6 +1,9 @@
 #include "sh_basis/sh_basis.h"
 
+#include <chrono>
+
 #include "core/log.h"
+#include "core/text.h"
 #include "precompute_io/transport_cache.h"
 #include "sh/axis_rotation.h"
 #include "sh_basis/frame_light.h"
@@ -39,6 +42,7 @@ class Sh : public Basis {
     t.windowed_light = true;
     t.light_bands = true;
     t.takes_samples = true;
+    t.shards = true;
     return t;
   }
   std::shared_ptr<const BasisSettings> ReadOptions(Args&) const override { return DefaultSettings(); }
@@ -54,7 +58,8 @@ class Sh : public Basis {
   std::unique_ptr<PreparedBasis> Prepare(const BasisInputs& in) const override {
     auto prepared = std::make_unique<ShPrepared>();
     prepared->transport =
-        ComputeSceneTransport(*this, in.mesh, in.transport, in.samples_from_rule, in.cache, in.camera, in.matrices);
+        ComputeSceneTransport(*this, in.mesh, in.transport, in.samples_from_rule, in.cache, in.camera, in.matrices,
+                              in.sharded);
     prepared->compressed = in.matrices && in.cpca.clusters > 0;
     if (prepared->compressed)
       prepared->cpca = CompressSceneMatrices(prepared->transport, in.cpca.clusters, in.cpca.terms);
@@ -62,6 +67,19 @@ class Sh : public Basis {
     Summary("rotation: " + rotation.Describe() + "; only the " + std::to_string(CoeffCount(prepared->transport.lmax)) +
             " coefficients the transport has are turned");
     return prepared;
+  }
+
+  Transport ComputeBlock(const BasisInputs& in, const VertexBlock& block, std::uint64_t& key) const override {
+    TransportOptions topts = SceneTransportOptions(in.transport, in.camera, in.matrices);
+    key = TransportKey(in.mesh, topts);  // the whole run's: the key leaves the block out
+    topts.block = block;
+    const auto t0 = std::chrono::steady_clock::now();
+    TransportReport report;
+    Transport whole = ComputeTransport(in.mesh, topts, &report);
+    Summary("transport: " + std::string(TransportModeName(topts.mode)) + ", lmax " + std::to_string(topts.lmax) +
+            " of vertices " + std::to_string(block.begin) + " to " + std::to_string(block.end - 1) +
+            Formatted(" [%.3f s]", SecondsSince(t0)) + "; " + std::to_string(report.rays) + " rays");
+    return whole;
   }
 
   /// The light's bands as the transport would hold them (ComputeSceneTransport computes at
