@@ -69,31 +69,61 @@ std::string SlurmScript(const SlurmJob& job) {
     s += "merge=${merge%%;*}\n";
     s += "submitted+=(\"$merge\")\n";
   }
+  s += "last=$merge\n";
+  if (job.frame_tasks > 0) {
+    std::vector<std::string> frames = {job.prt, "render"};
+    frames.insert(frames.end(), job.frame_options.begin(), job.frame_options.end());
+    frames.insert(frames.end(), {"--frame-range", "auto", "--quiet"});
+    s += "frames=$(sbatch --parsable --job-name=prt-frames --array=0-" + std::to_string(job.frame_tasks - 1) +
+         " --dependency=afterok:$last --kill-on-invalid-dep=yes --chdir=" + ShellWord(job.workdir) +
+         " --output=" + ShellWord(logs_dir + "/frames-%a.log") + extra + " --wrap " + ShellWord(Line(frames)) + ")\n";
+    s += "frames=${frames%%;*}\n";
+    s += "submitted+=(\"$frames\")\n";
+    s += "echo \"prt farm: frames: job $frames (" + std::to_string(job.frame_tasks) + " ranges)\" >&2\n";
+    s += "last=$frames\n";
+  }
+  if (!job.video.empty()) {
+    std::vector<std::string> video = {job.prt, "video", job.out};
+    video.insert(video.end(), job.video.begin(), job.video.end());
+    video.push_back("--quiet");
+    s += "video=$(sbatch --parsable --job-name=prt-video --dependency=afterok:$last --kill-on-invalid-dep=yes --chdir=" +
+         ShellWord(job.workdir) + " --output=" + ShellWord(logs_dir + "/video.log") + extra + " --wrap " +
+         ShellWord(Line(video)) + ")\n";
+    s += "video=${video%%;*}\n";
+    s += "submitted+=(\"$video\")\n";
+    s += "last=$video\n";
+  }
   s += "submitted=()  # all submitted: they stay, whatever happens next\n";
   if (job.wait) {
-    // The last merge's state, asked every kWaitSeconds until it has ended (sbatch --wait asks
+    // The last job's state, asked every kWaitSeconds until it has ended (sbatch --wait asks
     // ever less often, and exits 0 for a job cancelled before it ran, which is what a failed
-    // shard does to the merge). A state not read (slurmctld busy) is asked again, up to
-    // kUnreadStates times in a row.
+    // job before it does). An array's tasks each have a state: it has ended well when every
+    // one completed, badly as soon as one did not. A state not read (slurmctld busy) is asked
+    // again, up to kUnreadStates times in a row.
     s += "unread=0\n";
     s += "while :; do\n";
-    s += "  state=$(scontrol show job \"$merge\" -o 2>/dev/null | grep -o 'JobState=[A-Z_]*' || true)\n";
-    s += "  state=${state#JobState=}\n";
-    s += "  case \"$state\" in\n";
-    s += "    '') unread=$((unread + 1)); [ $unread -lt " + std::to_string(kUnreadStates) +
-         " ] || { echo \"prt farm: the state of the merge job $merge cannot be read (scontrol show job)\" >&2; exit 1; } ;;\n";
-    s += "    COMPLETED) break ;;\n";
-    s += "    CANCELLED|FAILED|TIMEOUT|NODE_FAIL|OUT_OF_MEMORY|PREEMPTED|BOOT_FAIL|DEADLINE)\n";
+    s += "  states=$(scontrol show job \"$last\" -o 2>/dev/null | grep -o 'JobState=[A-Z_]*' | sort -u || true)\n";
+    s += "  if [ -z \"$states\" ]; then\n";
+    s += "    unread=$((unread + 1))\n";
+    s += "    [ $unread -lt " + std::to_string(kUnreadStates) +
+         " ] || { echo \"prt farm: the state of the job $last cannot be read (scontrol show job)\" >&2; exit 1; }\n";
+    s += "  else\n";
+    s += "    unread=0\n";
+    s += "    [ \"$states\" != JobState=COMPLETED ] || break\n";
+    s += "    bad=$(echo \"$states\" | grep -E "
+         "'=(CANCELLED|FAILED|TIMEOUT|NODE_FAIL|OUT_OF_MEMORY|PREEMPTED|BOOT_FAIL|DEADLINE)$' | head -n 1 || true)\n";
+    s += "    if [ -n \"$bad\" ]; then\n";
+    s += "      state=${bad#JobState=}\n";
     s += "      why='see its log'\n";
-    s += "      [ \"$state\" != CANCELLED ] || why='it never ran: a shard before it failed, see the shard logs'\n";
-    s += "      echo \"prt farm: the merge job $merge ended $state ($why in $farm/)\" >&2\n";
-    s += "      exit 1 ;;\n";
-    s += "    *) unread=0 ;;\n";
-    s += "  esac\n";
+    s += "      [ \"$state\" != CANCELLED ] || why='it never ran: a job before it failed, see the logs'\n";
+    s += "      echo \"prt farm: the job $last ended $state ($why in $farm/)\" >&2\n";
+    s += "      exit 1\n";
+    s += "    fi\n";
+    s += "  fi\n";
     s += "  sleep " + std::to_string(kWaitSeconds) + "\n";
     s += "done\n";
   }
-  s += "echo \"$merge\"\n";
+  s += "echo \"$last\"\n";
   return s;
 }
 

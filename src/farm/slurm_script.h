@@ -9,7 +9,8 @@
 /// cluster's shared home or project folder is). The jobs' logs go to a folder beside the output
 /// folder, `DIR.farm/`, so that DIR ends as one run writes it. Interreflection chains a pair
 /// of jobs per stage (the direct pass, then each bounce), each array after the merge before it;
-/// a stage after the bounces ended early finds nothing to do and succeeds.
+/// a stage after the bounces ended early finds nothing to do and succeeds. A render goes on
+/// after its last merge: an array of frame ranges (`render --frame-range`), then `prt video`.
 
 #include <string>
 #include <vector>
@@ -28,15 +29,23 @@ struct SlurmJob {
   /// before them.
   int stages = 1;
   std::vector<std::string> sbatch;    ///< options given to every sbatch (--partition, --time, ...)
-  bool wait = false;                  ///< the script waits for the merge and fails unless it succeeded
+  bool wait = false;                  ///< the script waits for the last job and fails unless it succeeded
+  /// A render's frames after its last merge (which writes the cache and frame 0): an array of
+  /// `frame_tasks` tasks, each `prt render frame_options --frame-range auto`. 0: none.
+  int frame_tasks = 0;
+  std::vector<std::string> frame_options;
+  /// `prt video`'s words after the folder (--video FILE --fps F --frames N), run once every frame
+  /// is written; empty: no video.
+  std::vector<std::string> video;
 };
 
 /// The folder of the jobs' logs and script: DIR.farm beside DIR.
 std::string FarmFolder(const std::string& out);
 
-/// The bash script that submits `job`; run, it prints the merge job's id on its last line. With
-/// `wait`, it asks scontrol for the last merge's state every second until it ends, and exits 1
-/// unless it completed (sbatch --wait exits 0 for a merge a failed shard cancelled).
+/// The bash script that submits `job`; run, it prints the last job's id on its last line (the
+/// last merge's, or of a render the frames' or the video's). With `wait`, it asks scontrol for
+/// that job's state (every task's, for an array) every second until it ends, and exits 1 unless
+/// it completed (sbatch --wait exits 0 for a job that a failed one before it cancelled).
 std::string SlurmScript(const SlurmJob& job);
 
 }  // namespace prt

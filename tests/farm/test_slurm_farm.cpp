@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <string>
 
 #include "tests/farm/slurm_cluster.h"
@@ -22,6 +23,13 @@ using test::Q;
 std::string Read(const std::string& path) {
   std::ifstream in(path);
   return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+/// Every name in `dir`, folders too.
+std::set<std::string> Names(const std::string& dir) {
+  std::set<std::string> names;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
+  return names;
 }
 
 }  // namespace
@@ -56,6 +64,29 @@ TEST_CASE("slurm: a precompute as shards and a merge on a real Slurm writes what
   CHECK(r.err.find("the job failed") != std::string::npos);
   CHECK_FALSE(fs::exists(failed + "/transport.txt"));
   CHECK(Read(failed + ".farm/shard-0.log").find("at most one shard per vertex") != std::string::npos);
+}
+
+TEST_CASE("slurm: a render as shards, a merge, frame ranges and a video on a real Slurm writes what one run writes" *
+          test::NeedsSlurm()) {
+  const std::string dir = test::ScratchDir("slurm_render");
+  test::OneNodeSlurm slurm(dir + "/cluster");
+  // Seen and hidden vertices cast different counts (blocks balanced by work); 7 frames in 3
+  // ranges (3, 2, 2), the first written by the merge; the video assembled from them.
+  const std::string scene = test::SmallSceneOption("slurm_render_scene") +
+                            " --samples 128 --hidden-samples 32 --frames 7 --size 48x32";
+  const std::string one = dir + "/one", farmed = dir + "/farmed";
+  REQUIRE(test::RunPrt("render" + scene + " --out " + Q(one) + " --video " + Q(one + "/turn.png") + " --quiet")
+              .exit_code == 0);
+  const test::RunResult r = test::RunCommand(slurm.Env() + " " + Q(test::PrtBinary()) + " farm slurm render" + scene +
+                                             " --out " + Q(farmed) + " --video " + Q(farmed + "/turn.png") +
+                                             " --tasks 2 --frame-tasks 3 --wait");
+  REQUIRE_MESSAGE(r.exit_code == 0, r.err << slurm.Logs());
+  CHECK(r.err.find("video job") != std::string::npos);
+  CHECK(test::FolderFiles(farmed) == test::FolderFiles(one));
+  // No folder left either: the parts' staging folders and lock files are gone.
+  CHECK(Names(farmed) == Names(one));
+  for (const char* log : {"shard-0.log", "shard-1.log", "merge.log", "frames-0.log", "frames-1.log", "frames-2.log", "video.log"})
+    CHECK_MESSAGE(fs::exists(farmed + ".farm/" + log), log);
 }
 }  // TEST_SUITE
 
