@@ -96,7 +96,12 @@ TEST_CASE("farm slurm: what a task would refuse, a missing or failing sbatch, re
       {"precompute" + out + " --tasks 2 --shard 0/2", "--shard: prt farm gives each task its own"},
       {"precompute --tasks 2", "--out DIR is required"},
       {"precompute" + out + " --tasks 2 --lmax x", "--lmax"},
-      {"render" + out + " --tasks 2", "expected precompute"},
+      {"reference" + out + " --tasks 2", "expected precompute or render"},
+      {"render" + out + " --tasks 2 --frame-range 0-3", "--frame-range: prt farm gives each task its own"},
+      {"precompute" + out + " --tasks 2 --frame-tasks 2", "--frame-tasks: only with render"},
+      {"render" + out + " --tasks 2 --frame-tasks 0", "--frame-tasks 0: expected a whole number"},
+      {"render" + out + " --tasks 2 --basis wavelet", "does not split into vertex blocks"},
+      {"render" + out + " --tasks 2 --frames 0", "--frames"},
   };
   for (const Case& c : cases) {
     CAPTURE(c.arguments);
@@ -127,6 +132,42 @@ TEST_CASE("farm slurm: what a task would refuse, a missing or failing sbatch, re
   std::string line;
   CHECK(std::getline(cancels, line));
   CHECK(line == "scancel 101");
+}
+
+TEST_CASE("farm slurm: a render's shards, merge, frame ranges and video submitted in order, each after the one before") {
+  const std::string dir = test::ScratchDir("farm_stub_render");
+  const std::string bin = StandInSbatch(dir);
+  const std::string out = dir + "/out";
+  fs::create_directories(out);  // --vertex-radiance's folder is checked before any work
+  const test::RunResult r = Farm(bin, "render" + test::SmallSceneOption("farm_stub_render_scene") +
+                                          " --frames 10 --out " + Q(out) + " --tasks 3 --frame-tasks 4 --video " +
+                                          Q(out + "/turn.png") + " --fps 12 --vertex-radiance " + Q(out + "/r.txt"));
+  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+  const std::vector<std::string> calls = Calls(dir);
+  REQUIRE(calls.size() == 4);
+  // The shards: the merge they feed writes the cache, frame 0 and frame 0's --vertex-radiance.
+  CHECK(calls[0].find("--array=0-2 ") != std::string::npos);
+  CHECK(calls[0].find(" render --mesh ") != std::string::npos);
+  CHECK(calls[0].find("--vertex-radiance " + out + "/r.txt --frame-range 0-0 --shard auto --quiet") != std::string::npos);
+  CHECK(calls[0].find("--video") == std::string::npos);  // the video is the last job's
+  CHECK(calls[1].find("--dependency=afterok:101 ") != std::string::npos);
+  CHECK(calls[1].find(" merge " + out + " --quiet") != std::string::npos);
+  // The ranges, after the merge: no --vertex-radiance (frame 0's) nor --video.
+  CHECK(calls[2].find("--array=0-3 ") != std::string::npos);
+  CHECK(calls[2].find("--dependency=afterok:102 ") != std::string::npos);
+  CHECK(calls[2].find(" --frames 10 --out " + out + " --frame-range auto --quiet") != std::string::npos);
+  CHECK(calls[2].find("--vertex-radiance") == std::string::npos);
+  // The video, after every range, of the whole sequence.
+  CHECK(calls[3].find("--dependency=afterok:103 ") != std::string::npos);
+  CHECK(calls[3].find(" video " + out + " --video " + out + "/turn.png --frames 10 --fps 12 --quiet") !=
+        std::string::npos);
+  CHECK(r.err.find("video job 104 submitted") != std::string::npos);
+  // More frame tasks than frames: one a frame.
+  const std::string few = test::ScratchDir("farm_stub_render_few");
+  const test::RunResult f = Farm(StandInSbatch(few), "render --frames 3 --out " + Q(few + "/out") +
+                                                         " --tasks 2 --frame-tasks 9 --dry-run");
+  CHECK(f.exit_code == 0);
+  CHECK(f.out.find("--array=0-2 ") != std::string::npos);
 }
 }  // TEST_SUITE
 

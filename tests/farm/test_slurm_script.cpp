@@ -58,7 +58,8 @@ TEST_CASE("slurm script: an array of N shard tasks, then the merge after all of 
   // The merge is submitted after the shards, whose id it names.
   CHECK(s.find("shards=$(sbatch") < s.find("shards=${shards%%;*}"));
   CHECK(s.find("shards=${shards%%;*}") < s.find("merge=$(sbatch"));
-  CHECK(s.substr(s.size() - 14) == "echo \"$merge\"\n");
+  CHECK(s.substr(s.size() - 13) == "echo \"$last\"\n");
+  CHECK(LineStarting(s, "last=") == "last=$merge");
   CHECK(s.find("scontrol") == std::string::npos);
 }
 
@@ -74,11 +75,12 @@ TEST_CASE("slurm script: the site's sbatch options on both jobs, waiting on the 
   for (const std::string& line : {shards, merge}) CHECK(line.find(" --partition=long --time=2:00:00 ") != std::string::npos);
   CHECK(shards.find("--wait") == std::string::npos);
   CHECK(merge.find("--wait") == std::string::npos);
-  // Waiting, the merge's state decides, asked until it ended: sbatch --wait exits 0 for a job
-  // cancelled before it ran.
-  CHECK(s.find("scontrol show job \"$merge\"") > s.find("merge=$(sbatch"));
-  CHECK(s.find("    COMPLETED) break ;;") != std::string::npos);
-  CHECK(s.find("    CANCELLED|FAILED|") != std::string::npos);
+  // Waiting, the last job's state decides, asked until it ended: sbatch --wait exits 0 for a
+  // job cancelled before it ran.
+  CHECK(LineStarting(s, "last=") == "last=$merge");
+  CHECK(s.find("scontrol show job \"$last\"") > s.find("last=$merge"));
+  CHECK(s.find("[ \"$states\" != JobState=COMPLETED ] || break") != std::string::npos);
+  CHECK(s.find("'=(CANCELLED|FAILED|") != std::string::npos);
   CHECK(FarmFolder("out/scan/") == "out/scan.farm");
   CHECK(FarmFolder("/") == "/.farm");
   // A % of the folder's own reaches Slurm's --output as %%, which it does not expand.
@@ -116,6 +118,45 @@ TEST_CASE("slurm script: interreflection's stages chained, each array after the 
     CHECK(merge.find(" --quiet --bounce-stage " + std::to_string(k) + "')") != std::string::npos);
     CHECK(array.find("--shard auto --quiet --bounce-stage " + std::to_string(k) + "')") != std::string::npos);
   }
+}
+
+TEST_CASE("slurm script: a render's frame ranges after its merge, then the video after every range") {
+  SlurmJob job = Job();
+  job.command = "render";
+  job.options = {"--mesh", "scan 1.obj", "--out", "out/scan", "--frames", "240", "--frame-range", "0-0"};
+  job.frame_tasks = 8;
+  job.frame_options = {"--mesh", "scan 1.obj", "--out", "out/scan", "--frames", "240"};
+  job.video = {"--video", "out/scan/turn.mp4", "--frames", "240", "--fps", "24"};
+  job.wait = true;
+  const std::string s = SlurmScript(job);
+  const std::string merge = LineStarting(s, "merge=$(sbatch"), frames = LineStarting(s, "frames=$(sbatch"),
+                    video = LineStarting(s, "video=$(sbatch");
+  CHECK(s.find("merge=$(sbatch") < s.find("frames=$(sbatch"));
+  CHECK(s.find("frames=$(sbatch") < s.find("video=$(sbatch"));
+  // The frames' array after the merge (then $last), each task its range from the array.
+  CHECK(s.find("last=$merge") < s.find("frames=$(sbatch"));
+  CHECK(frames.find(" --array=0-7 ") != std::string::npos);
+  CHECK(frames.find(" --dependency=afterok:$last --kill-on-invalid-dep=yes ") != std::string::npos);
+  CHECK(frames.find(" --output=out/scan.farm/frames-%a.log ") != std::string::npos);
+  CHECK(frames.find("--wrap '/opt/prt/bin/prt render --mesh '\\''scan 1.obj'\\'' --out out/scan --frames 240 "
+                    "--frame-range auto --quiet')") != std::string::npos);
+  // The video after every range, from the folder's frames.
+  CHECK(s.find("last=$frames") < s.find("video=$(sbatch"));
+  CHECK(video.find(" --dependency=afterok:$last --kill-on-invalid-dep=yes ") != std::string::npos);
+  CHECK(video.find("--wrap '/opt/prt/bin/prt video out/scan --video out/scan/turn.mp4 --frames 240 --fps 24 --quiet')") !=
+        std::string::npos);
+  CHECK(merge.find("--wrap '/opt/prt/bin/prt merge out/scan --quiet')") != std::string::npos);
+  // The wait and the job id printed are the video's: the job that ends last.
+  CHECK(s.find("last=$video") < s.find("scontrol show job \"$last\""));
+  CHECK(s.substr(s.size() - 13) == "echo \"$last\"\n");
+  // A failed submission cancels every job submitted before it, the frames' and the video's too.
+  CHECK(LineStarting(s, "submitted+=(\"$frames\")") == "submitted+=(\"$frames\")");
+  CHECK(LineStarting(s, "submitted+=(\"$video\")") == "submitted+=(\"$video\")");
+  // Without a video, the frames' array is the last job.
+  job.video.clear();
+  const std::string no_video = SlurmScript(job);
+  CHECK(no_video.find("video=") == std::string::npos);
+  CHECK(no_video.find("last=$frames") < no_video.find("scontrol show job \"$last\""));
 }
 }  // TEST_SUITE
 
