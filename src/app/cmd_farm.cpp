@@ -7,6 +7,7 @@
 #include "app/commands.h"
 #include "app/precompute_shard.h"
 #include "app/render_args.h"
+#include "app/reference_shard.h"
 #include "app/render_shard.h"
 #include "app/scene_options.h"
 #include "core/atomic_file.h"
@@ -95,8 +96,8 @@ void PlanRenderFrames(const std::vector<std::string>& tokens, SlurmJob& job, int
 
 CommandSpec FarmSpec() {
   return {"prt farm slurm COMMAND [its options] --tasks N [--sbatch \"OPTIONS\"] [--wait] [--dry-run]",
-          "Runs COMMAND (precompute or render) as a Slurm job: an array job of N tasks, each computing one block of "
-          "the vertices (COMMAND --shard auto), and a job that runs prt merge once every task has succeeded "
+          "Runs COMMAND (precompute, render or reference) as a Slurm job: an array job of N tasks, each computing "
+          "one block of the vertices (COMMAND --shard auto), and a job that runs prt merge once every task has succeeded "
           "(sbatch --dependency=afterok). Interreflection chains such a pair for its direct pass and for each "
           "bounce, each array after the merge before it. A render's merge writes the cache and frame 0, "
           "an array of --frame-tasks tasks the frames in ranges (render --frame-range auto), and with --video a last job "
@@ -123,9 +124,9 @@ int RunFarm(const std::vector<std::string>& given) {
   const auto usage = [](const std::string& message) { throw UsageError(message, "farm"); };
   if (tokens.empty() || tokens[0] != "slurm")
     usage("expected a scheduler, slurm, then a command (prt farm slurm precompute ... --tasks N)");
-  if (tokens.size() < 2 || (tokens[1] != "precompute" && tokens[1] != "render"))
+  if (tokens.size() < 2 || (tokens[1] != "precompute" && tokens[1] != "render" && tokens[1] != "reference"))
     usage(std::string("farm slurm: ") + (tokens.size() < 2 ? "no command" : "'" + tokens[1] + "'") +
-          " (expected precompute or render; reference does not run as shards yet)");
+          " (expected precompute, render or reference)");
   SlurmJob job;
   job.command = tokens[1];
   tokens.erase(tokens.begin(), tokens.begin() + 2);
@@ -156,14 +157,19 @@ int RunFarm(const std::vector<std::string>& given) {
   // The command's options, checked as the first task will run them.
   std::vector<std::string> check = job.options;
   check.insert(check.end(), {"--shard", "0/" + std::to_string(job.tasks), "--quiet"});
-  if (transport == "interreflection") check.insert(check.end(), {"--bounce-stage", "0"});
-  if (job.command == "render") {
+  // Interreflection's transport runs in stages; a reference path-traces each vertex's bounces
+  // in one pass.
+  const bool staged = transport == "interreflection" && job.command != "reference";
+  if (staged) check.insert(check.end(), {"--bounce-stage", "0"});
+  if (job.command == "reference") {
+    ReferenceCommand(check, nullptr, true);
+  } else if (job.command == "render") {
     Render(check, {}, true);
   } else {
     Precompute(check, {}, true);
   }
   SetQuiet(quiet);
-  if (transport == "interreflection") job.stages = 1 + (bounces.empty() ? SceneOptions{}.bounces : std::stoi(bounces));
+  if (staged) job.stages = 1 + (bounces.empty() ? SceneOptions{}.bounces : std::stoi(bounces));
   job.wait = wait;
   job.prt = fs::canonical("/proc/self/exe").string();
   job.workdir = fs::current_path().string();

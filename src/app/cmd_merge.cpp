@@ -9,14 +9,17 @@
 #include "app/commands.h"
 #include "app/precompute_shard.h"
 #include "app/render_args.h"
+#include "app/reference_shard.h"
 #include "app/render_shard.h"
 #include "bases/list.h"
 #include "core/atomic_file.h"
 #include "core/log.h"
 #include "core/error.h"
 #include "farm/assemble_bounces.h"
+#include "farm/assemble_reference.h"
 #include "farm/assemble_shards.h"
 #include "precompute_io/bounce_shard.h"
+#include "precompute_io/reference_shard.h"
 #include "precompute_io/transport_shard.h"
 
 namespace prt {
@@ -42,6 +45,29 @@ int RunMerged(std::vector<std::string> command, const ShardedTransport& sharded)
   if (name == "render") return Render(command, sharded);
   throw Error("the shards were made by '" + name + "', which prt merge does not run (expected prt precompute or "
               "prt render's shards)");
+}
+
+/// Removes the shard files of `cache_name` in `dir` (defined below).
+void RemoveShards(const std::string& dir, const std::string& cache_name);
+
+/// A reference's shards assembled (farm/assemble_reference.h) and its command run once with
+/// them: reference.txt and reference.png as one run writes them; the shards then removed.
+int MergeReference(const std::string& dir, bool keep, bool quiet) {
+  const AssembledReference assembled = AssembleReference(dir);
+  Summary("merge: " + std::to_string(assembled.count) + " reference shards in " + dir + ", whole and of one job (" +
+          std::to_string(assembled.reference.radiance.size()) + " vertices)");
+  std::vector<std::string> command = WithOut(assembled.command, dir);
+  if (command.empty() || command.front() != "reference")
+    throw Error(dir + ": reference shards made by '" + (command.empty() ? std::string() : command.front()) +
+                "' (expected prt reference's)");
+  command.erase(command.begin());
+  if (quiet) command.push_back("--quiet");
+  const int status = ReferenceCommand(command, &assembled);
+  if (status == 0 && !keep) {
+    RemoveShards(dir, kReferenceShardBase);
+    Summary("merge: removed the " + std::to_string(assembled.count) + " shard files (--keep-shards keeps them)");
+  }
+  return status;
 }
 
 /// Removes the shard files of `cache_name` in `dir`, and the temporary files killed tasks left
@@ -178,6 +204,16 @@ int RunMerge(const std::vector<std::string>& tokens) {
     }
   }
   if (!fs::is_directory(dir)) throw Error(dir + ": no such folder (expected the --out DIR the shards were written to)");
+  // A reference's shards: its numbers, not a transport.
+  {
+    std::error_code ec;
+    bool reference = false;
+    for (const fs::directory_entry& entry : fs::directory_iterator(dir, ec)) {
+      int index = 0, count = 0;
+      reference |= IsShardFileName(entry.path().filename().string(), kReferenceShardBase, index, count);
+    }
+    if (reference) return MergeReference(dir, keep, quiet);
+  }
   // A transport's shards first: a bounce state left from another job does not take them over.
   bool transport_shards = false;
   std::error_code ec;

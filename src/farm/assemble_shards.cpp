@@ -48,7 +48,7 @@ std::map<int, std::string> ShardFiles(const std::string& dir, const std::string&
   if (ec) throw Error(dir + ": cannot be listed (" + ec.message() + ")");
   if (!count)
     throw Error(dir + ": no shards of " + cache_name + " (expected files " + cache_name +
-                ".shard-IIIII-of-NNNNN, written by prt precompute --shard I/N --out " + dir + ")");
+                ".shard-IIIII-of-NNNNN, written by prt precompute, render or reference --shard I/N --out " + dir + ")");
   if (int(named.size()) != *count || named.rbegin()->first >= *count)
     throw Error(dir + ": shard" + (*count - int(named.size()) > 1 ? "s " : " ") + Missing(named, *count) + " of " +
                 std::to_string(*count) + " missing (expected every shard 0.." + std::to_string(*count - 1) +

@@ -197,11 +197,13 @@ Reference ComputeReference(const Mesh& mesh, const Environment& env, const Refer
   Reference ref;
   ref.radiance.resize(nv);
   ref.error.resize(nv);
-  std::vector<std::uint64_t> chunk_rays(ChunkCount(nv, 16), 0);
-  Progress progress("reference", nv);
-  ParallelFor(nv, 16, [&](std::size_t begin, std::size_t end) {
+  // The block's vertices (all by default); vertex v's streams depend on v alone.
+  const std::size_t first = std::min(o.block.begin, nv), last = std::min(o.block.end, nv);
+  std::vector<std::uint64_t> chunk_rays(ChunkCount(last - first, 16), 0);
+  Progress progress("reference", last - first);
+  ParallelFor(last - first, 16, [&](std::size_t begin, std::size_t end) {
     std::uint64_t rays = 0;
-    for (std::size_t v = begin; v < end; ++v) {
+    for (std::size_t v = first + begin; v < first + end; ++v) {
       Pcg32 rng_a(MixSeed(o.seed, 0), v), rng_b(MixSeed(o.seed, 1), v);
       Pcg32 lobe_a(MixSeed(MixSeed(o.seed, 0), kLobeStream), v);
       Pcg32 lobe_b(MixSeed(MixSeed(o.seed, 1), kLobeStream), v);
@@ -213,6 +215,13 @@ Reference ComputeReference(const Mesh& mesh, const Environment& env, const Refer
     chunk_rays[begin / 16] = rays;
     progress.Advance(end - begin);
   });
+  SummarizeReference(ref);
+  for (std::uint64_t r : chunk_rays) ref.rays += r;
+  return ref;
+}
+
+void SummarizeReference(Reference& ref) {
+  const std::size_t nv = ref.radiance.size();
   double e2 = 0, r2 = 0;
   for (std::size_t v = 0; v < nv; ++v) {
     e2 += glm::dot(ref.error[v], ref.error[v]);
@@ -221,8 +230,6 @@ Reference ComputeReference(const Mesh& mesh, const Environment& env, const Refer
   const double denom = nv ? 3.0 * double(nv) : 1.0;
   ref.rms_error = std::sqrt(e2 / denom);
   ref.rms_radiance = std::sqrt(r2 / denom);
-  for (std::uint64_t r : chunk_rays) ref.rays += r;
-  return ref;
 }
 
 }  // namespace prt

@@ -94,6 +94,9 @@ struct ReferenceOptions {
   Material material;                ///< diffuse, or a Phong lobe (needs `eye`)
   std::optional<glm::dvec3> eye;    ///< the camera the glossy lobe is seen from
   GlossySampling glossy_sampling = GlossySampling::kBalance;
+  /// The vertices computed (a farm job's shard): the others' radiance and error stay 0 (and
+  /// count as 0 in the RMS figures). Every vertex by default.
+  VertexBlock block;
 };
 
 struct Reference {
@@ -107,5 +110,9 @@ struct Reference {
 /// The ground truth of `mesh` under `env` (see above). Throws Error for samples < 2 and for a
 /// glossy material without an eye.
 Reference ComputeReference(const Mesh& mesh, const Environment& env, const ReferenceOptions& options);
+
+/// Sets `ref`'s rms_error and rms_radiance from its per-vertex radiance and error, over every
+/// vertex (ComputeReference does; so does the merge of a farm job's shards).
+void SummarizeReference(Reference& ref);
 
 }  // namespace prt

@@ -25,12 +25,6 @@ struct Header {
 };
 static_assert(sizeof(Header) == 80, "shard header layout");
 
-std::string JoinCommand(const std::vector<std::string>& words) {
-  std::string joined;
-  for (std::size_t i = 0; i < words.size(); ++i) joined += (i ? std::string(1, '\0') : std::string()) + words[i];
-  return joined;
-}
-
 /// FNV-1a of the header (its checksum field 0), the command and the rows: a flipped bit of the
 /// key or of a block's bounds is a damaged shard, not another job's.
 std::uint64_t Checksum(Header header, const std::string& command, const Transport& t) {
@@ -43,6 +37,22 @@ std::uint64_t Checksum(Header header, const std::string& command, const Transpor
 }
 
 }  // namespace
+
+std::string JoinShardCommand(const std::vector<std::string>& words) {
+  std::string joined;
+  for (std::size_t i = 0; i < words.size(); ++i) joined += (i ? std::string(1, '\0') : std::string()) + words[i];
+  return joined;
+}
+
+std::vector<std::string> SplitShardCommand(const std::string& joined) {
+  std::vector<std::string> words;
+  for (std::size_t at = 0; at <= joined.size() && !joined.empty();) {
+    const std::size_t end = std::min(joined.find('\0', at), joined.size());
+    words.push_back(joined.substr(at, end - at));
+    at = end + 1;
+  }
+  return words;
+}
 
 std::string ShardFileName(const std::string& cache_name, int index, int count) {
   char suffix[40];
@@ -82,7 +92,7 @@ Transport BlockRows(const Transport& whole, const VertexBlock& block) {
 }
 
 void WriteTransportShard(const std::string& path, const TransportShard& s) {
-  const std::string command = JoinCommand(s.command);
+  const std::string command = JoinShardCommand(s.command);
   Header h{};
   std::memcpy(h.magic, kMagic, sizeof kMagic);
   h.version = kFormatVersion;
@@ -159,11 +169,7 @@ std::optional<TransportShard> ReadTransportShard(const std::string& path, std::s
   s.key = h.key;
   s.block.begin = h.begin;
   s.block.end = h.end;
-  for (std::size_t at = 0; at <= command.size() && !command.empty();) {
-    const std::size_t end = std::min(command.find('\0', at), command.size());
-    s.command.push_back(command.substr(at, end - at));
-    at = end + 1;
-  }
+  s.command = SplitShardCommand(command);
   return s;
 }
 

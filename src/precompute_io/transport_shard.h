@@ -41,6 +41,10 @@ std::string ShardFileName(const std::string& cache_name, int index, int count);
 /// True when `name` is a shard file name of `cache_name` (index and count then set).
 bool IsShardFileName(const std::string& name, const std::string& cache_name, int& index, int& count);
 
+/// A shard's command line as stored: its words separated by NUL, and back.
+std::string JoinShardCommand(const std::vector<std::string>& words);
+std::vector<std::string> SplitShardCommand(const std::string& joined);
+
 /// The block's rows of `whole` (a transport computed for `block`, every other row 0).
 Transport BlockRows(const Transport& whole, const VertexBlock& block);
 

@@ -96,7 +96,8 @@ TEST_CASE("farm slurm: what a task would refuse, a missing or failing sbatch, re
       {"precompute" + out + " --tasks 2 --shard 0/2", "--shard: prt farm gives each task its own"},
       {"precompute --tasks 2", "--out DIR is required"},
       {"precompute" + out + " --tasks 2 --lmax x", "--lmax"},
-      {"reference" + out + " --tasks 2", "expected precompute or render"},
+      {"view" + out + " --tasks 2", "expected precompute, render or reference"},
+      {"reference --tasks 2", "--out DIR is required"},
       {"render" + out + " --tasks 2 --frame-range 0-3", "--frame-range: prt farm gives each task its own"},
       {"precompute" + out + " --tasks 2 --frame-tasks 2", "--frame-tasks: only with render"},
       {"render" + out + " --tasks 2 --frame-tasks 0", "--frame-tasks 0: expected a whole number"},
@@ -168,6 +169,22 @@ TEST_CASE("farm slurm: a render's shards, merge, frame ranges and video submitte
                                                          " --tasks 2 --frame-tasks 9 --dry-run");
   CHECK(f.exit_code == 0);
   CHECK(f.out.find("--array=0-2 ") != std::string::npos);
+}
+
+TEST_CASE("farm slurm: a reference's shards and merge, one pass even with bounces (each vertex path-traced alone)") {
+  const std::string dir = test::ScratchDir("farm_stub_reference");
+  const std::string bin = StandInSbatch(dir);
+  const std::string out = dir + "/out";
+  const test::RunResult r = Farm(bin, "reference --transport interreflection --bounces 3 --out " + Q(out) + " --tasks 5");
+  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+  const std::vector<std::string> calls = Calls(dir);
+  REQUIRE(calls.size() == 2);
+  CHECK(calls[0].find("--array=0-4 ") != std::string::npos);
+  CHECK(calls[0].find(" reference --transport interreflection --bounces 3 --out " + out + " --shard auto --quiet") !=
+        std::string::npos);
+  CHECK(calls[0].find("--bounce-stage") == std::string::npos);
+  CHECK(calls[1].find(" merge " + out + " --quiet") != std::string::npos);
+  CHECK(r.err.find("merge job 102 submitted") != std::string::npos);
 }
 }  // TEST_SUITE
 
