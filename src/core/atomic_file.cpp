@@ -1,6 +1,8 @@
 #include "core/atomic_file.h"
 
 #include <atomic>
+#include <chrono>
+#include <cstdint>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -10,6 +12,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/random.h>
 #include <unistd.h>
 
 #include "core/error.h"
@@ -18,8 +21,22 @@
 namespace prt {
 namespace fs = std::filesystem;
 
+namespace {
+
+/// Where this process's temporary numbers start: random, so that two processes of one pid on
+/// two machines writing one shared folder (a farm's tasks, core/output_folder.h's parts) never
+/// share a temporary name. Only the name depends on it, never a file's bytes.
+std::uint64_t FirstTemporaryNumber() {
+  std::uint32_t bits = 0;
+  if (::getrandom(&bits, sizeof bits, 0) != sizeof bits)
+    bits = static_cast<std::uint32_t>(std::chrono::steady_clock::now().time_since_epoch().count());
+  return std::uint64_t(bits) << 16;
+}
+
+}  // namespace
+
 AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
-  static std::atomic<unsigned> counter{0};
+  static std::atomic<std::uint64_t> counter{FirstTemporaryNumber()};
   const fs::path p(path_);
   const std::string name = "." + p.filename().string() + kTemporaryTag + std::to_string(::getpid()) + "_" +
                            std::to_string(counter++);
