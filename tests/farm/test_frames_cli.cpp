@@ -34,8 +34,9 @@ std::set<std::string> Frames(const std::string& dir) {
 }
 
 // Auto exposure measured on frame 0, an orbiting camera and a turning light: every frame differs,
-// and a range that does not start at 0 must still take frame 0's exposure.
-const std::string kScene = " --samples 64 --hidden-samples 16 --frames 7 --size 40x30 --orbit 40";
+// and a range that does not start at 0 must still take frame 0's exposure, seen from frame 0's
+// camera (half a turn of orbit: frame 3's view measures another EV, -1.8 against -1.7).
+const std::string kScene = " --samples 64 --hidden-samples 16 --frames 7 --size 40x30 --orbit 180";
 
 }  // namespace
 
@@ -44,8 +45,10 @@ TEST_CASE("frame ranges: ranges written at once into one folder are the full run
   const std::string scene = test::SmallSceneOption("ranges_scene") + kScene;
   const std::string one = test::ScratchDir("ranges_one"), parts = test::ScratchDir("ranges_parts");
   REQUIRE(test::RunPrt("render" + scene + " --out " + Q(one) + " --quiet").exit_code == 0);
-  // The transport first (a cache every range then reads), as a farm's merge writes it.
+  // The transport first (a cache every range then reads), as a farm's merge writes it: frame 0
+  // alone.
   REQUIRE(test::RunPrt("render" + scene + " --out " + Q(parts) + " --frame-range 0-0 --quiet").exit_code == 0);
+  CHECK(Frames(parts) == std::set<std::string>{"frame_0000.png"});
   // Three ranges at once, as three tasks of an array.
   const std::string prt = Q(test::PrtBinary()) + " render" + scene + " --out " + Q(parts);
   const test::RunResult r = test::RunCommand("(" + prt + " --frame-range 0-2 & " + prt + " --frame-range 3-3 2>" +
@@ -58,10 +61,23 @@ TEST_CASE("frame ranges: ranges written at once into one folder are the full run
   CHECK(err.find("frames: 3 to 3 of 7 (--frame-range 3-3)") != std::string::npos);
   CHECK(err.find("frame 0's mesh pixels (drawn, not written") != std::string::npos);
 
-  // A range run again over its own frames, and one into a folder with an earlier longer
-  // sequence: nothing of the others' is removed.
-  REQUIRE(test::RunPrt("render" + scene + " --out " + Q(parts) + " --frame-range 4-6 --quiet").exit_code == 0);
+  // A range run again over its own frames: nothing of the others' is removed, and the others'
+  // frames are not "frames prt has no record of".
+  const test::RunResult again = test::RunPrt("render" + scene + " --out " + Q(parts) + " --frame-range 4-6");
+  REQUIRE(again.exit_code == 0);
+  CHECK(again.err.find("not written by this run") == std::string::npos);
   CHECK(test::FolderFiles(parts) == test::FolderFiles(one));
+}
+
+TEST_CASE("frame ranges: a file prt did not write under one of the range's names is refused before any work") {
+  const std::string dir = test::ScratchDir("ranges_foreign");
+  std::ofstream(dir + "/frame_0004.png") << "the user's";  // the range's last frame
+  const test::RunResult r = test::RunPrt("render" + test::SmallSceneOption("ranges_foreign_scene") + kScene +
+                                         " --out " + Q(dir) + " --frame-range 2-4");
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find(dir + "/frame_0004.png: exists and prt did not write it") != std::string::npos);
+  // Before any work: no transport computed, no frame written.
+  CHECK(Names(dir) == std::set<std::string>{"frame_0004.png"});
 }
 
 TEST_CASE("frame ranges: auto takes block I of N of the frames from the scheduler, every frame once") {
