@@ -56,45 +56,58 @@ std::map<int, std::string> ShardFiles(const std::string& dir, const std::string&
   return named;
 }
 
+void ShardSetCheck::Add(const std::string& path, int named, const ShardIdentity& s, const std::string& differs,
+                        bool same) {
+  if (s.index != named || s.count != count_)
+    throw Error(path + ": holds shard " + std::to_string(s.index) + " of " + std::to_string(s.count) +
+                ", not the one its name says (expected the file as prt named it)");
+  if (named == 0) {
+    command_ = *s.command;
+    key_ = s.key;
+    vertices_ = s.vertices;
+  } else if (*s.command != command_ || s.key != key_ || s.vertices != vertices_ || !same) {
+    throw Error(path + ": made " + (*s.command != command_ ? "by another command" : "from another " + differs) +
+                " than shard 0 (expected the shards of one job: remove the foreign one and run its task again)");
+  }
+  if (s.block.begin != next_)
+    throw Error(path + ": its vertices start at " + std::to_string(s.block.begin) + ", not " + std::to_string(next_) +
+                " where the shard before it ends (corrupted)");
+  next_ = s.block.end;
+}
+
+void ShardSetCheck::Finish(const std::string& path) const {
+  if (next_ != vertices_)
+    throw Error(path + ": its vertices end at " + std::to_string(next_) + ", not at the mesh's " +
+                std::to_string(vertices_) + " (corrupted)");
+}
+
 AssembledShards AssembleShards(const std::string& dir, const std::string& cache_name) {
   const std::map<int, std::string> named = ShardFiles(dir, cache_name);
-  const std::optional<int> count = int(named.size());
   AssembledShards out;
-  out.count = *count;
-  std::size_t next = 0;
+  out.count = int(named.size());
+  ShardSetCheck check(out.count);
   for (const auto& [index, path] : named) {
     std::string why;
     std::optional<TransportShard> s = ReadTransportShard(path, why);
     if (!s) throw Error(path + ": " + why + " (expected a whole shard: run task " + std::to_string(index) + " again)");
-    if (s->index != index || s->count != *count)
-      throw Error(path + ": holds shard " + std::to_string(s->index) + " of " + std::to_string(s->count) +
-                  ", not the one its name says (expected the file as prt named it)");
+    const bool same = index == 0 || (s->rows.lmax == out.transport.lmax && s->rows.channels == out.transport.channels);
+    check.Add(path, index, {s->index, s->count, s->key, &s->command, s->rows.vertices, s->block}, "mesh or options", same);
     if (index == 0) {
-      out.command = s->command;
-      out.key = s->key;
       out.transport.lmax = s->rows.lmax;
       out.transport.channels = s->rows.channels;
       out.transport.vertices = s->rows.vertices;
-    } else if (s->command != out.command || s->key != out.key || s->rows.lmax != out.transport.lmax ||
-               s->rows.channels != out.transport.channels || s->rows.vertices != out.transport.vertices) {
-      throw Error(path + ": made " + (s->command != out.command ? "by another command" : "from another mesh or options") +
-                  " than shard 0 (expected the shards of one job: remove the foreign one and run its task again)");
-    }
-    if (s->block.begin != next)
-      throw Error(path + ": its vertices start at " + std::to_string(s->block.begin) + ", not " + std::to_string(next) +
-                  " where the shard before it ends (corrupted)");
-    next = s->block.end;
-    if (index > 0 && (s->rows.glossy.empty() != out.transport.glossy.empty() ||
-                      s->rows.matrices.empty() != out.transport.matrices.empty()))
+    } else if (s->rows.glossy.empty() != out.transport.glossy.empty() ||
+               s->rows.matrices.empty() != out.transport.matrices.empty()) {
       throw Error(path + ": holds other parts than shard 0 (corrupted)");
+    }
     Append(out.transport.coeffs, s->rows.coeffs);
     Append(out.transport.glossy, s->rows.glossy);
     Append(out.transport.matrices, s->rows.matrices);
     out.files.push_back(path);
   }
-  if (next != out.transport.vertices)
-    throw Error(named.rbegin()->second + ": its vertices end at " + std::to_string(next) + ", not at the mesh's " +
-                std::to_string(out.transport.vertices) + " (corrupted)");
+  check.Finish(named.rbegin()->second);
+  out.command = check.command();
+  out.key = check.key();
   return out;
 }
 
