@@ -29,35 +29,14 @@ import argparse
 import os
 import shutil
 import statistics
-import subprocess
 import sys
 import tempfile
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, ".."))
+sys.path.insert(0, HERE)
 from machine import cpu_model  # noqa: E402
-
-
-def measured(argv):
-    """Runs argv; returns (cpu seconds, wall seconds, peak MB), exiting on failure."""
-    t0 = time.monotonic()
-    child = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    _, status, usage = os.wait4(child.pid, 0)
-    wall = time.monotonic() - t0
-    err = child.stderr.read().decode(errors="replace")
-    child.stderr.close()
-    if os.waitstatus_to_exitcode(status) != 0:
-        sys.exit("farm_bench: failed: %s\n%s" % (" ".join(argv), err))
-    return usage.ru_utime + usage.ru_stime, wall, usage.ru_maxrss / 1024.0
-
-
-def files(folder):
-    out = {}
-    for name in sorted(os.listdir(folder)):
-        with open(os.path.join(folder, name), "rb") as f:
-            out[name] = f.read()
-    return out
+from processes import default_mesh, files, measured  # noqa: E402
 
 
 def folder_bytes(folder):
@@ -77,14 +56,7 @@ def main():
     a = ap.parse_args()
     prt = os.path.abspath(a.prt)
     work = tempfile.mkdtemp(prefix="prt-farm-bench-")
-    mesh = a.mesh
-    if not mesh:
-        mary = os.path.join(HERE, "..", "..", "..", "shared", "data", "games202", "mary", "mary.obj")
-        if os.path.exists(mary):
-            mesh = os.path.abspath(mary)
-        else:
-            subprocess.run([prt, "sample-files", "--out", os.path.join(work, "samples"), "--quiet"], check=True)
-            mesh = os.path.join(work, "samples", "scene.obj")
+    mesh = a.mesh or default_mesh(prt, work)
     bounced = a.transport == "interreflection"
     options = ["--mesh", mesh, "--transport", a.transport, "--quiet"] + (["--bounces", str(a.bounces)] if bounced else [])
     stages = a.bounces + 1 if bounced else 1

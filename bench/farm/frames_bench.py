@@ -23,37 +23,14 @@ import argparse
 import os
 import shutil
 import statistics
-import subprocess
 import sys
 import tempfile
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, ".."))
+sys.path.insert(0, HERE)
 from machine import cpu_model  # noqa: E402
-
-
-def measured(argv, env=None):
-    """Runs argv; returns (cpu seconds, wall seconds, peak MB), exiting on failure."""
-    t0 = time.monotonic()
-    child = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, env=env)
-    _, status, usage = os.wait4(child.pid, 0)
-    wall = time.monotonic() - t0
-    err = child.stderr.read().decode(errors="replace")
-    child.stderr.close()
-    if os.waitstatus_to_exitcode(status) != 0:
-        sys.exit("frames_bench: failed: %s\n%s" % (" ".join(argv), err))
-    return usage.ru_utime + usage.ru_stime, wall, usage.ru_maxrss / 1024.0
-
-
-def files(folder):
-    out = {}
-    for name in sorted(os.listdir(folder)):
-        path = os.path.join(folder, name)
-        if os.path.isfile(path):
-            with open(path, "rb") as f:
-                out[name] = f.read()
-    return out
+from processes import default_mesh, files, measured  # noqa: E402
 
 
 def main():
@@ -67,14 +44,7 @@ def main():
     a = ap.parse_args()
     prt = os.path.abspath(a.prt)
     work = tempfile.mkdtemp(prefix="prt-frames-bench-")
-    mesh = a.mesh
-    if not mesh:
-        mary = os.path.join(HERE, "..", "..", "..", "shared", "data", "games202", "mary", "mary.obj")
-        if os.path.exists(mary):
-            mesh = os.path.abspath(mary)
-        else:
-            subprocess.run([prt, "sample-files", "--out", os.path.join(work, "samples"), "--quiet"], check=True)
-            mesh = os.path.join(work, "samples", "scene.obj")
+    mesh = a.mesh or default_mesh(prt, work)
     cache = os.path.join(work, "transport.cache")
     options = ["--mesh", mesh, "--frames", str(a.frames), "--size", a.size, "--cache", cache, "--quiet"]
 
