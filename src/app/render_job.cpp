@@ -141,7 +141,8 @@ RenderInputs LoadRenderInputs(const SceneOptions& scene, const RenderJobOptions&
 
 void RenderJob(const SceneOptions& scene, const RenderJobOptions& job, const ShardedTransport& sharded) {
   const RenderOptions& render = job.draw;  // all that the frame loop reads
-  OutputFolder folder(job.out, RenderPlan(job));
+  const OutputPlan plan = RenderPlan(job);
+  OutputFolder folder(job.out, plan);
   const CachePlan cache = PlanCache(job.cache, &folder, scene.basis->CacheName(), Bases());
   // The other bases' caches stay in the folder: a run of one basis does not remove another's.
   for (const Basis* other : Bases())
@@ -188,7 +189,7 @@ void RenderJob(const SceneOptions& scene, const RenderJobOptions& job, const Sha
   video.Commit();
   if (radiance_outside) radiance_outside->Commit();
   // The other ranges' frames are not foreign to a range: they may be listed only once theirs end.
-  if (!RenderPlan(job).part) NoteForeignFrames(folder);
+  if (!plan.part) NoteForeignFrames(folder);
 }
 
 }  // namespace prt
